@@ -1,0 +1,58 @@
+// Paths, placements and the exact collision predicate (paper section 3, equation 1 as pinned by the README).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace mobb {
+
+/// One sample of a clip's path: ground position (x, y) of the root and the radius r of the vertical
+/// cylinder that contains every projected joint. Metres.
+struct Sample {
+    double x = 0, y = 0, r = 0;
+};
+
+/// A clip's path: samples i = 0..n-1 at uniform spacing dt (seconds); sample i covers local time
+/// [i*dt, (i+1)*dt). Paper section 3.
+struct Path {
+    double dt = 1.0 / 60.0;
+    std::vector<Sample> samples;
+
+    std::size_t size() const { return samples.size(); }
+    double duration() const { return dt * double(samples.size()); }
+};
+
+/// Throws std::invalid_argument unless dt > 0 and every value is finite with r >= 0.
+void validate(const Path& path);
+
+/// Where and when a clip plays: world position R(theta) p + (x, y) in metres, theta in radians
+/// (counter-clockwise seen from above), and sample i covers global time [t0 + i*dt, t0 + (i+1)*dt).
+struct Placement {
+    double x = 0, y = 0, theta = 0, t0 = 0;
+};
+
+/// A placement's rigid 2D part with its rotation evaluated once.
+struct Rigid2 {
+    double c = 1, s = 0, tx = 0, ty = 0;
+
+    static Rigid2 of(const Placement& p) { return {std::cos(p.theta), std::sin(p.theta), p.x, p.y}; }
+    double apply_x(double x, double y) const { return c * x - s * y + tx; }
+    double apply_y(double x, double y) const { return s * x + c * y + ty; }
+};
+
+/// Global start time of sample k (k may be n: the end of the last sample). Every time comparison in
+/// the library goes through this one expression, so trees and the brute-force reference agree exactly.
+inline double sample_time(const Placement& p, double dt, std::int64_t k) { return p.t0 + double(k) * dt; }
+
+/// Half-open intervals [a0, a1) and [b0, b1) overlap with positive length.
+inline bool times_overlap(double a0, double a1, double b0, double b1) { return a0 < b1 && b0 < a1; }
+
+/// The one sample test used by every method: placed disks overlap, |p_a - p_b| < r_a + r_b (strict).
+inline bool samples_overlap(const Rigid2& ta, const Sample& a, const Rigid2& tb, const Sample& b) {
+    const double dx = ta.apply_x(a.x, a.y) - tb.apply_x(b.x, b.y);
+    const double dy = ta.apply_y(a.x, a.y) - tb.apply_y(b.x, b.y);
+    const double s = a.r + b.r;
+    return dx * dx + dy * dy < s * s;
+}
+
+}  // namespace mobb

@@ -1,0 +1,47 @@
+#include "mobb/core/brute.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mobb {
+
+bool collide_brute(const Path& a, const Placement& pa, const Path& b, const Placement& pb, QueryStats* stats,
+                   SamplePair* hit) {
+    const Rigid2 ta = Rigid2::of(pa), tb = Rigid2::of(pb);
+    const std::int64_t n = std::int64_t(a.size()), m = std::int64_t(b.size());
+    std::uint64_t tested = 0;
+    bool found = false;
+    for (std::int64_t i = 0; i < n && !found; ++i) {
+        const double s0 = sample_time(pa, a.dt, i), s1 = sample_time(pa, a.dt, i + 1);
+        // Candidate window of b's samples, two wider than arithmetic says; the exact predicate decides.
+        const double lo = std::floor((s0 - pb.t0) / b.dt) - 2, hi = std::ceil((s1 - pb.t0) / b.dt) + 2;
+        if (!(hi >= 0 && lo < double(m))) continue;
+        const std::int64_t k0 = std::max<std::int64_t>(0, std::int64_t(std::max(lo, -1.0)));
+        const std::int64_t k1 = std::min<std::int64_t>(m - 1, std::int64_t(std::min(hi, double(m))));
+        for (std::int64_t k = k0; k <= k1; ++k) {
+            if (!times_overlap(s0, s1, sample_time(pb, b.dt, k), sample_time(pb, b.dt, k + 1))) continue;
+            ++tested;
+            if (samples_overlap(ta, a.samples[std::size_t(i)], tb, b.samples[std::size_t(k)])) {
+                if (hit) *hit = {i, k};
+                found = true;
+                break;
+            }
+        }
+    }
+    if (stats) stats->samples += tested;
+    if (!found && hit) *hit = {};
+    return found;
+}
+
+bool collide_all_pairs(const Path& a, const Placement& pa, const Path& b, const Placement& pb) {
+    const Rigid2 ta = Rigid2::of(pa), tb = Rigid2::of(pb);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (std::size_t k = 0; k < b.size(); ++k)
+            if (times_overlap(sample_time(pa, a.dt, std::int64_t(i)), sample_time(pa, a.dt, std::int64_t(i) + 1),
+                              sample_time(pb, b.dt, std::int64_t(k)), sample_time(pb, b.dt, std::int64_t(k) + 1)) &&
+                samples_overlap(ta, a.samples[i], tb, b.samples[k]))
+                return true;
+    return false;
+}
+
+}  // namespace mobb

@@ -1,0 +1,104 @@
+#include "mobb/core/tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+namespace mobb {
+
+namespace {
+
+struct TypeName {
+    TreeType type;
+    const char* name;
+};
+constexpr TypeName kTypeNames[] = {
+    {TreeType::Mobb, "mobb"},       {TreeType::Umobb, "umobb"},   {TreeType::Hybrid1, "hybrid1"},
+    {TreeType::Hybrid2, "hybrid2"}, {TreeType::Mobb1, "mobb1"},   {TreeType::Umobb1, "umobb1"},
+};
+
+bool one_level(TreeType t) { return t == TreeType::Mobb1 || t == TreeType::Umobb1; }
+
+// Which box a node at this level wants (the fit may still fall back from 3D to 2D).
+BoxKind wanted_kind(TreeType t, int level) {
+    switch (t) {
+        case TreeType::Mobb:
+        case TreeType::Mobb1: return BoxKind::Box2;
+        case TreeType::Umobb:
+        case TreeType::Umobb1: return BoxKind::Box3;
+        case TreeType::Hybrid1: return level == 0 ? BoxKind::Box2 : BoxKind::Box3;
+        case TreeType::Hybrid2: return level == 0 ? BoxKind::Box3 : BoxKind::Box2;
+    }
+    return BoxKind::Box2;
+}
+
+}  // namespace
+
+const char* to_string(TreeType type) {
+    for (const TypeName& t : kTypeNames)
+        if (t.type == type) return t.name;
+    return "?";
+}
+
+TreeType parse_tree_type(const std::string& name) {
+    for (const TypeName& t : kTypeNames)
+        if (name == t.name) return t.type;
+    throw std::invalid_argument("unknown tree type '" + name + "' (mobb, umobb, hybrid1, hybrid2, mobb1, umobb1)");
+}
+
+Tree Tree::build(Path path, const TreeOptions& options) {
+    validate(path);
+    if (path.samples.empty()) throw std::invalid_argument("tree: the path has no samples");
+    if (path.samples.size() > 0x7fffffffu) throw std::invalid_argument("tree: too many samples");
+    if (options.n_min < 1) throw std::invalid_argument("tree: n_min must be at least 1");
+    Tree tree;
+    tree.path_ = std::move(path);
+    tree.options_ = options;
+    tree.margin_ = fit_margin(tree.path_);
+    tree.nodes_.reserve(2 * (tree.path_.size() / std::size_t(options.n_min)) + 1);
+    tree.nodes_.resize(1);
+    tree.fill(0, 0, std::uint32_t(tree.path_.size()), 0);
+    return tree;
+}
+
+// Fits node `index`'s box, then splits it at the temporal midpoint while it holds more than n_min
+// samples. Children are appended as adjacent pairs, so a node needs only its first child's index.
+void Tree::fill(int index, std::uint32_t first, std::uint32_t end, int level) {
+    Node node;
+    node.first = first;
+    node.end = end;
+    node.level = std::uint8_t(level);
+    Obb3 box3;
+    if (wanted_kind(options_.type, level) == BoxKind::Box3 && fit_obb3(path_, first, end, box3)) {
+        node.kind = BoxKind::Box3;
+        node.box = std::uint32_t(box3s_.size());
+        box3s_.push_back(box3);
+    } else {
+        node.kind = BoxKind::Box2;
+        node.box = std::uint32_t(box2s_.size());
+        box2s_.push_back(fit_obb2(path_, first, end, options_.fit));
+    }
+    depth_ = std::max(depth_, level + 1);
+    const std::uint32_t count = end - first;
+    const bool split = !one_level(options_.type) && count > std::uint32_t(options_.n_min);
+    if (split) {
+        node.child = std::int32_t(nodes_.size());
+        nodes_.resize(nodes_.size() + 2);
+    }
+    nodes_[std::size_t(index)] = node;
+    if (split) {
+        const std::uint32_t mid = first + count / 2;
+        fill(node.child, first, mid, level + 1);
+        fill(node.child + 1, mid, end, level + 1);
+    }
+}
+
+Obb3 Tree::box3(const Node& node) const {
+    if (node.kind == BoxKind::Box3) return box3s_[node.box];
+    // The margin keeps rounding of the extruded time range from separating boxes whose samples overlap.
+    return extrude(box2s_[node.box], double(node.first) * path_.dt - margin_, double(node.end) * path_.dt + margin_);
+}
+
+}  // namespace mobb

@@ -1,0 +1,11 @@
+# Every external package comes from Debian (see scripts/install-deps); nothing is downloaded or copied.
+find_package(glm CONFIG REQUIRED)              # libglm-dev
+find_package(TinyGLTF CONFIG REQUIRED)         # libtinygltf-dev
+find_package(nlohmann_json CONFIG REQUIRED)    # nlohmann-json3-dev
+find_package(CLI11 CONFIG REQUIRED)            # libcli11-dev
+if(MOBB_BUILD_TESTS)
+  find_package(GTest CONFIG REQUIRED)          # libgtest-dev
+endif()
+if(MOBB_BUILD_BENCH)
+  find_package(benchmark CONFIG REQUIRED)      # libbenchmark-dev
+endif()
