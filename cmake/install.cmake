@@ -1,7 +1,7 @@
 # `cmake --install` puts the libraries, headers and a package config in place so that another
 # project can `find_package(mobb)` and link mobb::core (and mobb::io).
 include(CMakePackageConfigHelpers)
-install(TARGETS mobb_core mobb_io mobb_flags EXPORT mobbTargets
+install(TARGETS mobb_core mobb_io EXPORT mobbTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

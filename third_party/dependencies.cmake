@@ -9,3 +9,6 @@ endif()
 if(MOBB_BUILD_BENCH)
   find_package(benchmark CONFIG REQUIRED)      # libbenchmark-dev
 endif()
+if(MOBB_BUILD_VIEWER AND MOBB_BUILD_APP)
+  include(third_party/viewer.cmake)            # GLFW, OSMesa, Dear ImGui, glad, stb
+endif()

@@ -1,0 +1,82 @@
+// What every subcommand shares: loader options, placements, tree settings, errors and exit codes.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "mobb/core/path.h"
+#include "mobb/core/tree.h"
+#include "mobb/io/load.h"
+
+namespace mobb::app {
+
+/// Exit codes: 0 success, 1 bad input (files, placements, data), 2 usage error.
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2 };
+
+/// Bad input that is not a file's fault (a placement string, a batch line). One line.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The loader options of every subcommand: --up, --scale, --frames, --fps, --skin, --animation.
+struct LoadArgs {
+    std::string up = "y";
+    std::string scale = "auto";
+    std::string frames;
+    double fps = 0;
+    int skin = 0;
+    std::string animation;
+
+    void add_to(CLI::App& cmd);
+    io::LoadOptions options() const;  ///< throws CLI::ValidationError on malformed values
+};
+
+/// Tree settings: --tree, --nmin, --fit.
+struct TreeArgs {
+    std::string type = "mobb";
+    int n_min = 10;
+    std::string fit = "chord";
+
+    void add_to(CLI::App& cmd, bool allow_brute);
+    bool brute() const { return type == "brute"; }
+    TreeOptions options() const;
+};
+
+/// Loads a clip, reporting the scale chosen and any warnings on stderr (stdout stays data only).
+io::Clip load_reported(const std::string& file, const io::LoadOptions& options);
+
+/// Clips and trees by file, each loaded and built once (batch, crowd).
+class ClipCache {
+public:
+    ClipCache(io::LoadOptions load, TreeOptions tree) : load_(std::move(load)), tree_(tree) {}
+    const io::Clip& clip(const std::string& file);
+    const Tree& tree(const std::string& file);
+
+private:
+    io::LoadOptions load_;
+    TreeOptions tree_;
+    std::map<std::string, std::unique_ptr<io::Clip>> clips_;
+    std::map<std::string, std::unique_ptr<Tree>> trees_;
+};
+
+/// "x,y,theta,t0" (metres, degrees, seconds) -> placement with theta in radians. Throws InputError.
+Placement parse_placement(const std::string& text, const std::string& what);
+
+/// Runs a subcommand body, mapping errors to one line on stderr and an exit code. The body writes
+/// its output to `out`, which reaches stdout only on success: no partial output.
+int guarded(const std::function<void(std::ostream& out)>& body);
+
+// Each subcommand file registers itself.
+void add_info(CLI::App& app, int& exit_code);
+void add_path(CLI::App& app, int& exit_code);
+void add_tree(CLI::App& app, int& exit_code);
+void add_query(CLI::App& app, int& exit_code);
+void add_batch(CLI::App& app, int& exit_code);
+
+}  // namespace mobb::app

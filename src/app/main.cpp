@@ -1,0 +1,29 @@
+// mobb: exact space-time collision queries between motion-capture clips (MOBB / UMOBB trees).
+#include <iostream>
+
+#include "cli.h"
+#ifdef MOBB_WITH_VIEWER
+#include "viewer_commands.h"
+#endif
+
+int main(int argc, char** argv) {
+    using namespace mobb::app;
+    CLI::App app{"mobb: exact space-time collision detection between motion-capture characters"};
+    app.require_subcommand(1);
+    int exit_code = kOk;
+    add_info(app, exit_code);
+    add_path(app, exit_code);
+    add_tree(app, exit_code);
+    add_query(app, exit_code);
+    add_batch(app, exit_code);
+#ifdef MOBB_WITH_VIEWER
+    add_viewer_commands(app, exit_code);
+#endif
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);  // prints help or the usage error
+        return code == 0 ? kOk : kUsage;
+    }
+    return exit_code;
+}
