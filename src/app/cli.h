@@ -78,5 +78,6 @@ void add_path(CLI::App& app, int& exit_code);
 void add_tree(CLI::App& app, int& exit_code);
 void add_query(CLI::App& app, int& exit_code);
 void add_batch(CLI::App& app, int& exit_code);
+void add_crowd_commands(CLI::App& app, int& exit_code);  // graph, crowd, bench (cmd_crowd.cpp)
 
 }  // namespace mobb::app
