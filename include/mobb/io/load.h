@@ -16,12 +16,16 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// Options applied by load_clip to every format, in this order: scale, frames, fps.
+/// Invalid values (scale or fps not finite and positive, frames outside 0 <= A < B <= frames)
+/// throw LoadError naming the file.
 struct LoadOptions {
-    UpAxis up = UpAxis::Y;              ///< --up y|z (glTF is always Y-up)
-    std::optional<double> scale;        ///< --scale S (file units to metres); empty = auto (BVH)
+    UpAxis up = UpAxis::Y;              ///< --up y|z (glTF is always Y-up; Z is ignored with a warning)
+    std::optional<double> scale;        ///< --scale S (file units to metres); empty = auto (BVH), 1 (glTF)
     int frame_begin = 0;                ///< --frames A:B keeps frames A..B-1 (after loading)
     int frame_end = -1;                 ///< -1 = to the end
-    std::optional<double> fps;          ///< --fps F: at each new sample time, the original frame at or just below it
+    std::optional<double> fps;          ///< --fps F: at each new sample time k/F, the original frame at or just
+                                        ///< below it (samples k/F < duration); dt becomes 1/F
     int skin = 0;                       ///< glTF: --skin K
     std::string animation;              ///< glTF: --animation NAME (empty = first)
 };
@@ -35,15 +39,35 @@ struct Clip {
     double scale = 1.0;                 ///< metres per file unit
     std::string scale_reason;           ///< e.g. "auto: centimetres (standing height 172.3 units)"
     int source_frames = 0;              ///< frames in the file
-    double source_dt = 0;               ///< frame time in the file (seconds)
+    double source_dt = 0;               ///< frame time in the file (seconds) as written; animation.dt is this
+                                        ///< snapped to 1/N s when it is a rounded 1/N (0.016667 -> 1/60)
+    std::vector<int> source_index;      ///< per sample: the file frame it was taken from
     std::vector<std::string> warnings;  ///< e.g. root jumps of more than 0.5 m between frames
 };
 
-/// Loads a .bvh, .glb or .gltf file (by extension). Throws LoadError.
+/// A units guess for a skeleton `height` file units tall (its standing height, see load_clip).
+struct ScaleGuess {
+    double scale = 1.0;                 ///< metres per file unit
+    std::string reason;                 ///< e.g. "auto: centimetres (standing height 172.3 units)"
+};
+
+/// Chooses among metres (1), centimetres (0.01), inches (0.0254) and the CMU unit (0.056444 m) the
+/// one whose implied height is closest to 1.7 m on a log scale. Metres when height is not positive.
+ScaleGuess guess_scale(double height);
+
+/// Root ground-plane jumps of more than `threshold` metres between consecutive samples, as warnings
+/// "FILE: frame K: root jumps D m from frame J ..." (K, J: file frames). Used by load_clip with 0.5 m.
+std::vector<std::string> root_jumps(const Clip& clip, double threshold = 0.5);
+
+/// Loads a .bvh, .glb or .gltf file (by extension, case-insensitive). Throws LoadError for a missing
+/// or unreadable file ("FILE: cannot open ..."), an unknown extension, malformed content or bad options.
+/// BVH auto scale: the standing height is the median over frames of the largest side of the posed
+/// skeleton's bounding box, see guess_scale. Warnings: root jumps (root_jumps), ignored options.
 Clip load_clip(const std::string& file, const LoadOptions& options = {});
 
-/// The data folder: $MOBB_DATA if set, else ../shared/mocap relative to the working directory,
-/// else the one next to the source tree (compiled in). Empty if none exists.
+/// The data folder: $MOBB_DATA if set and an existing folder, else ../shared/mocap relative to the
+/// working directory, else the one next to the source tree (compiled in). Empty if none exists.
+/// Returned as an absolute, normalised path.
 std::string data_dir();
 
 }  // namespace mobb::io
