@@ -1,0 +1,76 @@
+#include "mobb/crowd/query_methods.h"
+
+#include <cmath>
+
+#include "mobb/core/brute.h"
+#include "mobb/core/obb.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+const char* row_name(TreeType t) {
+    switch (t) {
+        case TreeType::Mobb1: return "MOBB 1 level";
+        case TreeType::Umobb1: return "UMOBB 1 level";
+        case TreeType::Mobb: return "MOBB";
+        case TreeType::Umobb: return "UMOBB";
+        case TreeType::Hybrid1: return "Hybrid 1";
+        case TreeType::Hybrid2: return "Hybrid 2";
+    }
+    return "?";
+}
+
+class TreeMethod : public QueryMethod {
+public:
+    TreeMethod(TreeType type, int n_min) : type_(type), n_min_(n_min) {}
+    std::string name() const override { return row_name(type_); }
+    void prepare(const std::vector<Path>& clips) override {
+        trees_.clear();
+        TreeOptions o;
+        o.type = type_;
+        o.n_min = n_min_;
+        for (const Path& p : clips) trees_.push_back(Tree::build(p, o));
+    }
+    bool query(int a, const Placement& pa, int b, const Placement& pb, QueryStats* stats) const override {
+        return collide(trees_[std::size_t(a)], pa, trees_[std::size_t(b)], pb, stats);
+    }
+
+private:
+    TreeType type_;
+    int n_min_;
+    std::vector<Tree> trees_;
+};
+
+class BruteMethod : public QueryMethod {
+public:
+    std::string name() const override { return "brute force"; }
+    void prepare(const std::vector<Path>& clips) override { paths_ = clips; }
+    bool query(int a, const Placement& pa, int b, const Placement& pb, QueryStats* stats) const override {
+        return collide_brute(paths_[std::size_t(a)], pa, paths_[std::size_t(b)], pb, stats);
+    }
+
+private:
+    std::vector<Path> paths_;
+};
+
+SpaceTimeRigid rigid_of(const Placement& p) { return {std::cos(p.theta), std::sin(p.theta), {p.x, p.y, p.t0}}; }
+
+}  // namespace
+
+std::unique_ptr<QueryMethod> tree_method(TreeType type, int n_min) { return std::make_unique<TreeMethod>(type, n_min); }
+std::unique_ptr<QueryMethod> brute_method() { return std::make_unique<BruteMethod>(); }
+
+std::vector<std::unique_ptr<QueryMethod>> paper_methods(int n_min) {
+    std::vector<std::unique_ptr<QueryMethod>> out;
+    for (TreeType t : {TreeType::Mobb1, TreeType::Umobb1, TreeType::Mobb, TreeType::Umobb, TreeType::Hybrid1, TreeType::Hybrid2})
+        out.push_back(tree_method(t, n_min));
+    out.push_back(brute_method());
+    return out;
+}
+
+bool roots_overlap(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb) {
+    return overlap(transformed(a.box3(a.root()), rigid_of(pa)), transformed(b.box3(b.root()), rigid_of(pb)));
+}
+
+}  // namespace mobb::crowd

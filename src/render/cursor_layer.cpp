@@ -1,0 +1,81 @@
+#include "cursor_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace mobb::render {
+
+int frame_at(const ClipView& clip, double t) {
+    if (!clip.animation || clip.animation->frames() == 0) return -1;
+    const double local = (t - clip.place.t0) / clip.animation->dt;
+    const double f = std::floor(local + 1e-9);
+    return f >= 0 && f < clip.animation->frames() ? int(f) : -1;
+}
+
+void CursorLayer::skeletons(const Frame& frame) {
+    if (revision_ != frame.revision) {
+        // Some files hang the skeleton below the root: stand each one on its lowest joint instead.
+        floor_.assign(frame.clips.size(), 0.0);
+        for (std::size_t c = 0; c < frame.clips.size(); ++c) {
+            const io::Animation* anim = frame.clips[c].animation;
+            if (!anim || anim->positions.empty()) continue;
+            double lowest = 1e300;
+            for (const glm::dvec3& p : anim->positions) lowest = std::min(lowest, io::to_ground(p, frame.clips[c].up).z);
+            floor_[c] = lowest;
+        }
+        revision_ = frame.revision;
+    }
+    const double base = frame.cursor * frame.time_scale;
+    for (std::size_t c = 0; c < frame.clips.size(); ++c) {
+        const ClipView& clip = frame.clips[c];
+        const int f = clip.visible ? frame_at(clip, frame.cursor) : -1;
+        if (f < 0) continue;
+        const Rigid2 m = Rigid2::of(clip.place);
+        const io::Skeleton& skel = clip.animation->skeleton;
+        const glm::vec4 color(clip.color * 0.55f, 1.0f);
+        auto joint = [&](int j) {
+            const glm::dvec3 g = io::to_ground(clip.animation->at(f, j), clip.up);
+            return glm::vec3(float(m.apply_x(g.x, g.y)), float(base + (g.z - floor_[c]) * frame.skeleton_scale),
+                             float(-m.apply_y(g.x, g.y)));
+        };
+        for (int j = 0; j < skel.size(); ++j)
+            if (skel.parents[std::size_t(j)] >= 0) lines_.line(joint(skel.parents[std::size_t(j)]), joint(j), color);
+    }
+}
+
+void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text) {
+    if (ctx.bounds.empty || !(frame.layers.cursor || frame.layers.skeletons)) return;
+    ctx.color->use();
+    ctx.color->set("u_mvp", ctx.view_proj);
+    const double ts = frame.time_scale, t = frame.cursor;
+    const double x0 = std::floor(ctx.bounds.lo.x) - 1, x1 = std::ceil(ctx.bounds.hi.x) + 1;
+    const double y0 = std::floor(ctx.bounds.lo.y) - 1, y1 = std::ceil(ctx.bounds.hi.y) + 1;
+    if (translucent_pass) {
+        if (!frame.layers.cursor) return;
+        plane_.clear();
+        plane_.quad(to_gl(x0, y0, t, ts), to_gl(x1, y0, t, ts), to_gl(x1, y1, t, ts), to_gl(x0, y1, t, ts),
+                    glm::vec4(0.25f, 0.45f, 0.95f, 0.13f));
+        plane_.draw();
+        return;
+    }
+    lines_.clear();
+    if (frame.layers.cursor) {
+        const glm::vec4 edge(0.25f, 0.40f, 0.85f, 1.0f);
+        lines_.line(to_gl(x0, y0, t, ts), to_gl(x1, y0, t, ts), edge);
+        lines_.line(to_gl(x1, y0, t, ts), to_gl(x1, y1, t, ts), edge);
+        lines_.line(to_gl(x1, y1, t, ts), to_gl(x0, y1, t, ts), edge);
+        lines_.line(to_gl(x0, y1, t, ts), to_gl(x0, y0, t, ts), edge);
+        if (frame.layers.labels) {
+            char label[32];
+            std::snprintf(label, sizeof label, "t = %.2f s", t);
+            text.add(to_gl(x1, y1, t, ts), label, edge, Anchor::Left);
+        }
+    }
+    if (frame.layers.skeletons) skeletons(frame);
+    glLineWidth(2.0f);
+    lines_.draw();
+    glLineWidth(1.0f);
+}
+
+}  // namespace mobb::render

@@ -1,0 +1,30 @@
+// The time cursor: a horizontal plane slicing the stacks at one instant, with each clip's skeleton
+// at that instant standing on it (height scaled by the user's factor).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "batch.h"
+#include "frame.h"
+#include "layer.h"
+#include "text_layer.h"
+
+namespace mobb::render {
+
+/// The animation frame playing at global time t, or -1 outside the clip.
+int frame_at(const ClipView& clip, double t);
+
+class CursorLayer {
+public:
+    CursorLayer() : lines_(GL_LINES), plane_(GL_TRIANGLES) {}
+    void draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text);
+
+private:
+    void skeletons(const Frame& frame);
+
+    Batch lines_, plane_;
+    std::uint64_t revision_ = ~std::uint64_t(0);
+    std::vector<double> floor_;  ///< per clip: lowest joint height over the clip (the skeleton's feet)
+};
+
+}  // namespace mobb::render

@@ -1,0 +1,10 @@
+# Writes OUT: a C++ file with every shader in FILES as a string, looked up by file name.
+set(body "// Generated from shaders/ by embed_shaders.cmake. Do not edit.\n#include <cstring>\n\nnamespace mobb::render {\n\nconst char* shader_source(const char* name) {\n")
+foreach(file IN LISTS FILES)
+  get_filename_component(name ${file} NAME)
+  file(READ ${file} text)
+  string(APPEND body "    if (std::strcmp(name, \"${name}\") == 0) return R\"mobb_shader(${text})mobb_shader\";\n")
+endforeach()
+string(APPEND body "    return nullptr;\n}\n\n}  // namespace mobb::render\n")
+file(WRITE ${OUT}.tmp "${body}")
+file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)

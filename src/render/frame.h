@@ -1,0 +1,65 @@
+// What the renderer draws: the clips (tree, placement, skeleton), which layers, the time cursor and
+// the current trace step. Plain data filled by the viewer; the renderer keeps no scene of its own.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mobb/core/path.h"
+#include "mobb/core/query.h"
+#include "mobb/core/trace.h"
+#include "mobb/core/tree.h"
+#include "mobb/io/animation.h"
+
+namespace mobb::render {
+
+struct ClipView {
+    const Tree* tree = nullptr;                 ///< the path and its boxes, in the clip's own frame
+    const io::Animation* animation = nullptr;   ///< joints per frame for the skeleton; null for synthetic paths
+    io::UpAxis up = io::UpAxis::Y;
+    Placement place;
+    glm::vec3 color{0.5f};
+    bool visible = true;
+};
+
+struct Layers {
+    bool grid = true;
+    bool labels = true;
+    bool disks = true;
+    bool disks_translucent = false;
+    bool boxes = false;
+    bool box_faces = true;
+    bool all_levels = false;
+    int level = 0;                ///< 0 = root; levels below a leaf show the leaf
+    int levels = 1;               ///< how many levels from `level` down are drawn
+    bool cursor = true;           ///< the time-cursor plane
+    bool skeletons = true;        ///< skeletons at the cursor time
+    bool trace = true;            ///< the current trace step
+};
+
+/// The trace step to show: event `step` of `events`, a query between clips a and b.
+struct TraceView {
+    const Trace* events = nullptr;
+    int step = -1;
+    int a = -1, b = -1;
+};
+
+struct Frame {
+    std::vector<ClipView> clips;
+    Layers layers;
+    double time_scale = 1.0;      ///< metres of height per second
+    double cursor = 0.0;          ///< seconds (global time)
+    double skeleton_scale = 0.5;  ///< skeleton height factor on the cursor plane
+    TraceView trace;
+    /// Changes whenever clips, placements or trees change: the renderer rebuilds cached geometry.
+    std::uint64_t revision = 0;
+};
+
+/// Colours shared by the 3D view and the panels.
+glm::vec3 clip_color(int index);
+glm::vec3 level_color(int level);
+glm::vec3 outcome_color(TraceOutcome outcome);
+
+}  // namespace mobb::render

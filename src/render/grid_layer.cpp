@@ -1,0 +1,57 @@
+#include "grid_layer.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace mobb::render {
+
+double tick_step(double range, int most) {
+    double step = 1e-3;
+    for (int k = 0; k < 24 && range / step > most; ++k) step *= (k % 3 == 1) ? 2.5 : 2.0;  // 1, 2, 5, 10, ...
+    return step;
+}
+
+static std::string format(double value, double step, const char* unit) {
+    char text[32];
+    std::snprintf(text, sizeof text, step < 1 ? "%.1f %s" : "%.0f %s", value, unit);
+    return text;
+}
+
+void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text) {
+    if (!frame.layers.grid || ctx.bounds.empty) return;
+    const double ts = frame.time_scale;
+    const double x0 = std::floor(ctx.bounds.lo.x) - 1, x1 = std::ceil(ctx.bounds.hi.x) + 1;
+    const double y0 = std::floor(ctx.bounds.lo.y) - 1, y1 = std::ceil(ctx.bounds.hi.y) + 1;
+    const glm::vec4 minor(0.78f, 0.79f, 0.82f, 1.0f), major(0.55f, 0.56f, 0.60f, 1.0f), ink(0.15f, 0.15f, 0.2f, 1.0f);
+    lines_.clear();
+    for (double x = x0; x <= x1; x += 1.0)
+        lines_.line(to_gl(x, y0, 0, ts), to_gl(x, y1, 0, ts), std::fmod(std::fabs(x), 5.0) < 0.5 ? major : minor);
+    for (double y = y0; y <= y1; y += 1.0)
+        lines_.line(to_gl(x0, y, 0, ts), to_gl(x1, y, 0, ts), std::fmod(std::fabs(y), 5.0) < 0.5 ? major : minor);
+
+    // Time axis at the grid's (x0, y0) corner, from t = 0 (or earlier) to the last sample.
+    const double t0 = std::min(0.0, ctx.bounds.lo.z), t1 = std::max(ctx.bounds.hi.z, t0 + 1e-3);
+    lines_.line(to_gl(x0, y0, t0, ts), to_gl(x0, y0, t1, ts), ink);
+    const double step = tick_step(t1 - t0, 10);
+    const double tick = 0.15 * std::max(1.0, (x1 - x0) / 10.0);
+    if (frame.layers.labels) {
+        char caption[48];
+        std::snprintf(caption, sizeof caption, "time (%g m per s)", ts);
+        text.add(to_gl(x0, y0, t1, ts) + glm::vec3(0, 0.25f, 0), caption, ink, Anchor::Right);
+    }
+    for (double t = std::ceil(t0 / step) * step; t <= t1 + 1e-9; t += step) {
+        lines_.line(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), ink);
+        if (frame.layers.labels) text.add(to_gl(x0 - tick, y0, t, ts), format(t, step, "s"), ink, Anchor::Right);
+    }
+    // Metre labels along the front edge.
+    if (frame.layers.labels) {
+        const double mstep = tick_step(x1 - x0, 8) < 1 ? 1 : tick_step(x1 - x0, 8);
+        for (double x = std::ceil((x0 + 0.5) / mstep) * mstep; x <= x1; x += mstep)
+            text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center);
+    }
+    ctx.color->use();
+    ctx.color->set("u_mvp", ctx.view_proj);
+    lines_.draw();
+}
+
+}  // namespace mobb::render

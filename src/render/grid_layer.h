@@ -1,0 +1,22 @@
+// The ground grid (one line per metre, darker every 5 m) and the vertical time axis with labelled ticks.
+#pragma once
+#include "batch.h"
+#include "frame.h"
+#include "layer.h"
+#include "text_layer.h"
+
+namespace mobb::render {
+
+class GridLayer {
+public:
+    GridLayer() : lines_(GL_LINES) {}
+    void draw(const Frame& frame, const DrawContext& ctx, TextLayer& text);
+
+private:
+    Batch lines_;
+};
+
+/// A "nice" step (1, 2 or 5 times a power of ten) giving at most `most` ticks over `range`.
+double tick_step(double range, int most);
+
+}  // namespace mobb::render

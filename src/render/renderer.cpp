@@ -1,0 +1,109 @@
+#include "renderer.h"
+
+#include <algorithm>
+
+#include "box_layer.h"
+#include "cursor_layer.h"
+#include "disk_layer.h"
+#include "grid_layer.h"
+#include "shader.h"
+#include "text_layer.h"
+#include "trace_layer.h"
+
+namespace mobb::render {
+
+Bounds scene_bounds(const Frame& frame) {
+    Bounds b;
+    for (const ClipView& clip : frame.clips) {
+        if (!clip.visible) continue;
+        const Path& path = clip.tree->path();
+        const Rigid2 m = Rigid2::of(clip.place);
+        for (const Sample& s : path.samples) {
+            const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
+            b.add({x - s.r, y - s.r, clip.place.t0});
+            b.add({x + s.r, y + s.r, clip.place.t0});
+        }
+        if (!path.samples.empty()) b.add({b.lo.x, b.lo.y, clip.place.t0 + path.duration()});
+    }
+    return b;
+}
+
+void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi) {
+    const glm::vec3 a = to_gl(bounds.lo.x, bounds.lo.y, bounds.lo.z, time_scale);
+    const glm::vec3 b = to_gl(bounds.hi.x, bounds.hi.y, bounds.hi.z, time_scale);
+    lo = glm::min(a, b);
+    hi = glm::max(a, b);
+}
+
+struct Renderer::Layers {
+    Program color{"color.vert", "color.frag"};
+    Program disk{"disk.vert", "disk.frag"};
+    GridLayer grid;
+    DiskLayer disks;
+    BoxLayer boxes;
+    CursorLayer cursor;
+    TraceLayer trace;
+    TextLayer text;
+};
+
+Renderer::Renderer() : layers_(std::make_unique<Layers>()) {}
+Renderer::~Renderer() = default;
+
+void Renderer::draw(const Frame& frame, const Camera& camera, int width, int height) {
+    Layers& l = *layers_;
+    if (frame.revision != revision_) {
+        l.disks.rebuild(frame);
+        bounds_ = scene_bounds(frame);
+        disks_ = 0;
+        for (const ClipView& clip : frame.clips) disks_ += clip.tree->path().size();
+        revision_ = frame.revision;
+    }
+    // Multisampling costs llvmpipe about 5x in fill: crowds are drawn single-sampled.
+    if (disks_ > kMultisampleUpTo) glDisable(GL_MULTISAMPLE);
+    else glEnable(GL_MULTISAMPLE);
+    DrawContext ctx;
+    ctx.view_proj = camera.projection(float(width) / float(std::max(height, 1))) * camera.view();
+    ctx.width = width;
+    ctx.height = height;
+    ctx.color = &l.color;
+    ctx.disk = &l.disk;
+    ctx.bounds = bounds_;
+
+    glViewport(0, 0, width, height);
+    glClearColor(0.965f, 0.965f, 0.972f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+
+    // Opaque pass.
+    l.grid.draw(frame, ctx, l.text);
+    l.disks.draw(frame, ctx, false);
+    l.boxes.draw(frame, ctx, false);
+    l.cursor.draw(frame, ctx, false, l.text);
+    l.trace.draw(frame, ctx, false);
+
+    // Translucent pass: blended, tested against the opaque depth but not writing it.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    l.disks.draw(frame, ctx, true);
+    l.boxes.draw(frame, ctx, true);
+    l.trace.draw(frame, ctx, true);
+    l.cursor.draw(frame, ctx, true, l.text);
+
+    // Marks that must stay visible through the translucent layers.
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    l.trace.draw_hit(frame, ctx, l.disks);
+
+    // Labels on top.
+    glDisable(GL_DEPTH_TEST);
+    l.text.draw(ctx);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+}  // namespace mobb::render

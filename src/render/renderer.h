@@ -1,0 +1,37 @@
+// The space-time renderer: one code path for the window and for headless images. Draws a Frame
+// into the bound framebuffer.
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include "camera.h"
+#include "frame.h"
+#include "space.h"
+
+namespace mobb::render {
+
+/// Space-time bounds of every visible clip's disks (world positions, global times).
+Bounds scene_bounds(const Frame& frame);
+
+/// GL-world corners of space-time bounds at a time scale (for Camera::frame).
+void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi);
+
+class Renderer {
+public:
+    Renderer();  ///< needs a current GL 3.3 core context
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void draw(const Frame& frame, const Camera& camera, int width, int height);
+
+private:
+    struct Layers;
+    std::unique_ptr<Layers> layers_;
+    std::uint64_t revision_ = ~std::uint64_t(0);
+    Bounds bounds_;
+    std::size_t disks_ = 0;
+    static constexpr std::size_t kMultisampleUpTo = 100000;  ///< disks
+};
+
+}  // namespace mobb::render

@@ -1,0 +1,46 @@
+#include "text_layer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <stb_easy_font.h>
+
+namespace mobb::render {
+
+void TextLayer::add(const glm::vec3& world, std::string text, const glm::vec4& color, Anchor anchor) {
+    labels_.push_back({world, std::move(text), color, anchor});
+}
+
+void TextLayer::draw(const DrawContext& ctx) {
+    // Integer pixel scale keeps the bitmap font crisp: 1 below 600 rows, 2 below 1200, then 3.
+    const float scale = ctx.height >= 1200 ? 3.0f : ctx.height >= 600 ? 2.0f : 1.0f;
+    tris_.clear();
+    std::vector<char> quads(64 * 1024);
+    for (Label& label : labels_) {
+        const glm::vec4 clip = ctx.view_proj * glm::vec4(label.world, 1.0f);
+        if (clip.w <= 0.0f) continue;  // behind the camera
+        const float sx = (clip.x / clip.w * 0.5f + 0.5f) * float(ctx.width);
+        const float sy = (0.5f - clip.y / clip.w * 0.5f) * float(ctx.height);
+        const float w = float(stb_easy_font_width(label.text.data())) * scale;
+        const float x0 = label.anchor == Anchor::Left ? sx + 3.0f * scale
+                       : label.anchor == Anchor::Right ? sx - w - 3.0f * scale : sx - 0.5f * w;
+        const float y0 = sy - 3.5f * scale;
+        const int n = stb_easy_font_print(0.0f, 0.0f, label.text.data(), nullptr, quads.data(), int(quads.size()));
+        for (int q = 0; q < n; ++q) {
+            glm::vec3 v[4];
+            for (int k = 0; k < 4; ++k) {
+                float xy[2];
+                std::memcpy(xy, &quads[std::size_t(q * 4 + k) * 16], sizeof xy);
+                v[k] = {std::round(x0) + xy[0] * scale, std::round(y0) + xy[1] * scale, 0.0f};
+            }
+            tris_.quad(v[0], v[1], v[2], v[3], label.color);
+        }
+    }
+    labels_.clear();
+    ctx.color->use();
+    ctx.color->set("u_mvp", glm::ortho(0.0f, float(ctx.width), float(ctx.height), 0.0f, -1.0f, 1.0f));
+    tris_.draw();
+}
+
+}  // namespace mobb::render

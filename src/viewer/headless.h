@@ -1,0 +1,21 @@
+// Headless rendering through OSMesa: the same renderer (and optionally the same panels) as the window.
+#pragma once
+#include <string>
+
+#include "image.h"
+#include "state.h"
+
+namespace mobb::viewer {
+
+struct HeadlessOptions {
+    int width = 960, height = 540;
+    bool ui = false;  ///< also draw the ImGui panels
+};
+
+/// Renders the state into an image. Throws std::runtime_error when no context can be made.
+render::Image render_headless(State& state, const HeadlessOptions& options);
+
+/// Frames per second of the state's scene at width x height (a few warm-up frames, then `frames`).
+double bench_headless(State& state, int width, int height, int frames);
+
+}  // namespace mobb::viewer

@@ -1,0 +1,332 @@
+#include "panels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "cli.h"
+
+namespace mobb::viewer {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+ImVec4 imvec(const glm::vec3& c) { return {c.r, c.g, c.b, 1.0f}; }
+
+int max_level(const State& s) {
+    int depth = 1;
+    for (const LoadedClip& c : s.clips) depth = std::max(depth, c.tree->depth());
+    return depth - 1;
+}
+
+double max_time(const State& s) {
+    double t = 1.0;
+    for (std::size_t k = 0; k < s.clips.size(); ++k)
+        t = std::max(t, s.places[k].t0 + s.clips[k].tree->path().duration());
+    return t;
+}
+
+bool drag(const char* label, double* v, float speed, double lo, double hi, const char* format) {
+    return ImGui::DragScalar(label, ImGuiDataType_Double, v, speed, &lo, &hi, format);
+}
+
+void scene_panel(State& s, Ui& ui) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Scene")) return ImGui::End();
+    render::Layers& l = s.scene.layers;
+    ImGui::Checkbox("grid", &l.grid);
+    ImGui::SameLine();
+    ImGui::Checkbox("labels", &l.labels);
+    ImGui::Checkbox("disks", &l.disks);
+    ImGui::SameLine();
+    ImGui::Checkbox("translucent", &l.disks_translucent);
+    ImGui::Checkbox("boxes", &l.boxes);
+    ImGui::SameLine();
+    ImGui::Checkbox("faces", &l.box_faces);
+    ImGui::SameLine();
+    ImGui::Checkbox("all", &l.all_levels);
+    ImGui::SliderInt("level", &l.level, 0, max_level(s));
+    ImGui::Checkbox("cursor", &l.cursor);
+    ImGui::SameLine();
+    ImGui::Checkbox("skeletons", &l.skeletons);
+    ImGui::SameLine();
+    ImGui::Checkbox("trace", &l.trace);
+    drag("time", &s.scene.cursor, 0.01f, 0.0, max_time(s), "%.2f s");
+    drag("m per s", &s.scene.time_scale, 0.01f, 0.05, 20.0, "%.2f");
+    drag("skeleton", &s.scene.skeleton_scale, 0.01f, 0.05, 5.0, "%.2f x");
+    if (ImGui::Button("frame all (F)")) ui.request_frame_all = true;
+    ImGui::SameLine();
+    if (ImGui::Button("top")) ui.request_view = 1;
+    ImGui::SameLine();
+    if (ImGui::Button("side")) ui.request_view = 2;
+    char path[256];
+    std::snprintf(path, sizeof path, "%s", ui.save_path.c_str());
+    if (ImGui::InputText("##path", path, sizeof path)) ui.save_path = path;
+    ImGui::SameLine();
+    if (ImGui::Button("save")) {
+        try {
+            sync_scene(s);
+            save_scene(s.scene, ui.save_path);
+            ui.status = "saved " + ui.save_path;
+        } catch (const std::exception& e) {
+            ui.status = e.what();
+        }
+    }
+    if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
+    ImGui::End();
+}
+
+bool clip_combo(const char* label, int* index, const State& s) {
+    const char* preview = *index >= 0 && *index < int(s.clips.size()) ? s.clips[std::size_t(*index)].name.c_str() : "-";
+    bool changed = false;
+    if (ImGui::BeginCombo(label, preview)) {
+        for (int k = 0; k < int(s.clips.size()); ++k) {
+            ImGui::PushID(k);
+            if (ImGui::Selectable(s.clips[std::size_t(k)].name.c_str(), k == *index)) {
+                *index = k;
+                changed = true;
+            }
+            ImGui::PopID();
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool placement_fields(const char* id, Placement& p) {
+    ImGui::PushID(id);
+    double xy[2] = {p.x, p.y}, turn[2] = {p.theta * kDegrees, p.t0};
+    const double lo = -1e4, hi = 1e4;
+    bool changed = false;
+    if (ImGui::DragScalarN("x y (m)", ImGuiDataType_Double, xy, 2, 0.01f, &lo, &hi, "%.2f")) {
+        p.x = xy[0], p.y = xy[1];
+        changed = true;
+    }
+    if (ImGui::DragScalarN("deg t0 (s)", ImGuiDataType_Double, turn, 2, 0.05f, &lo, &hi, "%.2f")) {
+        p.theta = turn[0] / kDegrees, p.t0 = turn[1];
+        changed = true;
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+void query_panel(State& s, Ui& ui) {
+    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(280, 300), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Query")) return ImGui::End();
+    bool rerun = clip_combo("A", &s.scene.query_a, s);
+    rerun |= clip_combo("B", &s.scene.query_b, s);
+    const int a = s.scene.query_a, b = s.scene.query_b, n = int(s.clips.size());
+    if (a >= 0 && a < n) {
+        ImGui::TextColored(imvec(render::clip_color(a)), "A: %s", s.clips[std::size_t(a)].name.c_str());
+        rerun |= placement_fields("pa", s.places[std::size_t(a)]);
+    }
+    if (b >= 0 && b < n) {
+        ImGui::TextColored(imvec(render::clip_color(b)), "B: %s", s.clips[std::size_t(b)].name.c_str());
+        rerun |= placement_fields("pb", s.places[std::size_t(b)]);
+    }
+    static const char* kTypes[] = {"MOBB", "UMOBB", "Hybrid 1", "Hybrid 2", "1-level MOBB", "1-level UMOBB"};
+    int type = int(s.scene.tree.type);
+    bool rebuild = ImGui::Combo("tree", &type, kTypes, 6);
+    rebuild |= ImGui::SliderInt("n_min", &s.scene.tree.n_min, 1, 64);
+    if (rebuild) {
+        s.scene.tree.type = TreeType(type);
+        s.scene.tree.n_min = std::max(1, s.scene.tree.n_min);
+        rebuild_trees(s);
+    } else if (rerun || ImGui::Button("run query")) {
+        run_query(s);
+    }
+    if (s.queried) {
+        ImGui::TextColored(s.answer ? ImVec4(0.9f, 0.1f, 0.1f, 1) : ImVec4(0.1f, 0.6f, 0.2f, 1), "%s",
+                           s.answer ? "collide: yes" : "collide: no");
+        if (s.answer) ImGui::Text("hit: A sample %lld, B sample %lld", (long long)s.hit.a, (long long)s.hit.b);
+        ImGui::Text("2D tests %llu  3D tests %llu", (unsigned long long)s.stats.tests2d,
+                    (unsigned long long)s.stats.tests3d);
+        ImGui::Text("sample tests %llu  events %zu", (unsigned long long)s.stats.samples, s.trace.size());
+    } else {
+        ImGui::TextDisabled("choose two different clips");
+    }
+    ImGui::End();
+}
+
+const char* short_name(TraceTest t) { return to_string(t); }
+
+void trace_panel(State& s, Ui& ui) {
+    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 316.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(280, std::max(160.0f, float(ui.window_size.y) - 324.0f)), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Trace")) return ImGui::End();
+    const int last = int(s.trace.size()) - 1;
+    const int step = shown_step(s);
+    if (ImGui::Button("|<")) go_to_step(s, ui, 0);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) go_to_step(s, ui, step - 1);
+    ImGui::SameLine();
+    if (ImGui::Button(ui.playing ? "pause" : "play")) ui.playing = !ui.playing;
+    ImGui::SameLine();
+    if (ImGui::Button(">")) go_to_step(s, ui, step + 1);
+    ImGui::SameLine();
+    if (ImGui::Button(">|")) go_to_step(s, ui, last);
+    ImGui::SliderFloat("steps/s", &ui.rate, 0.5f, 60.0f, "%.1f");
+    int k = step;
+    if (last >= 0 && ImGui::SliderInt("step", &k, 0, last)) go_to_step(s, ui, k);
+    ImGui::Checkbox("cursor follows step", &ui.follow);
+    ImGui::Separator();
+    ImGui::BeginChild("events");
+    ImGuiListClipper clipper;
+    clipper.Begin(int(s.trace.size()));
+    while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const TraceEvent& e = s.trace[std::size_t(i)];
+            char line[128];
+            std::snprintf(line, sizeof line, "%4d %-7s A%-4d B%-4d %s", i, short_name(e.test), int(e.node_a),
+                          int(e.node_b), to_string(e.outcome));
+            ImGui::PushStyleColor(ImGuiCol_Text, imvec(render::outcome_color(e.outcome) * 0.8f));
+            if (ImGui::Selectable(line, i == step)) go_to_step(s, ui, i);
+            ImGui::PopStyleColor();
+        }
+    }
+    if (ui.scroll_to_step && step >= 0) {
+        ImGui::SetScrollY(float(step) * ImGui::GetTextLineHeightWithSpacing() - ImGui::GetWindowHeight() * 0.5f);
+        ui.scroll_to_step = false;
+    }
+    ImGui::EndChild();
+    ImGui::End();
+}
+
+void update_fit(const State& s, FitTable& fit) {
+    if (fit.clip == -1 && !s.clips.empty()) fit.clip = std::max(0, s.scene.query_a);
+    if (fit.clip < 0 || fit.clip >= int(s.clips.size())) return;
+    if (fit.revision == s.revision && fit.n_min == s.scene.tree.n_min && !fit.mobb.empty()) return;
+    const Path& path = s.clips[std::size_t(fit.clip)].tree->path();
+    TreeOptions o;
+    o.n_min = s.scene.tree.n_min;
+    o.type = TreeType::Mobb;
+    fit.mobb = level_stats(Tree::build(path, o));
+    o.type = TreeType::Umobb;
+    fit.umobb = level_stats(Tree::build(path, o));
+    o.type = TreeType::Mobb;
+    o.fit = AxisFit::Pca;
+    fit.pca = level_stats(Tree::build(path, o));
+    fit.n_min = s.scene.tree.n_min;
+    fit.revision = s.revision;
+}
+
+void fit_panel(State& s, Ui& ui) {
+    ImGui::SetNextWindowPos(ImVec2(8, float(ui.window_size.y) - 196.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(400, 188), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Tree fit")) return ImGui::End();
+    if (clip_combo("clip", &ui.fit.clip, s)) ui.fit.mobb.clear();
+    update_fit(s, ui.fit);
+    ImGui::TextDisabled("tight = box / covered (area, volume); 1 is perfect");
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("fit", 7, flags)) {
+        for (const char* h : {"lvl", "nodes", "MOBB m2", "tight", "UMOBB m2s", "tight", "PCA tight"})
+            ImGui::TableSetupColumn(h);
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableHeadersRow();
+        const std::size_t rows = std::min({ui.fit.mobb.size(), ui.fit.umobb.size(), ui.fit.pca.size()});
+        for (std::size_t r = 0; r < rows; ++r) {
+            const LevelStats &m = ui.fit.mobb[r], &u = ui.fit.umobb[r], &p = ui.fit.pca[r];
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextColored(imvec(render::level_color(m.level)), "%d", m.level);
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", m.nodes);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", m.mean_area);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", m.area_ratio);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", u.mean_volume);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", u.volume_ratio);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", p.area_ratio);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+void pick_panel(const State& s, const Ui& ui) {
+    const Pick& p = ui.pick;
+    if (p.clip < 0 || p.clip >= int(s.clips.size())) return;
+    const Path& path = s.clips[std::size_t(p.clip)].tree->path();
+    if (p.sample < 0 || p.sample >= int(path.size())) return;
+    const Placement& place = s.places[std::size_t(p.clip)];
+    const Sample& smp = path.samples[std::size_t(p.sample)];
+    const Rigid2 m = Rigid2::of(place);
+    ImGui::SetNextWindowPos(ImVec2(266, 8), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Picked disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextColored(imvec(render::clip_color(p.clip)), "clip %d: %s", p.clip, s.clips[std::size_t(p.clip)].name.c_str());
+    ImGui::Text("sample %d", p.sample);
+    ImGui::Text("time %.3f .. %.3f s", sample_time(place, path.dt, p.sample), sample_time(place, path.dt, p.sample + 1));
+    ImGui::Text("position %.3f, %.3f m", m.apply_x(smp.x, smp.y), m.apply_y(smp.x, smp.y));
+    ImGui::Text("radius %.3f m", smp.r);
+    ImGui::End();
+}
+
+}  // namespace
+
+void go_to_step(State& s, Ui& ui, int k) {
+    if (s.trace.empty()) return;
+    k = std::clamp(k, 0, int(s.trace.size()) - 1);
+    s.scene.step = k;
+    ui.scroll_to_step = true;
+    if (!ui.follow) return;
+    // The cursor goes to the middle of the time both nodes share (or node A's start when none).
+    const TraceEvent& e = s.trace[std::size_t(k)];
+    const int a = s.scene.query_a, b = s.scene.query_b;
+    auto span = [&](int clip, std::int32_t node, double& t0, double& t1) {
+        const Tree& tree = *s.clips[std::size_t(clip)].tree;
+        if (node < 0 || node >= std::int32_t(tree.nodes().size())) return false;
+        const Node& n = tree.nodes()[std::size_t(node)];
+        t0 = sample_time(s.places[std::size_t(clip)], tree.path().dt, n.first);
+        t1 = sample_time(s.places[std::size_t(clip)], tree.path().dt, n.end);
+        return true;
+    };
+    double a0, a1, b0, b1;
+    if (!span(a, e.node_a, a0, a1) || !span(b, e.node_b, b0, b1)) return;
+    if (e.outcome == TraceOutcome::Hit && e.sample_a >= 0) {
+        const Path& pa = s.clips[std::size_t(a)].tree->path();
+        s.scene.cursor = sample_time(s.places[std::size_t(a)], pa.dt, e.sample_a) + 0.5 * pa.dt;
+    } else {
+        const double lo = std::max(a0, b0), hi = std::min(a1, b1);
+        s.scene.cursor = lo < hi ? 0.5 * (lo + hi) : 0.5 * (a0 + a1);
+    }
+}
+
+void update_playback(State& s, Ui& ui, double seconds) {
+    if (!ui.playing || s.trace.empty()) return;
+    ui.play_clock += seconds * double(ui.rate);
+    const int steps = int(ui.play_clock);
+    if (steps <= 0) return;
+    ui.play_clock -= steps;
+    const int next = shown_step(s) + steps;
+    if (next >= int(s.trace.size())) ui.playing = false;
+    go_to_step(s, ui, next);
+}
+
+void apply_style() {
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.FramePadding = ImVec2(4, 2);
+    style.ItemSpacing = ImVec2(6, 3);
+    style.WindowRounding = 3;
+    style.Alpha = 0.96f;
+}
+
+void draw_panels(State& s, Ui& ui) {
+    scene_panel(s, ui);
+    query_panel(s, ui);
+    trace_panel(s, ui);
+    fit_panel(s, ui);
+    pick_panel(s, ui);
+}
+
+}  // namespace mobb::viewer

@@ -1,0 +1,65 @@
+#include "picking.h"
+
+#include <cmath>
+#include <limits>
+
+namespace mobb::viewer {
+
+namespace {
+
+/// Entry distance of a ray into a vertical cylinder (GL world: axis along y, base at y0, height h).
+double enter_cylinder(const render::Ray& ray, double cx, double cz, double r, double y0, double h) {
+    const double ox = ray.origin.x - cx, oz = ray.origin.z - cz, dx = ray.dir.x, dz = ray.dir.z;
+    const double a = dx * dx + dz * dz, b = 2 * (ox * dx + oz * dz), c = ox * ox + oz * oz - r * r;
+    double best = std::numeric_limits<double>::infinity();
+    if (a > 1e-12) {
+        const double disc = b * b - 4 * a * c;
+        if (disc >= 0) {
+            const double t = (-b - std::sqrt(disc)) / (2 * a);
+            const double y = ray.origin.y + t * ray.dir.y;
+            if (t > 0 && y >= y0 && y <= y0 + h) best = t;
+        }
+    }
+    // Caps: the top or bottom disk.
+    if (std::fabs(ray.dir.y) > 1e-12) {
+        for (double yc : {y0, y0 + h}) {
+            const double t = (yc - ray.origin.y) / ray.dir.y;
+            const double px = ox + t * dx, pz = oz + t * dz;
+            if (t > 0 && px * px + pz * pz <= r * r) best = std::min(best, t);
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+Pick pick_disk(const State& s, const render::Ray& ray) {
+    Pick best;
+    double nearest = std::numeric_limits<double>::infinity();
+    const double ts = s.scene.time_scale;
+    for (std::size_t k = 0; k < s.clips.size(); ++k) {
+        if (k < s.scene.clips.size() && !s.scene.clips[k].visible) continue;
+        const Path& path = s.clips[k].tree->path();
+        const Rigid2 m = Rigid2::of(s.places[k]);
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            const Sample& smp = path.samples[i];
+            const double t0 = sample_time(s.places[k], path.dt, std::int64_t(i));
+            const double d = enter_cylinder(ray, m.apply_x(smp.x, smp.y), -m.apply_y(smp.x, smp.y), smp.r, t0 * ts,
+                                            path.dt * ts);
+            if (d < nearest) {
+                nearest = d;
+                best = {int(k), int(i)};
+            }
+        }
+    }
+    return best;
+}
+
+std::optional<glm::dvec2> ground_point(const render::Ray& ray, double height) {
+    if (std::fabs(ray.dir.y) < 1e-9) return std::nullopt;
+    const double t = (height - ray.origin.y) / ray.dir.y;
+    if (t <= 0) return std::nullopt;
+    return glm::dvec2(ray.origin.x + t * ray.dir.x, -(ray.origin.z + t * ray.dir.z));
+}
+
+}  // namespace mobb::viewer

@@ -1,0 +1,67 @@
+// Scene files (JSON): which clips (files with loader options, or synthetic random walks), their
+// placements, tree settings, the query, visible layers, time cursor, camera, trace step, image size.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "camera.h"
+#include "frame.h"
+#include "mobb/core/path.h"
+#include "mobb/core/tree.h"
+
+namespace mobb::viewer {
+
+/// A synthetic path: a seeded random walk (no skeleton), for data-free tests and the benchmark.
+struct RandomWalk {
+    double seconds = 10.0;
+    double hz = 60.0;
+    unsigned seed = 1;
+};
+
+struct SceneClip {
+    std::string file;                    ///< relative to the data folder (io::data_dir()) or absolute
+    std::optional<RandomWalk> walk;      ///< instead of a file
+    std::string up = "y";                ///< loader options, as on the command line
+    std::string scale = "auto";
+    std::string frames;
+    double fps = 0;
+    Placement place;                     ///< theta in radians (degrees in the file)
+    bool visible = true;
+};
+
+/// `count` random walks on a square grid `spacing` metres apart (the benchmark crowd).
+struct Generate {
+    int count = 0;
+    RandomWalk walk;
+    double spacing = 8.0;
+};
+
+struct Scene {
+    std::vector<SceneClip> clips;
+    Generate generate;
+    TreeOptions tree;
+    int query_a = 0, query_b = 1;        ///< clip indices of the query; -1 for none
+    int step = -1;                       ///< trace step shown (clamped to the last event); -1 for none
+    render::Layers layers;
+    double time_scale = 1.0;
+    double cursor = 0.0;
+    double skeleton_scale = 0.5;
+    std::optional<render::Camera> camera;  ///< absent: frame everything; target in space-time (x, y, t)
+    int width = 960, height = 540;
+};
+
+/// Parses a scene. Throws app::InputError with one line "FILE: KEY.PATH: message" (or the JSON
+/// parser's line and column) for a missing file, malformed JSON, unknown keys or wrong types.
+Scene load_scene(const std::string& file);
+Scene parse_scene(const nlohmann::json& json, const std::string& file);
+nlohmann::json scene_json(const Scene& scene);
+/// Writes through a temporary file renamed into place. Throws app::InputError.
+void save_scene(const Scene& scene, const std::string& file);
+
+/// A scene of the given clip files, placed so that their paths cross at the origin.
+Scene scene_of_files(const std::vector<std::string>& files);
+
+}  // namespace mobb::viewer

@@ -1,0 +1,133 @@
+#include "state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "cli.h"
+#include "random_walk.h"
+#include "renderer.h"
+
+namespace mobb::viewer {
+
+std::string resolve_clip_file(const std::string& file) {
+    const std::filesystem::path p(file);
+    if (p.is_absolute()) return file;
+    const std::string data = io::data_dir();
+    if (data.empty()) throw app::InputError(file + ": no data folder (set MOBB_DATA or run next to ../shared/mocap)");
+    return (std::filesystem::path(data) / p).string();
+}
+
+static LoadedClip load_clip(const SceneClip& c, std::size_t index) {
+    LoadedClip out;
+    if (c.walk) {
+        out.name = "walk " + std::to_string(c.walk->seed);
+        return out;
+    }
+    app::LoadArgs args;
+    args.up = c.up;
+    args.scale = c.scale;
+    args.frames = c.frames;
+    args.fps = c.fps;
+    const std::string file = resolve_clip_file(c.file);
+    out.clip = std::make_shared<io::Clip>(io::load_clip(file, args.options()));
+    if (out.clip->path.samples.empty()) throw io::LoadError(file + ": no samples left after frames / fps");
+    out.name = std::filesystem::path(c.file).filename().string();
+    (void)index;
+    return out;
+}
+
+static Path path_of(const State& s, std::size_t k) {
+    if (s.clips[k].clip) return s.clips[k].clip->path;
+    if (k < s.scene.clips.size()) return random_walk(*s.scene.clips[k].walk);
+    RandomWalk w = s.scene.generate.walk;
+    w.seed += unsigned(k - s.scene.clips.size());
+    return random_walk(w);
+}
+
+State load_state(const Scene& scene, float aspect) {
+    State s;
+    s.scene = scene;
+    for (std::size_t k = 0; k < scene.clips.size(); ++k) {
+        s.clips.push_back(load_clip(scene.clips[k], k));
+        s.places.push_back(scene.clips[k].place);
+    }
+    const int side = int(std::ceil(std::sqrt(double(scene.generate.count))));
+    for (int k = 0; k < scene.generate.count; ++k) {
+        LoadedClip c;
+        c.name = "walk " + std::to_string(scene.generate.walk.seed + unsigned(k));
+        s.clips.push_back(std::move(c));
+        s.places.push_back({double(k % side) * scene.generate.spacing, double(k / side) * scene.generate.spacing, 0, 0});
+    }
+    rebuild_trees(s);
+    if (scene.camera) s.camera = *scene.camera;
+    else frame_all(s, aspect);
+    return s;
+}
+
+void rebuild_trees(State& s) {
+    for (std::size_t k = 0; k < s.clips.size(); ++k)
+        s.clips[k].tree = std::make_unique<Tree>(Tree::build(path_of(s, k), s.scene.tree));
+    run_query(s);
+}
+
+void run_query(State& s) {
+    ++s.revision;
+    s.trace.clear();
+    s.stats = {};
+    s.hit = {};
+    s.answer = false;
+    s.queried = false;
+    const int a = s.scene.query_a, b = s.scene.query_b, n = int(s.clips.size());
+    if (a < 0 || b < 0 || a >= n || b >= n || a == b) return;
+    s.answer = collide(*s.clips[std::size_t(a)].tree, s.places[std::size_t(a)], *s.clips[std::size_t(b)].tree,
+                       s.places[std::size_t(b)], &s.stats, &s.trace, &s.hit);
+    s.queried = true;
+}
+
+void frame_all(State& s, float aspect) {
+    const render::Frame f = frame_of(s);
+    const render::Bounds b = render::scene_bounds(f);
+    if (b.empty) return;
+    glm::vec3 lo, hi;
+    render::gl_bounds(b, s.scene.time_scale, lo, hi);
+    // The grid reaches a metre past the clips and the time axis stands at its corner, labels outside.
+    const glm::vec3 margin(2.0f, 0.0f, 2.0f);
+    s.camera.frame(lo - margin, hi + margin, aspect);
+    s.camera.distance *= 0.72f;
+}
+
+void sync_scene(State& s) {
+    for (std::size_t k = 0; k < s.scene.clips.size(); ++k) s.scene.clips[k].place = s.places[k];
+    s.scene.camera = s.camera;
+}
+
+int shown_step(const State& s) {
+    if (s.scene.step < 0 || s.trace.empty()) return -1;
+    return std::min(s.scene.step, int(s.trace.size()) - 1);
+}
+
+render::Frame frame_of(const State& s) {
+    render::Frame f;
+    for (std::size_t k = 0; k < s.clips.size(); ++k) {
+        render::ClipView v;
+        v.tree = s.clips[k].tree.get();
+        if (s.clips[k].clip) {
+            v.animation = &s.clips[k].clip->animation;
+            v.up = s.clips[k].clip->up;
+        }
+        v.place = s.places[k];
+        v.color = render::clip_color(int(k));
+        v.visible = k >= s.scene.clips.size() || s.scene.clips[k].visible;
+        f.clips.push_back(v);
+    }
+    f.layers = s.scene.layers;
+    f.time_scale = s.scene.time_scale;
+    f.cursor = s.scene.cursor;
+    f.skeleton_scale = s.scene.skeleton_scale;
+    f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
+    f.revision = s.revision;
+    return f;
+}
+
+}  // namespace mobb::viewer

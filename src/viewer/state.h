@@ -1,0 +1,55 @@
+// The viewer's model: a scene, its loaded clips and trees, the query's answer and trace. Shared by
+// the window, headless rendering and glTF export; the panels edit it.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "frame.h"
+#include "mobb/core/query.h"
+#include "mobb/core/trace.h"
+#include "mobb/core/tree.h"
+#include "mobb/io/load.h"
+#include "scene.h"
+
+namespace mobb::viewer {
+
+struct LoadedClip {
+    std::string name;                   ///< file name, or "walk N"
+    std::shared_ptr<io::Clip> clip;     ///< null for synthetic paths (no skeleton)
+    std::unique_ptr<Tree> tree;         ///< built with the scene's tree options
+};
+
+struct State {
+    Scene scene;
+    std::vector<LoadedClip> clips;      ///< scene.clips, then the generated walks
+    std::vector<Placement> places;      ///< one per clip (generated ones too)
+    Trace trace;
+    QueryStats stats;
+    SamplePair hit;
+    bool answer = false;
+    bool queried = false;
+    render::Camera camera;
+    std::uint64_t revision = 1;         ///< bumped on any change of clips, placements or trees
+};
+
+/// The absolute path of a scene clip's file (relative names are under io::data_dir()).
+std::string resolve_clip_file(const std::string& file);
+
+/// Loads every clip and builds the trees, runs the query, sets the camera. Throws io::LoadError or
+/// app::InputError naming the file.
+State load_state(const Scene& scene, float aspect);
+
+void rebuild_trees(State& state);   ///< after tree options change; also re-runs the query
+void run_query(State& state);       ///< after placements or the query's clips change
+void frame_all(State& state, float aspect);
+void sync_scene(State& state);      ///< copies placements and camera back into state.scene (to save)
+
+/// The step actually shown: scene.step clamped to the trace (-1 when none).
+int shown_step(const State& state);
+
+render::Frame frame_of(const State& state);
+
+}  // namespace mobb::viewer

@@ -1,0 +1,156 @@
+// Smoke runs of the benchmarks (shape of the output, not timing) and the crowd layer's command line.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "data.h"
+#include "mobb/crowd/bench_tables.h"
+#include "mobb/crowd/record.h"
+
+namespace mobb::crowd {
+namespace {
+
+const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+const std::vector<std::string> kRows = {"MOBB 1 level", "UMOBB 1 level", "MOBB", "UMOBB", "Hybrid 1", "Hybrid 2", "brute force"};
+
+void expect_shape(const BenchTable& t, bool stepping) {
+    ASSERT_EQ(t.rows.size(), kRows.size() + (stepping ? 1 : 0));
+    for (std::size_t k = 0; k < kRows.size(); ++k) {
+        const MethodRow& r = t.rows[k];
+        EXPECT_EQ(r.method, kRows[k]);
+        EXPECT_GT(r.queries, 0u);
+        EXPECT_GT(r.us_per_query, 0.0);
+        EXPECT_EQ(r.disagreements, 0u) << r.method << " disagrees with brute force";
+        EXPECT_DOUBLE_EQ(r.positive, t.rows.front().positive);
+    }
+    EXPECT_EQ(t.rows[0].tests3d, 0.0);  // MOBB 1 level: 2D root only
+    EXPECT_EQ(t.rows[1].tests2d, 0.0);  // UMOBB 1 level: 3D root only
+    EXPECT_GT(t.rows[2].tests2d, 0.0);
+    const nlohmann::json j = nlohmann::json::parse(table_json(t));
+    ASSERT_EQ(j["rows"].size(), t.rows.size());
+    for (const auto& row : j["rows"]) {
+        EXPECT_TRUE(row["method"].is_string());
+        EXPECT_TRUE(row["us_per_query"].is_number());
+    }
+    const std::string md = table_markdown(t);
+    EXPECT_NE(md.find("| Method | Time (us) | #2D | #3D | #sample |"), std::string::npos);
+    EXPECT_NE(md.find("| Hybrid 2 |"), std::string::npos);
+}
+
+TEST(Bench, Table1QuickShape) {
+    Table1Options o;
+    o.graph = kGraph;
+    o.agents = 20;
+    o.seconds = 10;
+    o.passes = 1;
+    const BenchTable t = run_table1(o);
+    expect_shape(t, true);
+    EXPECT_EQ(t.rows.back().method, "frame stepping");
+    EXPECT_EQ(t.workload, "table1");
+    const std::string png = testing::TempDir() + "table1.png";
+    write_table_png(t, png);
+    std::ifstream f(png, std::ios::binary);
+    char magic[4] = {};
+    f.read(magic, 4);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+    std::remove(png.c_str());
+}
+
+TEST(Bench, Table2QuickShapeAndRootShare) {
+    MOBB_REQUIRE_MOCAP();
+    Table2Options o;
+    o.graph = kGraph;
+    o.tests = 1000;
+    o.root_share = 0.8;
+    o.passes = 1;
+    o.motions = 4;
+    const BenchTable t = run_table2(o);
+    expect_shape(t, false);
+    EXPECT_EQ(t.rows.front().queries, 1000u);
+    EXPECT_NE(t.notes.at("root overlap target").find("80.0 %"), std::string::npos);
+}
+
+TEST(Bench, Table2SynthShape) {
+    Table2Options o;
+    o.graph = kGraph;
+    o.synth = true;
+    o.motions = 3;
+    o.synth_seconds = 20;
+    o.tests = 500;
+    o.root_share = 0.5;
+    o.passes = 1;
+    const BenchTable t = run_table2(o);
+    expect_shape(t, false);
+    EXPECT_NE(t.title.find("motion-graph sequences"), std::string::npos);
+}
+
+#ifdef MOBB_EXE
+struct Result {
+    int code;
+    std::string out, err;
+};
+
+Result run(const std::string& args) {
+    const std::string err = testing::TempDir() + "crowd_cli_err.txt";
+    const std::string cmd = std::string(MOBB_EXE) + " " + args + " 2>" + err;
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+    const int status = pclose(p);
+    std::ifstream e(err);
+    std::stringstream es;
+    es << e.rdbuf();
+    return {WEXITSTATUS(status), out, es.str()};
+}
+
+TEST(CrowdCli, BenchCommandsPrintTables) {
+    const std::string json = testing::TempDir() + "t1.json", png = testing::TempDir() + "t1.png";
+    const Result r = run("bench table1 --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("| MOBB 1 level |"), std::string::npos);
+    EXPECT_NE(r.out.find("| frame stepping |"), std::string::npos);
+    std::ifstream j(json);
+    EXPECT_EQ(nlohmann::json::parse(j)["rows"].size(), 8u);
+    std::remove(json.c_str());
+    std::remove(png.c_str());
+    const Result r2 = run("bench table2 --synth --quick --quiet --motions 2 --synth-seconds 10 --graph " + kGraph);
+    ASSERT_EQ(r2.code, 0) << r2.err;
+    EXPECT_NE(r2.out.find("| Hybrid 1 |"), std::string::npos);
+}
+
+TEST(CrowdCli, CrowdPrintsSummaryAndRecord) {
+    const std::string rec = testing::TempDir() + "rec.json";
+    const Result r = run("crowd --quiet --graph " + kGraph + " --agents 10 --seconds 5 --world 20x20 --record " + rec);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("0 outside fallbacks"), std::string::npos) << r.out;
+    EXPECT_EQ(load_record(rec).tracks.size(), 10u);
+    std::remove(rec.c_str());
+}
+
+TEST(CrowdCli, ErrorsAndExitCodes) {
+    Result r = run("crowd --quiet --graph " + kGraph + " --world 30by40");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("--world"), std::string::npos);
+    EXPECT_TRUE(r.out.empty());
+    r = run("crowd --quiet --graph /nonexistent/g.json");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("/nonexistent/g.json"), std::string::npos);
+    r = run("crowd --select nearest");
+    EXPECT_EQ(r.code, 2);
+    r = run("graph build /nonexistent/a.bvh --out /tmp/never.json");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("/nonexistent/a.bvh"), std::string::npos);
+    r = run("bench");
+    EXPECT_EQ(r.code, 2);
+}
+#endif
+
+}  // namespace
+}  // namespace mobb::crowd

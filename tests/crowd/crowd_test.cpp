@@ -1,0 +1,165 @@
+// Crowd runs on the committed graph, checked on their records by this test's own frame-by-frame scan.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "mobb/crowd/crowd.h"
+
+namespace mobb::crowd {
+namespace {
+
+const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+
+struct Fixture {
+    MotionGraph graph = load_graph(kGraph);
+    std::vector<Tree> trees = build_trees(graph, {});
+};
+
+Fixture& fixture() {
+    static Fixture f;
+    return f;
+}
+
+CrowdRun run(int agents, double seconds, std::uint64_t seed, Selection select, bool log = false) {
+    CrowdOptions o;
+    o.agents = agents;
+    o.seconds = seconds;
+    o.seed = seed;
+    o.select = select;
+    o.log_queries = log;
+    return run_crowd(fixture().graph, fixture().trees, o);
+}
+
+// Contacts at every frame between every pair, not excused by a fallback clip of either agent.
+int unexcused_contacts(const Record& r, int& all) {
+    auto fallback = [&](int a, std::int64_t f) {
+        for (const PlacedClip& c : r.tracks[std::size_t(a)].clips) {
+            const std::int64_t n = std::int64_t(fixture().graph.clips[std::size_t(c.clip)].path.size());
+            if (c.start <= f && f < c.start + n) return c.fallback;
+        }
+        ADD_FAILURE() << "agent " << a << " has no clip at frame " << f;
+        return false;
+    };
+    int bad = 0;
+    all = 0;
+    for (std::int64_t f = 0; f < r.frames; ++f)
+        for (std::size_t a = 0; a < r.tracks.size(); ++a)
+            for (std::size_t b = a + 1; b < r.tracks.size(); ++b) {
+                const auto& p = r.tracks[a].samples[std::size_t(f)];
+                const auto& q = r.tracks[b].samples[std::size_t(f)];
+                const double dx = p[1] - q[1], dy = p[2] - q[2], s = p[3] + q[3];
+                if (dx * dx + dy * dy >= s * s) continue;
+                ++all;
+                if (!fallback(int(a), f) && !fallback(int(b), f)) ++bad;
+            }
+    return bad;
+}
+
+TEST(Crowd, AvoidRunHasNoContactsOutsideFallbacks) {
+    const CrowdRun c = run(30, 20, 7, Selection::Avoid);
+    const Record& r = c.record;
+    ASSERT_EQ(r.tracks.size(), 30u);
+    ASSERT_EQ(r.frames, 600);
+    for (const AgentTrack& t : r.tracks) {
+        ASSERT_EQ(t.samples.size(), 600u);
+        for (std::size_t f = 0; f < t.samples.size(); ++f) EXPECT_DOUBLE_EQ(t.samples[f][0], double(f) / 30.0);
+    }
+    int all = 0;
+    EXPECT_EQ(unexcused_contacts(r, all), 0);
+    EXPECT_EQ(std::uint64_t(all), c.summary.contacts);
+    EXPECT_EQ(c.summary.contacts_unexcused, 0u);
+    EXPECT_GT(c.summary.queries, 0u);
+    EXPECT_GT(c.summary.pruned, 0u);
+}
+
+TEST(Crowd, ClipsFollowTheGraphOnTheFrameGrid) {
+    const CrowdRun c = run(10, 15, 3, Selection::Avoid);
+    const MotionGraph& g = fixture().graph;
+    for (const AgentTrack& t : c.record.tracks)
+        for (std::size_t k = 1; k < t.clips.size(); ++k) {
+            const PlacedClip &a = t.clips[k - 1], &b = t.clips[k];
+            const auto& succ = g.clips[std::size_t(a.clip)].successors;
+            EXPECT_NE(std::find(succ.begin(), succ.end(), b.clip), succ.end());
+            EXPECT_EQ(b.start, a.start + std::int64_t(g.clips[std::size_t(a.clip)].path.size()));
+            EXPECT_EQ(b.place.t0, double(b.start) * g.dt());
+            const Placement n = g.next(a.place, a.clip);
+            EXPECT_NEAR(b.place.x, n.x, 1e-9);
+            EXPECT_NEAR(b.place.theta, n.theta, 1e-9);
+        }
+}
+
+TEST(Crowd, SameSeedSameRecord) {
+    const std::string a = record_to_text(run(20, 10, 42, Selection::Avoid).record, "");
+    const std::string b = record_to_text(run(20, 10, 42, Selection::Avoid).record, "");
+    const std::string c = record_to_text(run(20, 10, 43, Selection::Avoid).record, "");
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+}
+
+TEST(Crowd, EveryTreeTypeGivesTheSameCrowd) {
+    CrowdOptions o;
+    o.agents = 25;
+    o.seconds = 10;
+    o.seed = 5;
+    // Same answers, so the same decisions; only the work counted differs.
+    auto decisions = [](const Record& r) {
+        std::string s;
+        for (const ChoicePoint& c : r.choices) {
+            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + (c.fallback ? "F" : "") + ":" + std::to_string(c.queries) + " ";
+            for (const Candidate& k : c.candidates) s += std::to_string(k.hits) + ",";
+        }
+        return s;
+    };
+    const Record ref = run_crowd(fixture().graph, fixture().trees, o).record;
+    for (TreeType t : {TreeType::Umobb, TreeType::Hybrid1, TreeType::Hybrid2, TreeType::Mobb1, TreeType::Umobb1}) {
+        TreeOptions to;
+        to.type = t;
+        const Record r = run_crowd(fixture().graph, build_trees(fixture().graph, to), o).record;
+        EXPECT_EQ(decisions(r), decisions(ref)) << to_string(t);
+        EXPECT_TRUE(r.tracks.back().samples == ref.tracks.back().samples) << to_string(t);
+    }
+}
+
+TEST(Crowd, RandomModeRunsEveryQuery) {
+    const CrowdRun c = run(30, 10, 1, Selection::Random, true);
+    std::uint64_t per_candidate = 0;
+    for (const ChoicePoint& cp : c.record.choices) {
+        EXPECT_FALSE(cp.fallback);
+        for (const Candidate& k : cp.candidates) per_candidate += std::uint64_t(k.queries);
+    }
+    EXPECT_EQ(per_candidate, c.summary.queries);
+    EXPECT_EQ(c.queries.size(), c.summary.queries);
+    // Logged queries replay to the same answers.
+    for (std::size_t k = 0; k < c.queries.size(); k += 7) {
+        const LoggedQuery& q = c.queries[k];
+        EXPECT_EQ(collide(fixture().trees[std::size_t(q.clip_a)], q.pa, fixture().trees[std::size_t(q.clip_b)], q.pb), q.hit);
+    }
+}
+
+TEST(Crowd, RecordRoundTripsThroughAFile) {
+    const CrowdRun c = run(5, 5, 9, Selection::Avoid);
+    const std::string file = testing::TempDir() + "crowd_record.json";
+    {
+        std::ofstream f(file);
+        f << record_to_text(c.record, summary_json(c.summary));
+    }
+    const Record r = load_record(file);
+    std::remove(file.c_str());
+    ASSERT_EQ(r.tracks.size(), c.record.tracks.size());
+    EXPECT_EQ(r.frames, c.record.frames);
+    EXPECT_EQ(r.tracks[2].samples[17], c.record.tracks[2].samples[17]);
+    EXPECT_EQ(r.choices.size(), c.record.choices.size());
+    EXPECT_EQ(frame_contacts(r).size(), c.summary.contacts);
+}
+
+TEST(Crowd, RejectsImpossibleWorlds) {
+    CrowdOptions o;
+    o.agents = 1000;
+    o.width = o.height = 5;
+    EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, o), std::invalid_argument);
+    EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mobb::crowd

@@ -1,0 +1,23 @@
+# mobb view SCENE --frames 30 --screenshot OUT under xvfb-run; skips (77) without the mocap data.
+if(DEFINED ENV{MOBB_DATA})
+  set(DATA $ENV{MOBB_DATA})
+endif()
+if(NOT EXISTS ${DATA}/cmu/007_01.bvh)
+  if("$ENV{MOBB_REQUIRE_DATA}" STREQUAL "1")
+    message(FATAL_ERROR "mocap data not found in ${DATA} and MOBB_REQUIRE_DATA=1")
+  endif()
+  message("skipped: mocap data not found in ${DATA}")
+  cmake_language(EXIT 77)
+endif()
+file(REMOVE ${OUT})
+execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${MOBB} view ${SCENE} --frames 30 --screenshot ${OUT}
+                        --width 1024 --height 640
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("exit ${code}\nstdout: ${out}\nstderr: ${err}")
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "mobb view exited ${code}")
+endif()
+execute_process(COMMAND ${PNG_CHECK} ${OUT} RESULT_VARIABLE code)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "${OUT} looks blank")
+endif()
