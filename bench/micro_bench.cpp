@@ -1,13 +1,18 @@
-// Micro-benchmarks of the core: what one box test, one leaf test and one whole query cost.
+// Micro-benchmarks of the core: what one box test, one leaf test, one scan and one whole query cost,
+// per method side by side (paper trees, brute force, best scan, fast query, FCL) on ~42 s sequences.
 // Queries use real clips when the mocap folder is present, random walks otherwise (reported).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "mobb/core/brute.h"
+#include "mobb/core/fast_query.h"
 #include "mobb/core/query.h"
+#include "mobb/core/scan.h"
 #include "mobb/io/load.h"
+#include "workload.h"
 
 namespace {
 
@@ -128,6 +133,61 @@ void QueryBrute(benchmark::State& state) {
     }
 }
 BENCHMARK(QueryBrute);
+
+// A wavy walk and its copy 0.7 m to the side, radii 0.3 m: the root boxes overlap but no pair
+// collides, so every time-aligned pair is filtered (scan) or every circle tested (fast query).
+struct WavyPair {
+    ClipIndex a, b;
+    static WavyPair make(int n) {
+        Path p;
+        for (int i = 0; i < n; ++i) p.samples.push_back({0.02 * i, std::sin(0.02 * i), 0.3});
+        return {ClipIndex::build(p), ClipIndex::build(p)};
+    }
+};
+
+template <bool kFast>
+void ScanNoHit(benchmark::State& state) {
+    const WavyPair w = WavyPair::make(int(state.range(0)));
+    const Placement pa{0, 0, 0, 0}, pb{0, 0.7, 0, 0.25 / 60};
+    for (auto _ : state) benchmark::DoNotOptimize(kFast ? collide_fast(w.a, pa, w.b, pb) : collide_scan(w.a, pa, w.b, pb));
+    state.SetItemsProcessed(state.iterations() * 2 * state.range(0));  // time-aligned pairs
+}
+BENCHMARK(ScanNoHit<false>)->Arg(64)->Arg(2520);
+BENCHMARK(ScanNoHit<true>)->Arg(64)->Arg(2520);
+
+// Whole queries on two ~42 s real sequences (bench/sequences.h) under 4096 random placements:
+// args (method, fps). "agree" is the share of answers equal to the exact ones (fast query, checked
+// against brute force in the tests): 1 for every exact method, FCL's conservative mesh may differ.
+const bench::Workload& workload(int fps) {
+    static std::map<int, bench::Workload> cache;
+    auto it = cache.find(fps);
+    if (it == cache.end()) it = cache.emplace(fps, bench::Workload::make(fps, true)).first;
+    return it->second;
+}
+
+void Seq42(benchmark::State& state) {
+    const auto m = bench::Method(state.range(0));
+    const bench::Workload& w = workload(int(state.range(1)));
+    if (m == bench::Method::Fcl && w.fcl.empty()) {
+        state.SkipWithError("built without FCL (install libfcl-dev)");
+        return;
+    }
+    const std::size_t n = w.size();
+    std::vector<char> exact(n);
+    for (std::size_t i = 0; i < n; ++i) exact[i] = w.query(bench::Method::Fast, i);
+    std::size_t i = 0, hits = 0, agree = 0, count = 0;
+    for (auto _ : state) {
+        const bool hit = w.query(m, i);
+        hits += hit;
+        agree += hit == bool(exact[i]);
+        ++count;
+        if (++i == n) i = 0;
+    }
+    state.SetLabel(std::string(bench::to_string(m)) + " " + bench::source() + " " + std::to_string(state.range(1)) + " Hz");
+    state.counters["positive"] = double(hits) / double(count);
+    state.counters["agree"] = double(agree) / double(count);
+}
+BENCHMARK(Seq42)->ArgsProduct({benchmark::CreateDenseRange(0, bench::kMethods - 1, 1), {30, 60}});
 
 }  // namespace
 

@@ -27,9 +27,13 @@ std::string relative_to_data(const std::string& file) {
     namespace fs = std::filesystem;
     const std::string dir = io::data_dir();
     std::error_code ec;
+    if (dir.empty()) return file;
+    // Both sides canonical: the data folder may be reached through a symbolic link.
     const fs::path abs = fs::weakly_canonical(fs::absolute(file), ec);
-    if (ec || dir.empty()) return file;
-    const fs::path rel = abs.lexically_relative(dir);
+    if (ec) return file;
+    const fs::path base = fs::weakly_canonical(dir, ec);
+    if (ec) return file;
+    const fs::path rel = abs.lexically_relative(base);
     if (rel.empty() || *rel.begin() == "..") return file;
     return rel.generic_string();
 }

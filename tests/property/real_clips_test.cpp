@@ -5,7 +5,9 @@
 
 #include "data.h"
 #include "mobb/core/brute.h"
+#include "mobb/core/fast_query.h"
 #include "mobb/core/query.h"
+#include "mobb/core/scan.h"
 
 namespace mobb {
 namespace {
@@ -27,6 +29,7 @@ constexpr ClipSpec kClips[] = {
 struct Clips {
     std::vector<Path> paths;
     std::vector<std::vector<Tree>> trees;  // [type][clip]
+    std::vector<ClipIndex> indexes;        // [clip], for collide_fast and collide_scan
 };
 
 const Clips& clips() {
@@ -37,6 +40,7 @@ const Clips& clips() {
             if (spec.fps > 0) o.fps = spec.fps;
             c.paths.push_back(io::load_clip(test::data_file(std::string("cmu/") + spec.file), o).path);
         }
+        for (const Path& p : c.paths) c.indexes.push_back(ClipIndex::build(p));
         for (TreeType type : kTypes) {
             c.trees.emplace_back();
             for (const Path& p : c.paths) c.trees.back().push_back(Tree::build(p, {type, 10}));
@@ -72,6 +76,7 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
     constexpr int kQueries = 200000;
     int positives = 0;
     std::vector<int> wrong(std::size(kTypes), 0);
+    int wrong_fast = 0, wrong_scan = 0;
     for (int q = 0; q < kQueries; ++q) {
         const std::size_t ia = rng() % c.paths.size(), ib = rng() % c.paths.size();
         Placement pa, pb;
@@ -84,8 +89,16 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
                 ADD_FAILURE() << to_string(kTypes[t]) << " query " << q << ": clips " << kClips[ia].file << " "
                               << kClips[ib].file << " expected " << expected;
         }
+        if (collide_fast(c.indexes[ia], pa, c.indexes[ib], pb) != expected && wrong_fast++ < 5)
+            ADD_FAILURE() << "fast query " << q << ": clips " << kClips[ia].file << " " << kClips[ib].file
+                          << " expected " << expected;
+        if (collide_scan(c.indexes[ia], pa, c.indexes[ib], pb) != expected && wrong_scan++ < 5)
+            ADD_FAILURE() << "best scan " << q << ": clips " << kClips[ia].file << " " << kClips[ib].file
+                          << " expected " << expected;
     }
     for (std::size_t t = 0; t < std::size(kTypes); ++t) EXPECT_EQ(wrong[t], 0) << to_string(kTypes[t]);
+    EXPECT_EQ(wrong_fast, 0) << "fast query";
+    EXPECT_EQ(wrong_scan, 0) << "best scan";
     // A good share of both answers.
     EXPECT_GT(positives, kQueries / 5);
     EXPECT_LT(positives, kQueries * 4 / 5);

@@ -1,0 +1,21 @@
+// The library's fast default query: exact, same answer as collide() and collide_brute().
+#pragma once
+#include "mobb/core/clip_index.h"
+#include "mobb/core/path.h"
+#include "mobb/core/query.h"
+
+namespace mobb {
+
+/// Do placed clips a and b collide (README "model": some time-overlapping sample pair with
+/// |p_a,i - p_b,j| < r_a,i + r_b,j)? Exactly the answer of collide_brute(a.path(), pa, b.path(), pb).
+/// Plan: clip time ranges first; the root MOBB test (double); then, when both clips share one
+/// sample spacing, only the time-aligned diagonals j - i = d that can overlap are visited: a short
+/// overlap is scanned directly, a long one descends A's tube hierarchy (clip_index.h) against the
+/// B blocks time aligned with each block (float, rounded outward), down to 4-wide filtered pairs. Every
+/// candidate is confirmed by times_overlap on sample_time() and samples_overlap() in double, so
+/// rounding can only cost time. Different sample spacings use an exact two-pointer scan instead.
+/// On a hit, stores a colliding pair in `hit` (not necessarily the one brute force reports).
+bool collide_fast(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb,
+                  SamplePair* hit = nullptr);
+
+}  // namespace mobb

@@ -1,0 +1,190 @@
+// Private to the core: the pieces shared by collide_scan() and collide_fast(). One query's setup
+// (relative frame, rounding margin, time diagonals), a 4-wide float filter of sample pairs that may
+// only err towards "candidate", and the exact confirmation of a candidate.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "mobb/core/clip_index.h"
+#include "mobb/core/obb.h"
+#include "mobb/core/query.h"
+
+namespace mobb::detail {
+
+/// One query: B's local frame expressed in A's (float, for filters), the filter margin (metres),
+/// and the world transforms the exact test uses.
+struct PairQuery {
+    const ClipIndex& a;
+    const ClipIndex& b;
+    const Placement& pa;
+    const Placement& pb;
+    SamplePair* hit;
+    Rigid2 ta, tb;
+    SpaceTimeRigid rel;    // double, for the root box test
+    float c = 1, s = 0, tx = 0, ty = 0, margin = 0;
+
+    PairQuery(const ClipIndex& ia, const Placement& qa, const ClipIndex& ib, const Placement& qb, SamplePair* h)
+        : a(ia), b(ib), pa(qa), pb(qb), hit(h), ta(Rigid2::of(qa)), tb(Rigid2::of(qb)) {
+        // R_a^T R_b and R_a^T (t_b - t_a), from the very cos/sin the exact test uses.
+        rel.c = ta.c * tb.c + ta.s * tb.s;
+        rel.s = ta.c * tb.s - ta.s * tb.c;
+        const double dx = tb.tx - ta.tx, dy = tb.ty - ta.ty;
+        rel.shift = {ta.c * dx + ta.s * dy, -ta.s * dx + ta.c * dy, 0.0};
+    }
+
+    // Temporal pruning, then the 1-level root box test. Fills the float frame when both pass.
+    bool roots_overlap() {
+        const double dta = a.path().dt, dtb = b.path().dt;
+        const auto na = std::int64_t(a.size()), nb = std::int64_t(b.size());
+        if (!times_overlap(sample_time(pa, dta, 0), sample_time(pa, dta, na), sample_time(pb, dtb, 0),
+                           sample_time(pb, dtb, nb)))
+            return false;
+        if (!overlap(a.root_box(), transformed(b.root_box(), rel))) return false;
+        // Float rounding of inputs, frame and arithmetic is below 2^-20 of this scale; the double
+        // rounding of the exact world-frame test below 2^-50 of the world coordinates.
+        const double scale = a.max_abs() + b.max_abs() + std::abs(rel.shift.x) + std::abs(rel.shift.y) +
+                             a.max_radius() + b.max_radius();
+        const double world = std::abs(pa.x) + std::abs(pa.y) + std::abs(pb.x) + std::abs(pb.y);
+        margin = float(scale * 0x1p-18 + (world + scale) * 0x1p-40);
+        c = float(rel.c), s = float(rel.s), tx = float(rel.shift.x), ty = float(rel.shift.y);
+        return true;
+    }
+
+    // The exact predicate on one pair: time on sample_time(), space by samples_overlap().
+    bool exact(std::int64_t i, std::int64_t j) const {
+        const double dta = a.path().dt, dtb = b.path().dt;
+        if (!times_overlap(sample_time(pa, dta, i), sample_time(pa, dta, i + 1), sample_time(pb, dtb, j),
+                           sample_time(pb, dtb, j + 1)))
+            return false;
+        if (!samples_overlap(ta, a.path().samples[std::size_t(i)], tb, b.path().samples[std::size_t(j)])) return false;
+        if (hit) *hit = {i, j};
+        return true;
+    }
+
+    // Bounding circles of two blocks (B moved into A's frame) may overlap: never false for blocks
+    // holding a colliding pair.
+    bool circles_overlap(const Tube& x, const Tube& y) const {
+        const float qx = c * y.cx - s * y.cy + tx, qy = s * y.cx + c * y.cy + ty;
+        const float dx = x.cx - qx, dy = x.cy - qy, rr = x.cr + y.cr + margin;
+        return dx * dx + dy * dy < rr * rr;
+    }
+
+    // Could a pair (i, i + d), i in [lo, hi), d in [dmin, dmax], collide, given tube x of A's block
+    // and tube y of B's block holding them? Middle samples are passed doubled (first + last of the
+    // block) so every offset is an integer, exact in float below 2^22. In A's frame the two lines
+    // differ by P + W u at u = i - ma (plus B's speed times |d - d0| for the spread of d); their
+    // closest approach over the range is tested against the sum of the tube radii. Never false for
+    // a colliding pair: the margin covers float rounding.
+    bool tubes_overlap(const Tube& x, std::int64_t ma2, const Tube& y, std::int64_t mb2, std::int64_t lo,
+                       std::int64_t hi, std::int64_t dmin, std::int64_t dmax) const {
+        const float o = 0.5f * float(ma2 - mb2 + dmin + dmax);
+        const float qcx = c * y.x - s * y.y + tx, qcy = s * y.x + c * y.y + ty;
+        const float qvx = c * y.vx - s * y.vy, qvy = s * y.vx + c * y.vy;
+        const float px = x.x - qcx - qvx * o, py = x.y - qcy - qvy * o;
+        const float wx = x.vx - qvx, wy = x.vy - qvy;
+        const float s0 = 0.5f * float(2 * lo - ma2), s1 = 0.5f * float(2 * hi - 2 - ma2);
+        const float ww = wx * wx + wy * wy, pw = px * wx + py * wy;
+        float t = ww > 0 ? -pw / ww : s0;
+        t = t < s0 ? s0 : (t > s1 ? s1 : t);
+        const float dx = px + wx * t, dy = py + wy * t;
+        const float rr = x.r + y.r + y.speed * (0.5f * float(dmax - dmin)) + margin;
+        return dx * dx + dy * dy < rr * rr;
+    }
+
+    // Bit k set when pair (i + k, j + k), k < 4, may collide. Branch-free.
+    unsigned filter4(std::int64_t i, std::int64_t j) const {
+        const float* ax = a.xs() + i;
+        const float* ay = a.ys() + i;
+        const float* ar = a.rs() + i;
+        const float* bx = b.xs() + j;
+        const float* by = b.ys() + j;
+        const float* br = b.rs() + j;
+#if defined(__SSE2__)
+        const __m128 vc = _mm_set1_ps(c), vs = _mm_set1_ps(s), vm = _mm_set1_ps(margin);
+        const __m128 x = _mm_loadu_ps(bx), y = _mm_loadu_ps(by);
+        const __m128 qx = _mm_add_ps(_mm_sub_ps(_mm_mul_ps(vc, x), _mm_mul_ps(vs, y)), _mm_set1_ps(tx));
+        const __m128 qy = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vs, x), _mm_mul_ps(vc, y)), _mm_set1_ps(ty));
+        const __m128 dx = _mm_sub_ps(_mm_loadu_ps(ax), qx), dy = _mm_sub_ps(_mm_loadu_ps(ay), qy);
+        const __m128 rr = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(ar), _mm_loadu_ps(br)), vm);
+        const __m128 d2 = _mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy));
+        return unsigned(_mm_movemask_ps(_mm_cmplt_ps(d2, _mm_mul_ps(rr, rr))));
+#else
+        unsigned mask = 0;
+        for (int k = 0; k < 4; ++k) {
+            const float qx = c * bx[k] - s * by[k] + tx, qy = s * bx[k] + c * by[k] + ty;
+            const float dx = ax[k] - qx, dy = ay[k] - qy, rr = ar[k] + br[k] + margin;
+            mask |= unsigned(dx * dx + dy * dy < rr * rr) << k;
+        }
+        return mask;
+#endif
+    }
+
+    // Pairs (i, i + d) for i in [lo, hi), in blocks of 16 filtered pairs with one early-exit branch
+    // each; candidates confirmed exactly in order.
+    bool scan_diagonal(std::int64_t d, std::int64_t lo, std::int64_t hi) const {
+        for (std::int64_t i = lo; i < hi; i += 16) {
+            unsigned mask = filter4(i, i + d) | filter4(i + 4, i + 4 + d) << 4 | filter4(i + 8, i + 8 + d) << 8 |
+                            filter4(i + 12, i + 12 + d) << 12;
+            if (hi - i < 16) mask &= (1u << unsigned(hi - i)) - 1u;
+            while (mask) {
+                const int k = __builtin_ctz(mask);
+                if (exact(i + k, i + k + d)) return true;
+                mask &= mask - 1;
+            }
+        }
+        return false;
+    }
+};
+
+/// Time diagonals for equal sample spacing: pair (i, j = i + d) can overlap in time only for d in
+/// `d[0..count)`, ordered by how much they overlap (most first), each with its valid i in [lo, hi).
+struct Diagonals {
+    std::int64_t d[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    int count = 0;
+    std::int64_t dmin = 0, dmax = 0;  ///< range of d over the candidates (valid when count > 0)
+};
+
+/// False when the spacings differ or the offsets are too large to reason about arithmetically
+/// (then callers use the two-pointer leaf_test). In reals, pair (i, i + d) overlaps iff
+/// |d - delta| < 1, delta = (t0_a - t0_b) / dt; the window is widened by a bound on the rounding of
+/// sample_time() so the exact check, not this arithmetic, decides every pair.
+inline bool diagonals(const PairQuery& q, Diagonals& out) {
+    const double dt = q.a.path().dt;
+    if (dt != q.b.path().dt) return false;
+    const auto na = std::int64_t(q.a.size()), nb = std::int64_t(q.b.size());
+    const double delta = (q.pa.t0 - q.pb.t0) / dt;
+    const double eps = ((std::abs(q.pa.t0) + std::abs(q.pb.t0)) / dt + double(na + nb + 2) + std::abs(delta)) * 0x1p-46;
+    if (!(eps < 0.25) || !(std::abs(delta) < double(na + nb + 4))) return false;
+    const auto dmin = std::int64_t(std::ceil(delta - 1 - eps)), dmax = std::int64_t(std::floor(delta + 1 + eps));
+    for (std::int64_t d = dmin; d <= dmax; ++d) {
+        const std::int64_t lo = std::max<std::int64_t>(0, -d), hi = std::min(na, nb - d);
+        if (lo >= hi) continue;
+        int k = out.count++;
+        out.d[k] = d, out.lo[k] = lo, out.hi[k] = hi;
+        // Insertion by |d - delta|: the fully overlapping diagonal first, touching ones last.
+        for (; k > 0 && std::abs(double(out.d[k]) - delta) < std::abs(double(out.d[k - 1]) - delta); --k) {
+            std::swap(out.d[k], out.d[k - 1]);
+            std::swap(out.lo[k], out.lo[k - 1]);
+            std::swap(out.hi[k], out.hi[k - 1]);
+        }
+    }
+    out.dmin = dmin, out.dmax = dmax;
+    return true;
+}
+
+/// Different sample spacings: the exact two-pointer walk shared with the trees' leaves.
+inline bool general_scan(const PairQuery& q) {
+    std::uint64_t tested = 0;
+    SamplePair h;
+    const bool found = leaf_test(q.a.path(), q.pa, q.ta, 0, std::int64_t(q.a.size()), q.b.path(), q.pb, q.tb, 0,
+                                 std::int64_t(q.b.size()), tested, h);
+    if (found && q.hit) *q.hit = h;
+    return found;
+}
+
+}  // namespace mobb::detail

@@ -1,0 +1,143 @@
+// collide_fast and collide_scan answer exactly as the brute-force reference, on random walks,
+// grid-aligned (crowd-like) time offsets, mixed spacings, degenerate and far-away placements.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "mobb/core/brute.h"
+#include "mobb/core/fast_query.h"
+#include "mobb/core/scan.h"
+#include "random_paths.h"
+
+namespace mobb {
+namespace {
+
+Placement random_placement(std::mt19937_64& rng, double spread, double t_spread) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    return {spread * (u(rng) - 0.5), spread * (u(rng) - 0.5), 6.283185307179586 * u(rng), t_spread * (u(rng) - 0.5)};
+}
+
+void expect_real_hit(const Path& a, const Placement& pa, const Path& b, const Placement& pb, SamplePair h) {
+    ASSERT_GE(h.a, 0);
+    ASSERT_GE(h.b, 0);
+    ASSERT_LT(std::size_t(h.a), a.size());
+    ASSERT_LT(std::size_t(h.b), b.size());
+    EXPECT_TRUE(times_overlap(sample_time(pa, a.dt, h.a), sample_time(pa, a.dt, h.a + 1), sample_time(pb, b.dt, h.b),
+                              sample_time(pb, b.dt, h.b + 1)));
+    EXPECT_TRUE(samples_overlap(Rigid2::of(pa), a.samples[std::size_t(h.a)], Rigid2::of(pb), b.samples[std::size_t(h.b)]));
+}
+
+TEST(FastQueryTest, AgreesWithBruteForceOnRandomWalks) {
+    std::mt19937_64 rng(31);
+    int positives = 0, total = 0;
+    for (int clip = 0; clip < 24; ++clip) {
+        const Path a = test::random_walk(rng, 1 + clip * 53);
+        const Path b = test::random_walk(rng, 1300 - clip * 50, clip % 4 == 3 ? 1.0 / 30 : 1.0 / 60);
+        const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+        for (int q = 0; q < 1000; ++q) {
+            const Placement pa = random_placement(rng, 2, 3), pb = random_placement(rng, 2, 3);
+            const bool expected = collide_brute(a, pa, b, pb);
+            SamplePair hf, hs;
+            ASSERT_EQ(collide_fast(ia, pa, ib, pb, &hf), expected) << clip << " " << q;
+            ASSERT_EQ(collide_scan(ia, pa, ib, pb, &hs), expected) << clip << " " << q;
+            ASSERT_EQ(collide_fast(ib, pb, ia, pa), expected) << clip << " " << q;
+            if (expected) {
+                expect_real_hit(a, pa, b, pb, hf);
+                expect_real_hit(a, pa, b, pb, hs);
+            } else {
+                EXPECT_EQ(hf.a, -1);
+            }
+            positives += expected;
+            ++total;
+        }
+    }
+    EXPECT_GT(positives, total / 5);
+    EXPECT_LT(positives, total * 4 / 5);
+}
+
+// A crowd puts every clip on the global grid k*dt: time offsets are whole samples (up to rounding),
+// so intervals touch end to end and one ulp decides. Also huge global times and translations.
+TEST(FastQueryTest, AgreesOnGridAlignedTimesAndLargeCoordinates) {
+    std::mt19937_64 rng(32);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int clip = 0; clip < 16; ++clip) {
+        const double dt = clip % 2 ? 1.0 / 30 : 1.0 / 60;
+        const Path a = test::random_walk(rng, 40 + clip * 30, dt), b = test::random_walk(rng, 300 - clip * 10, dt);
+        const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+        for (int q = 0; q < 2000; ++q) {
+            const double base = q % 3 == 0 ? 0.0 : (q % 3 == 1 ? 3000.0 : 1e6);
+            const double far = q % 5 == 0 ? 2000.0 : 0.0;
+            Placement pa = random_placement(rng, 4, 0), pb = random_placement(rng, 4, 0);
+            pa.x += far, pb.x += far;
+            const auto ka = std::int64_t(u(rng) * 400), kb = std::int64_t(u(rng) * 400);
+            pa.t0 = double(ka) * dt + (q % 7 == 0 ? base : 0.0);
+            pb.t0 = double(kb) * dt + (q % 7 == 0 ? base : 0.0);
+            if (q % 11 == 0) pb.t0 = std::nextafter(pb.t0, q % 2 ? 1e300 : -1e300);
+            const bool expected = collide_brute(a, pa, b, pb);
+            ASSERT_EQ(collide_fast(ia, pa, ib, pb), expected) << clip << " " << q;
+            ASSERT_EQ(collide_scan(ia, pa, ib, pb), expected) << clip << " " << q;
+        }
+    }
+}
+
+// Touching disks in space: equality is not a collision, one ulp less is.
+TEST(FastQueryTest, TouchingIsNotACollision) {
+    Path a, b;
+    a.samples.assign(100, {0.0, 0.0, 0.5});
+    b.samples.assign(100, {0.0, 0.0, 0.5});
+    const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+    for (double x : {1.0, std::nextafter(1.0, 0.0), std::nextafter(1.0, 2.0)}) {
+        const Placement pa{0, 0, 0, 0}, pb{x, 0, 0, 0.3};
+        EXPECT_EQ(collide_fast(ia, pa, ib, pb), collide_brute(a, pa, b, pb)) << x;
+        EXPECT_EQ(collide_scan(ia, pa, ib, pb), collide_brute(a, pa, b, pb)) << x;
+    }
+}
+
+TEST(FastQueryTest, DegeneratePaths) {
+    std::mt19937_64 rng(33);
+    const Path paths[] = {test::standing_still(1), test::standing_still(57), test::circle(200), test::circle(9),
+                          test::random_walk(rng, 2)};
+    for (const Path& a : paths)
+        for (const Path& b : paths) {
+            const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+            for (int q = 0; q < 300; ++q) {
+                const Placement pa = random_placement(rng, 5, 3), pb = random_placement(rng, 5, 3);
+                const bool expected = collide_all_pairs(a, pa, b, pb);
+                ASSERT_EQ(collide_fast(ia, pa, ib, pb), expected) << q;
+                ASSERT_EQ(collide_scan(ia, pa, ib, pb), expected) << q;
+            }
+        }
+}
+
+TEST(FastQueryTest, BuildValidates) {
+    EXPECT_THROW(ClipIndex::build(Path{}), std::invalid_argument);
+    Path p = test::standing_still(3);
+    p.samples[1].x = 2e9;
+    EXPECT_THROW(ClipIndex::build(p), std::invalid_argument);
+    p.samples[1].x = NAN;
+    EXPECT_THROW(ClipIndex::build(p), std::invalid_argument);
+}
+
+TEST(FastQueryTest, HierarchyTubesHoldEveryDisk) {
+    std::mt19937_64 rng(34);
+    const Path p = test::random_walk(rng, 777);
+    const ClipIndex idx = ClipIndex::build(p);
+    for (int k = 0; k < idx.levels(); ++k) {
+        const std::size_t block = std::size_t(ClipIndex::kLeaf) << k;
+        ASSERT_EQ(idx.level(k).size(), (p.size() + block - 1) / block);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const std::size_t first = i / block * block, last = std::min(p.size(), first + block) - 1;
+            const double m = 0.5 * double(first + last), dk = double(i) - m;
+            const Tube& t = idx.level(k)[i / block];
+            const Sample& s = p.samples[i];
+            EXPECT_LE(std::hypot(s.x - t.x - t.vx * dk, s.y - t.y - t.vy * dk) + s.r, double(t.r));
+            EXPECT_GE(double(t.speed), std::hypot(double(t.vx), double(t.vy)));
+            EXPECT_LE(std::hypot(s.x - t.cx, s.y - t.cy) + s.r, double(t.cr));
+        }
+    }
+    EXPECT_EQ(idx.level(idx.levels() - 1).size(), 1u);
+}
+
+}  // namespace
+}  // namespace mobb
