@@ -2,9 +2,13 @@
 // One short cylinder per path sample, instanced: the unit cylinder (radius 1, height 0..1 along y)
 // is scaled to the sample's radius r and duration dt and placed at its space-time position.
 // Space-time (x, y, t) maps to GL (x, t * time_scale, -y): time is up, the ground is x-z.
+// At a level of detail k > 1 an instance stands for a group of samples (disk_lod.h): a_group gives
+// its height in samples and the shift of its top centre, and the cylinder is sheared along it.
+// Ungrouped stacks leave location 3 unbound, which reads (0, 0, 0, 1): one sample, no shear.
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_sample;   // world x, world y, global start time t, radius r
+layout(location = 3) in vec4 a_group;    // world dx, dy of the top centre, unused, samples in the group
 uniform mat4 u_mvp;
 uniform float u_time_scale;               // metres per second
 uniform float u_dt;                       // seconds per sample
@@ -12,8 +16,12 @@ uniform float u_grow;                     // radius factor (highlighted disks ar
 out vec3 v_normal;
 void main() {
     float r = a_sample.w * u_grow;
-    float h = u_dt * u_time_scale;
-    vec3 p = vec3(a_sample.x + r * a_pos.x, a_sample.z * u_time_scale + h * a_pos.y, -a_sample.y + r * a_pos.z);
-    v_normal = a_normal;
+    float h = u_dt * a_group.w * u_time_scale;
+    vec2 shift = a_group.xy * a_pos.y;
+    vec3 p = vec3(a_sample.x + shift.x + r * a_pos.x, a_sample.z * u_time_scale + h * a_pos.y,
+                  -(a_sample.y + shift.y) + r * a_pos.z);
+    // The side's normal tilts against the shear (GL shift is (dx, 0, -dy)); caps stay level.
+    float tilt = (a_normal.x * a_group.x - a_normal.z * a_group.y) / max(abs(h), 1e-6);
+    v_normal = vec3(a_normal.x, a_normal.y - tilt, a_normal.z);
     gl_Position = u_mvp * vec4(p, 1.0);
 }

@@ -1,6 +1,8 @@
 #include "disk_layer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace mobb::render {
 
@@ -46,23 +48,11 @@ Mesh unit_cylinder(int segments) {
 
 }  // namespace
 
-std::vector<DiskInstance> disk_instances(const Path& path, const Placement& place) {
-    const Rigid2 m = Rigid2::of(place);
-    std::vector<DiskInstance> out;
-    out.reserve(path.size());
-    for (std::size_t i = 0; i < path.size(); ++i) {
-        const Sample& s = path.samples[i];
-        out.emplace_back(float(m.apply_x(s.x, s.y)), float(m.apply_y(s.x, s.y)),
-                         float(sample_time(place, path.dt, std::int64_t(i))), float(s.r));
-    }
-    return out;
-}
-
 DiskLayer::DiskLayer() {
     glGenBuffers(1, &mesh_);
     glGenBuffers(1, &indices_);
     set_segments(kSegmentsFine);
-    marked_ = make_stack();
+    marked_ = make_stack(false);
 }
 
 void DiskLayer::set_segments(int segments) {
@@ -77,18 +67,24 @@ void DiskLayer::set_segments(int segments) {
     segments_ = segments;
 }
 
+void DiskLayer::release(Stack& s) {
+    if (s.vbo) glDeleteBuffers(1, &s.vbo);
+    if (s.vao) glDeleteVertexArrays(1, &s.vao);
+    s = Stack{};
+}
+
 DiskLayer::~DiskLayer() {
-    for (Stack& s : stacks_) {
-        glDeleteBuffers(1, &s.vbo);
-        glDeleteVertexArrays(1, &s.vao);
-    }
-    glDeleteBuffers(1, &marked_.vbo);
-    glDeleteVertexArrays(1, &marked_.vao);
+    for (Clip& c : clips_)
+        for (Stack& s : c.lods) release(s);
+    release(marked_);
     glDeleteBuffers(1, &mesh_);
     glDeleteBuffers(1, &indices_);
 }
 
-DiskLayer::Stack DiskLayer::make_stack() {
+/// A vertex array over the shared unit cylinder and a fresh instance buffer: DiskInstance (location 2)
+/// alone, or DiskGroup (locations 2 and 3). Without location 3 the shader sees (0, 0, 0, 1): no
+/// shear, one sample tall.
+DiskLayer::Stack DiskLayer::make_stack(bool grouped) {
     Stack s;
     glGenVertexArrays(1, &s.vao);
     glGenBuffers(1, &s.vbo);
@@ -99,9 +95,15 @@ DiskLayer::Stack DiskLayer::make_stack() {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), reinterpret_cast<void*>(sizeof(glm::vec3)));
     glBindBuffer(GL_ARRAY_BUFFER, s.vbo);
+    const GLsizei stride = grouped ? GLsizei(sizeof(DiskGroup)) : GLsizei(sizeof(DiskInstance));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, sizeof(DiskInstance), nullptr);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, nullptr);
     glVertexAttribDivisor(2, 1);
+    if (grouped) {
+        glEnableVertexAttribArray(3);
+        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(DiskGroup, shift)));
+        glVertexAttribDivisor(3, 1);
+    }
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
     glBindVertexArray(0);
     return s;
@@ -113,32 +115,63 @@ void DiskLayer::upload(Stack& stack, const std::vector<DiskInstance>& disks) {
     stack.count = GLsizei(disks.size());
 }
 
+void DiskLayer::upload(Stack& stack, const std::vector<DiskGroup>& groups) {
+    glBindBuffer(GL_ARRAY_BUFFER, stack.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(groups.size() * sizeof(DiskGroup)), groups.data(), GL_STATIC_DRAW);
+    stack.count = GLsizei(groups.size());
+}
+
 void DiskLayer::rebuild(const Frame& frame) {
-    std::size_t total = 0;
-    for (const ClipView& clip : frame.clips) total += clip.tree->path().size();
-    const int segments = total > kCoarseAbove ? kSegmentsCoarse : kSegmentsFine;
+    total_ = 0;
+    for (const ClipView& clip : frame.clips) total_ += clip.tree->path().size();
+    const int segments = total_ > kCoarseAbove ? kSegmentsCoarse : kSegmentsFine;
     if (segments != segments_) set_segments(segments);
-    while (stacks_.size() < frame.clips.size()) stacks_.push_back(make_stack());
+    for (std::size_t c = frame.clips.size(); c < clips_.size(); ++c)
+        for (Stack& s : clips_[c].lods) release(s);
+    clips_.resize(frame.clips.size());
     for (std::size_t c = 0; c < frame.clips.size(); ++c) {
         const ClipView& clip = frame.clips[c];
-        upload(stacks_[c], disk_instances(clip.tree->path(), clip.place));
-        stacks_[c].dt = float(clip.tree->path().dt);
+        for (Stack& s : clips_[c].lods) s.built = false;  // buffers are kept and refilled when next drawn
+        clips_[c].bounds = path_bounds(clip.tree->path(), clip.place);
+        clips_[c].dt = float(clip.tree->path().dt);
     }
+}
+
+DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
+    int level = 0;
+    while ((1 << level) < k && level + 1 < kLevels) ++level;
+    Stack& s = c.lods[std::size_t(level)];
+    if (s.built) return s;
+    if (!s.vao) s = make_stack(level > 0);
+    const std::vector<DiskInstance> disks = disk_instances(clip.tree->path(), clip.place);
+    if (level == 0) upload(s, disks);
+    else upload(s, group_disks(disks, 1 << level));
+    s.built = true;
+    return s;
 }
 
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.disks || frame.layers.disks_translucent != translucent_pass) return;
+    stats_ = DiskStats{};
     ctx.disk->use();
     ctx.disk->set("u_mvp", ctx.view_proj);
     ctx.disk->set("u_time_scale", float(frame.time_scale));
     ctx.disk->set("u_grow", 1.0f);
+    glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
     const float alpha = translucent_pass ? 0.28f : 1.0f;
-    for (std::size_t c = 0; c < frame.clips.size() && c < stacks_.size(); ++c) {
+    for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
         if (!frame.clips[c].visible) continue;
-        ctx.disk->set("u_dt", stacks_[c].dt);
+        Clip& clip = clips_[c];
+        const int k = clip_lod(clip.bounds, double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
+        const Stack& s = stack_at(frame.clips[c], clip, k);
+        ctx.disk->set("u_dt", clip.dt);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
-        glBindVertexArray(stacks_[c].vao);
-        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, stacks_[c].count);
+        glBindVertexArray(s.vao);
+        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, s.count);
+        stats_.disks += frame.clips[c].tree->path().size();
+        stats_.instances += std::size_t(s.count);
+        stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
+        stats_.k_max = std::max(stats_.k_max, k);
     }
     glBindVertexArray(0);
 }
@@ -153,6 +186,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     ctx.disk->set("u_dt", float(dt));
     ctx.disk->set("u_grow", grow);
     ctx.disk->set("u_color", color);
+    glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);
     glBindVertexArray(0);

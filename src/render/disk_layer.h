@@ -1,20 +1,24 @@
 // Each clip's path as a stack of disks: one short cylinder per sample (radius r, height dt), drawn
-// instanced, one draw call per clip.
+// instanced, one draw call per clip. Crowds far from the camera are drawn at a level of detail k:
+// one sheared cylinder per k consecutive samples (disk_lod.h), still one draw call per clip.
 #pragma once
+#include <array>
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec4.hpp>
 
+#include "disk_lod.h"
 #include "frame.h"
 #include "layer.h"
 
 namespace mobb::render {
 
-/// One cylinder's instance data: world x, world y, global start time, radius.
-using DiskInstance = glm::vec4;
-
-/// The instances of a placed path (world positions, global times).
-std::vector<DiskInstance> disk_instances(const Path& path, const Placement& place);
+/// What the last draw of the stacks drew: disks stood for, instances drawn, the range of k.
+struct DiskStats {
+    std::size_t disks = 0, instances = 0;
+    int k_min = 0, k_max = 0;
+};
 
 class DiskLayer {
 public:
@@ -23,29 +27,43 @@ public:
     DiskLayer(const DiskLayer&) = delete;
     DiskLayer& operator=(const DiskLayer&) = delete;
 
-    /// Re-uploads every clip's instances (after clips or placements change).
+    /// Forgets every clip's instances (after clips or placements change); they are rebuilt lazily,
+    /// per level of detail, when drawn.
     void rebuild(const Frame& frame);
     /// Draws the stacks in the pass that matches their translucency.
     void draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass);
     /// Draws a few disks of spacing dt in one colour, grown by `grow` (highlights).
     void draw_marked(const DrawContext& ctx, const std::vector<DiskInstance>& disks, double dt, double time_scale,
                      const glm::vec4& color, float grow);
+    /// The stacks' last draw.
+    const DiskStats& stats() const { return stats_; }
 
 private:
+    static constexpr int kLevels = 9;  ///< k = 1, 2, 4 .. 256 (kDiskLodMaxK)
     struct Stack {
         GLuint vao = 0, vbo = 0;
         GLsizei count = 0;
+        bool built = false;
+    };
+    struct Clip {
+        std::array<Stack, kLevels> lods;  ///< by log2 k
+        Bounds bounds;                    ///< space-time bounds, for the LOD decision
         float dt = 0;
     };
-    Stack make_stack();
+    Stack make_stack(bool grouped);
     void upload(Stack& stack, const std::vector<DiskInstance>& disks);
+    void upload(Stack& stack, const std::vector<DiskGroup>& groups);
+    Stack& stack_at(const ClipView& clip, Clip& c, int k);
     void set_segments(int segments);
+    static void release(Stack& s);
 
     GLuint mesh_ = 0, indices_ = 0;
     GLsizei mesh_indices_ = 0;
     int segments_ = 0;
-    std::vector<Stack> stacks_;
+    std::size_t total_ = 0;  ///< disks in the scene
+    std::vector<Clip> clips_;
     Stack marked_;
+    DiskStats stats_;
 };
 
 }  // namespace mobb::render

@@ -49,6 +49,8 @@ struct Renderer::Layers {
 Renderer::Renderer() : layers_(std::make_unique<Layers>()) {}
 Renderer::~Renderer() = default;
 
+const DiskStats& Renderer::disk_stats() const { return layers_->disks.stats(); }
+
 void Renderer::draw(const Frame& frame, const Camera& camera, int width, int height) {
     Layers& l = *layers_;
     if (frame.revision != revision_) {

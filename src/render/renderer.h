@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "camera.h"
+#include "disk_layer.h"
 #include "frame.h"
 #include "space.h"
 
@@ -24,6 +25,8 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     void draw(const Frame& frame, const Camera& camera, int width, int height);
+    /// What the last draw drew of the disk stacks (instances and level of detail).
+    const DiskStats& disk_stats() const;
 
 private:
     struct Layers;

@@ -78,9 +78,14 @@ void add_render(CLI::App& app, int& exit_code) {
             if (a->bench) {
                 std::size_t disks = 0;
                 for (const auto& c : s.clips) disks += c.tree->path().size();
-                const double fps = viewer::bench_headless(s, w, h, a->bench_frames);
-                out << "bench: " << s.clips.size() << " clips, " << disks << " disks, " << w << "x" << h << ", "
-                    << std::fixed << std::setprecision(2) << fps << " frames per second\n";
+                render::DiskStats drawn;
+                const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
+                // The disk layer groups consecutive samples of crowds seen from afar (level of detail k).
+                out << "bench: " << s.clips.size() << " clips, " << disks << " disks in " << drawn.instances
+                    << " instances at LOD k=" << drawn.k_min;
+                if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
+                out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
+                    << " frames per second\n";
                 return;
             }
             render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));

@@ -51,7 +51,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     return target.read();
 }
 
-double bench_headless(State& state, int width, int height, int frames) {
+double bench_headless(State& state, int width, int height, int frames, render::DiskStats* disks) {
     render::OsMesaContext context(width, height);
     render::Target target(width, height);
     render::Renderer renderer;
@@ -67,6 +67,7 @@ double bench_headless(State& state, int width, int height, int frames) {
         glFinish();
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (disks) *disks = renderer.disk_stats();
     return double(frames) / seconds;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 #include <string>
 
+#include "disk_layer.h"
 #include "image.h"
 #include "state.h"
 
@@ -16,6 +17,6 @@ struct HeadlessOptions {
 render::Image render_headless(State& state, const HeadlessOptions& options);
 
 /// Frames per second of the state's scene at width x height (a few warm-up frames, then `frames`).
-double bench_headless(State& state, int width, int height, int frames);
+double bench_headless(State& state, int width, int height, int frames, render::DiskStats* disks = nullptr);
 
 }  // namespace mobb::viewer

@@ -1,0 +1,102 @@
+#include "disk_lod.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mobb::render {
+
+int disk_lod(double sample_pixels, std::size_t scene_disks) {
+    if (scene_disks <= kDiskLodAbove || !(sample_pixels >= 0)) return 1;
+    int k = 1;
+    while (k < kDiskLodMaxK && 2.0 * k * sample_pixels <= kDiskLodPixels) k *= 2;
+    return k;
+}
+
+double nearest_pixels_per_metre(const glm::mat4& view_proj, int height, const glm::vec3& lo, const glm::vec3& hi) {
+    // Clip y is the projection's y scale times view-space y, clip w the view depth: a metre across
+    // the view at depth w spans |row y| / w of the half-height (view rows are unit vectors).
+    const glm::vec3 row_y(view_proj[0][1], view_proj[1][1], view_proj[2][1]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        const double w = double(view_proj[0][3]) * p.x + double(view_proj[1][3]) * p.y + double(view_proj[2][3]) * p.z +
+                         double(view_proj[3][3]);
+        nearest = std::min(nearest, w);
+    }
+    if (!(nearest > 1e-6)) return std::numeric_limits<double>::infinity();
+    return double(glm::length(row_y)) * 0.5 * double(height) / nearest;
+}
+
+Bounds path_bounds(const Path& path, const Placement& place) {
+    Bounds b;
+    if (path.samples.empty()) return b;
+    const Rigid2 m = Rigid2::of(place);
+    const double t1 = sample_time(place, path.dt, std::int64_t(path.size()));
+    for (const Sample& s : path.samples) {
+        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
+        b.add({x - s.r, y - s.r, place.t0});
+        b.add({x + s.r, y + s.r, t1});
+    }
+    return b;
+}
+
+int clip_lod(const Bounds& bounds, double dt, double time_scale, std::size_t scene_disks, const glm::mat4& view_proj,
+             int height) {
+    if (bounds.empty || scene_disks <= kDiskLodAbove) return 1;
+    const glm::vec3 a = to_gl(bounds.lo.x, bounds.lo.y, bounds.lo.z, time_scale);
+    const glm::vec3 b = to_gl(bounds.hi.x, bounds.hi.y, bounds.hi.z, time_scale);
+    const double ppm = nearest_pixels_per_metre(view_proj, height, glm::min(a, b), glm::max(a, b));
+    return disk_lod(dt * std::fabs(time_scale) * ppm, scene_disks);
+}
+
+std::vector<int> frame_lods(const Frame& frame, const glm::mat4& view_proj, int height) {
+    std::size_t total = 0;
+    for (const ClipView& clip : frame.clips) total += clip.tree->path().size();
+    std::vector<int> out;
+    for (const ClipView& clip : frame.clips) {
+        const Path& path = clip.tree->path();
+        out.push_back(clip_lod(path_bounds(path, clip.place), path.dt, frame.time_scale, total, view_proj, height));
+    }
+    return out;
+}
+
+std::vector<DiskInstance> disk_instances(const Path& path, const Placement& place) {
+    const Rigid2 m = Rigid2::of(place);
+    std::vector<DiskInstance> out;
+    out.reserve(path.size());
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const Sample& s = path.samples[i];
+        out.emplace_back(float(m.apply_x(s.x, s.y)), float(m.apply_y(s.x, s.y)),
+                         float(sample_time(place, path.dt, std::int64_t(i))), float(s.r));
+    }
+    return out;
+}
+
+std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k) {
+    std::vector<DiskGroup> out;
+    if (k < 1) k = 1;
+    const std::size_t n = disks.size(), step = std::size_t(k);
+    out.reserve((n + step - 1) / step);
+    for (std::size_t i = 0; i < n; i += step) {
+        const std::size_t j = std::min(i + step, n);
+        const glm::dvec2 c0(disks[i].x, disks[i].y);
+        // The axis ends where the next group starts; the last group ends on its own last disk.
+        const glm::dvec2 c1 = j < n ? glm::dvec2(disks[j].x, disks[j].y) : glm::dvec2(disks[n - 1].x, disks[n - 1].y);
+        const double m = double(j - i);
+        double radius = 0;
+        for (std::size_t q = i; q < j; ++q) {
+            const glm::dvec2 c(disks[q].x, disks[q].y);
+            const double u = double(q - i);
+            const glm::dvec2 a = c0 + (c1 - c0) * (u / m), b = c0 + (c1 - c0) * ((u + 1) / m);
+            radius = std::max(radius, double(disks[q].w) + std::max(glm::length(c - a), glm::length(c - b)));
+        }
+        // Round up so the float radius never falls below the exact bound.
+        const float r = std::nextafter(float(radius), std::numeric_limits<float>::infinity());
+        out.push_back({glm::vec4(disks[i].x, disks[i].y, disks[i].z, r),
+                       glm::vec4(float(c1.x - c0.x), float(c1.y - c0.y), 0.0f, float(m))});
+    }
+    return out;
+}
+
+}  // namespace mobb::render

@@ -1,0 +1,68 @@
+// Level of detail for the disk stacks: pure functions, no GL. When one sample's cylinder is far below
+// a pixel tall on screen (crowds: 100 clips of 3,600 samples seen whole), a stack is drawn with one
+// cylinder per group of k consecutive samples instead of one per sample.
+//
+// A group's cylinder is sheared, not upright: its axis runs from the centre of the group's first disk
+// (at the group's start time) to the centre of the next group's first disk (at the group's end time),
+// so consecutive groups meet centre to centre and a stack never shows a gap or a step. Its radius is
+// the smallest one that keeps every disk of the group inside for the whole of the disk's time slot:
+// max over the group of r_i + (distance from c_i to the axis at the slot's start or end). For smooth
+// motion that is max r plus a fraction of one sample's step, so the silhouette is conservative and
+// barely wider than the stack's. The vertical extent is exact: a group spans its samples' time slots.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "frame.h"
+#include "space.h"
+
+namespace mobb::render {
+
+/// One cylinder's instance data: world x, world y, global start time, radius.
+using DiskInstance = glm::vec4;
+
+/// One group's instance data: `base` as a DiskInstance (first disk's centre, start time, group
+/// radius); `shift` = (world dx, world dy) from the base centre to the top centre, 0, and the number
+/// of samples in the group (its height in units of dt).
+struct DiskGroup {
+    glm::vec4 base;
+    glm::vec4 shift;
+};
+
+/// LOD is used only for crowds, as coarse disks and single sampling are (see DiskLayer): ordinary
+/// scenes, whatever their zoom, always draw one cylinder per sample.
+constexpr std::size_t kDiskLodAbove = 100000;
+/// A group may be at most this many pixels tall on screen (at the clip's point nearest the camera).
+constexpr double kDiskLodPixels = 2.0;
+constexpr int kDiskLodMaxK = 256;
+
+/// Samples per drawn cylinder: 1 for scenes of at most kDiskLodAbove disks or when one sample's
+/// cylinder is more than kDiskLodPixels / 2 tall; else the largest power of two k <= kDiskLodMaxK with
+/// k * sample_pixels <= kDiskLodPixels.
+int disk_lod(double sample_pixels, std::size_t scene_disks);
+
+/// Pixels per metre (perpendicular to the view) at the point of the GL-world box [lo, hi] nearest
+/// the camera, in a viewport `height` pixels tall; infinity when the box reaches the camera plane.
+double nearest_pixels_per_metre(const glm::mat4& view_proj, int height, const glm::vec3& lo, const glm::vec3& hi);
+
+/// Space-time bounds of a placed path's disks (world x, y; global time from start to end).
+Bounds path_bounds(const Path& path, const Placement& place);
+
+/// The LOD of one clip of space-time bounds `bounds` and sample spacing dt in a frame.
+int clip_lod(const Bounds& bounds, double dt, double time_scale, std::size_t scene_disks, const glm::mat4& view_proj,
+             int height);
+
+/// Every clip's LOD in a frame drawn with view_proj into a viewport `height` pixels tall.
+std::vector<int> frame_lods(const Frame& frame, const glm::mat4& view_proj, int height);
+
+/// The instances of a placed path (world positions, global times).
+std::vector<DiskInstance> disk_instances(const Path& path, const Placement& place);
+
+/// Groups of k consecutive disks (the last group may hold fewer), as described above.
+std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k);
+
+}  // namespace mobb::render

@@ -1,0 +1,117 @@
+// The disk stacks' level of detail (disk_lod.h): ordinary scenes always draw one cylinder per
+// sample (so the goldens cannot change), the 360,000-disk bench scene at 1280x720 groups samples, and
+// a group's sheared cylinder holds every disk of the group. Pure functions: no GL, no timing.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "disk_lod.h"
+#include "render_test_util.h"
+#include "scene.h"
+#include "state.h"
+
+namespace mobb::test {
+namespace {
+
+using viewer::State;
+
+std::string asset_scene(const std::string& name) { return std::string(MOBB_ASSET_SCENES) + "/" + name; }
+
+/// Every clip's k for a scene file drawn at width x height with the scene's own camera.
+std::vector<int> lods_of(const std::string& file, int width, int height, std::size_t* disks = nullptr) {
+    const viewer::Scene scene = viewer::load_scene(file);
+    const float aspect = float(width) / float(height);
+    const State s = viewer::load_state(scene, aspect);
+    const render::Frame frame = viewer::frame_of(s);
+    if (disks) {
+        *disks = 0;
+        for (const auto& c : frame.clips) *disks += c.tree->path().size();
+    }
+    return render::frame_lods(frame, s.camera.projection(aspect) * s.camera.view(), height);
+}
+
+TEST(DiskLod, Decision) {
+    // Small scenes: always 1, however thin a sample is on screen.
+    EXPECT_EQ(render::disk_lod(0.001, 7000), 1);
+    EXPECT_EQ(render::disk_lod(0.001, render::kDiskLodAbove), 1);
+    // Crowds: 1 while a sample is more than kDiskLodPixels / 2 tall, else the largest power of two
+    // whose group is at most kDiskLodPixels tall.
+    const double p = render::kDiskLodPixels;
+    EXPECT_EQ(render::disk_lod(p, 360000), 1);
+    EXPECT_EQ(render::disk_lod(0.51 * p, 360000), 1);
+    EXPECT_EQ(render::disk_lod(0.3 * p, 360000), 2);
+    EXPECT_EQ(render::disk_lod(p / 100, 360000), 64);
+    EXPECT_EQ(render::disk_lod(1e-9, 360000), render::kDiskLodMaxK);
+    EXPECT_EQ(render::disk_lod(std::nan(""), 360000), 1);
+    for (double px = 1e-4; px < 4; px *= 1.37) {
+        const int k = render::disk_lod(px, 360000);
+        EXPECT_EQ(k & (k - 1), 0) << px;
+        EXPECT_TRUE(k == 1 || k * px <= render::kDiskLodPixels) << px;
+        EXPECT_TRUE(k == render::kDiskLodMaxK || 2 * k * px > render::kDiskLodPixels) << px;
+    }
+}
+
+TEST(DiskLod, OneForTheDefaultAndGoldenScenes) {
+    MOBB_NEEDS_MOCAP();
+    for (int k : lods_of(asset_scene("default.json"), 960, 540)) EXPECT_EQ(k, 1);
+    for (const char* name : {"pair.json", "long.json"})
+        for (int k : lods_of(test_scene(name), 320, 240)) EXPECT_EQ(k, 1) << name;
+}
+
+TEST(DiskLod, OneForSyntheticGoldenScene) {
+    for (int k : lods_of(test_scene("walks.json"), 320, 240)) EXPECT_EQ(k, 1);
+}
+
+TEST(DiskLod, GroupsTheBenchScene) {
+    std::size_t disks = 0;
+    const std::vector<int> lods = lods_of(asset_scene("bench.json"), 1280, 720, &disks);
+    ASSERT_EQ(lods.size(), 100u);
+    EXPECT_EQ(disks, 360000u);
+    for (int k : lods) {
+        EXPECT_GT(k, 1);
+        EXPECT_EQ(k & (k - 1), 0);
+    }
+}
+
+TEST(DiskLod, GroupsHoldTheirDisks) {
+    // A wandering path with a varying radius, grouped at several k (including a partial last group).
+    Path path;
+    path.dt = 1.0 / 60.0;
+    double x = 0, y = 0, heading = 0;
+    for (int i = 0; i < 1000; ++i) {
+        heading += 0.05 * std::sin(0.013 * i * i);
+        x += 0.03 * std::cos(heading);
+        y += 0.03 * std::sin(heading);
+        path.samples.push_back({x, y, 0.3 + 0.1 * std::sin(0.1 * i)});
+    }
+    const Placement place{1.0, -2.0, 0.7, 0.5};
+    const std::vector<render::DiskInstance> disks = render::disk_instances(path, place);
+    for (int k : {1, 2, 8, 64, 256}) {
+        const std::vector<render::DiskGroup> groups = render::group_disks(disks, k);
+        ASSERT_EQ(groups.size(), (disks.size() + std::size_t(k) - 1) / std::size_t(k)) << k;
+        std::size_t i = 0;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const render::DiskGroup& G = groups[g];
+            const auto m = std::size_t(G.shift.w);
+            EXPECT_EQ(G.base.z, disks[i].z);  // groups tile the samples' time slots
+            if (g + 1 < groups.size()) {
+                // Consecutive groups meet centre to centre: no gaps in the stack.
+                EXPECT_NEAR(G.base.x + G.shift.x, groups[g + 1].base.x, 1e-5);
+                EXPECT_NEAR(G.base.y + G.shift.y, groups[g + 1].base.y, 1e-5);
+            }
+            for (std::size_t u = 0; u < m; ++u) {
+                const render::DiskInstance& d = disks[i + u];
+                for (double s : {double(u), double(u + 1)}) {  // the slot's start and end
+                    const double ax = G.base.x + G.shift.x * s / double(m), ay = G.base.y + G.shift.y * s / double(m);
+                    EXPECT_LE(std::hypot(d.x - ax, d.y - ay) + d.w, double(G.base.w) + 1e-5) << k << " " << g;
+                }
+            }
+            i += m;
+        }
+        EXPECT_EQ(i, disks.size());
+    }
+}
+
+}  // namespace
+}  // namespace mobb::test
