@@ -6,6 +6,7 @@
 
 #include "cli.h"
 #include "context_glfw.h"
+#include "crowd_view.h"
 #include "export_gltf.h"
 #include "headless.h"
 #include "image.h"
@@ -47,15 +48,29 @@ void apply_step(State& s, int step) {
     if (step >= 0) s.scene.step = step;
 }
 
+/// A recorded crowd's state for `render --crowd` and `view --crowd`: the agent's choice points listed,
+/// the cursor at `time` (negative: the middle of the run), the camera from the space-time side.
+State crowd_state(const std::string& record, float asp, int agent, double time) {
+    State s = viewer::load_crowd_state(record, asp);
+    viewer::select_choice(s, agent, -1);
+    const auto& r = s.crowd->record;
+    s.scene.cursor = time >= 0 ? time : 0.5 * double(r.frames) * r.dt;
+    return s;
+}
+
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
-        std::string scene, out;
-        int width = 0, height = 0, step = -1, bench_frames = 10;
+        std::string scene, out, crowd;
+        int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0;
+        double time = -1;
         bool ui = false, bench = false;
     };
     auto a = std::make_shared<Args>();
-    cmd->add_option("SCENE", a->scene, "Scene file (JSON)")->required();
+    cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
+    cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
+    cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--agent", a->agent, "With --crowd: agent listed in the crowd panel")->check(CLI::NonNegativeNumber);
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")->check(CLI::Range(16, 8192));
     cmd->add_option("--height", a->height, "Image height (default: the scene's; 720 with --bench)")->check(CLI::Range(16, 8192));
@@ -69,7 +84,24 @@ void add_render(CLI::App& app, int& exit_code) {
             exit_code = kUsage;
             return;
         }
+        if (a->scene.empty() == a->crowd.empty()) {
+            std::cerr << "render: expected a SCENE or --crowd RECORD.json (one of them)\n";
+            exit_code = kUsage;
+            return;
+        }
         exit_code = guarded([&](std::ostream& out) {
+            if (!a->crowd.empty()) {
+                const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
+                State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
+                if (a->bench) {
+                    out << "bench: crowd, " << std::fixed << std::setprecision(2)
+                        << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
+                    return;
+                }
+                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));
+                out << a->out << "\n";
+                return;
+            }
             Scene scene = viewer::load_scene(a->scene);
             const int w = a->width ? a->width : a->bench ? 1280 : scene.width;
             const int h = a->height ? a->height : a->bench ? 720 : scene.height;
@@ -98,7 +130,7 @@ void add_view(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("view", "Open the interactive viewer on a scene or on clip files");
     struct Args {
         std::vector<std::string> inputs;
-        std::string up = "y", scale = "auto", screenshot;
+        std::string up = "y", scale = "auto", screenshot, crowd;
         double fps = 0;
         int frames = 0, width = 1280, height = 800;
         TreeArgs tree;
@@ -111,10 +143,30 @@ void add_view(CLI::App& app, int& exit_code) {
     a->tree.add_to(*cmd, false);
     cmd->add_option("--frames", a->frames, "Close after N frames (with --screenshot: smoke tests)")->check(CLI::Range(1, 1 << 30));
     cmd->add_option("--screenshot", a->screenshot, "Save the last frame to this PNG");
+    cmd->add_option("--crowd", a->crowd, "Show a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--width", a->width, "Window width")->check(CLI::Range(16, 8192));
     cmd->add_option("--height", a->height, "Window height")->check(CLI::Range(16, 8192));
     cmd->callback([a, cmd, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
+            if (!a->crowd.empty()) {
+                if (!a->inputs.empty()) throw app::InputError("view: --crowd takes no scene or clip files");
+                State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
+                if (!render::display_available()) {
+                    const std::string png = a->screenshot.empty() ? "mobb-view.png" : a->screenshot;
+                    render::write_png(png, viewer::render_headless(s, {a->width, a->height, true}));
+                    std::cerr << "no display: rendered " << a->crowd << " headless to "
+                              << std::filesystem::absolute(png).string() << "\n";
+                    return;
+                }
+                viewer::WindowOptions w;
+                w.width = a->width;
+                w.height = a->height;
+                w.frames = a->frames;
+                w.screenshot = a->screenshot;
+                viewer::run_window(s, w);
+                if (!a->screenshot.empty()) out << a->screenshot << "\n";
+                return;
+            }
             const bool files = !a->inputs.empty() && !(a->inputs.size() == 1 && a->inputs[0].size() > 5 &&
                                                         a->inputs[0].substr(a->inputs[0].size() - 5) == ".json");
             std::string scene_file;

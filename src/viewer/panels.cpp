@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "cli.h"
+#include "crowd_view.h"
 
 namespace mobb::viewer {
 
@@ -271,6 +272,72 @@ void pick_panel(const State& s, const Ui& ui) {
     ImGui::End();
 }
 
+
+/// A recorded crowd: play the time cursor, pick an agent and one of its choice points, list the
+/// candidates (accepted / rejected) and open a candidate's query in the trace debugger.
+void crowd_panel(State& s, Ui& ui) {
+    if (!s.crowd) return;
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record;
+    // Bottom middle, between the tree-fit and trace panels, clear of the crowd seen from the default camera.
+    ImGui::SetNextWindowPos(ImVec2(416, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(316, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Crowd")) return ImGui::End();
+    ImGui::Text("%d agents, %.1f s, %s, seed %llu", v.agents, double(r.frames) * r.dt, r.select.c_str(),
+                static_cast<unsigned long long>(r.seed));
+    if (ImGui::Button(v.playing ? "pause" : "play")) v.playing = !v.playing;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::SliderFloat("rate", &v.rate, 0.1f, 4.0f, "%.1f x");
+    float t = float(s.scene.cursor);
+    if (ImGui::SliderFloat("time", &t, 0.0f, float(double(r.frames) * r.dt), "%.2f s")) s.scene.cursor = double(t);
+    if (ImGui::Button("from above")) ui.request_view = 1;
+    ImGui::SameLine();
+    if (ImGui::Button("space-time")) ui.request_view = 2;
+    int agent = v.agent;
+    if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select_choice(s, agent, -1);
+    ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
+    const std::vector<int> choices = agent_choices(v, v.agent);
+    ImGui::BeginChild("choices", ImVec2(0, 110), true);
+    for (int k : choices) {
+        const crowd::ChoicePoint& c = r.choices[std::size_t(k)];
+        char label[96];
+        std::snprintf(label, sizeof label, "%.2f s: clip %d, %zu candidates%s##%d", double(c.frame) * r.dt, c.taken,
+                      c.candidates.size(), c.fallback ? " (fallback)" : "", k);
+        if (ImGui::Selectable(label, v.choice == k)) {
+            select_choice(s, v.agent, v.choice == k ? -1 : k);
+            if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;
+        }
+    }
+    ImGui::EndChild();
+    if (v.choice >= 0) {
+        const crowd::ChoicePoint& c = r.choices[std::size_t(v.choice)];
+        ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
+                    static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
+        if (!v.graph) ImGui::TextWrapped("graph not loaded (%s): candidates listed only", v.graph_error.c_str());
+        for (std::size_t k = 0; k < c.candidates.size(); ++k) {
+            const crowd::Candidate& cand = c.candidates[k];
+            const bool taken = cand.clip == c.taken;
+            const bool ok = !cand.outside && cand.hits == 0;
+            const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f) : ok ? glm::vec3(0.25f, 0.8f, 0.3f) : glm::vec3(0.9f, 0.2f, 0.2f);
+            ImGui::TextColored(imvec(col), "clip %d: %s%s, %d queries, %d hits", cand.clip, taken ? "taken" : ok ? "clear" : "rejected",
+                               cand.outside ? " (leaves the world)" : "", cand.queries, cand.hits);
+            if (v.graph && k < v.candidate_clips.size()) {
+                ImGui::SameLine();
+                ImGui::PushID(int(k));
+                if (ImGui::SmallButton("trace")) {
+                    std::string message;
+                    open_candidate_query(s, int(k), &message);
+                    ui.status = message;
+                }
+                ImGui::PopID();
+            }
+        }
+    }
+    if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
+    ImGui::End();
+}
+
 }  // namespace
 
 void go_to_step(State& s, Ui& ui, int k) {
@@ -302,6 +369,7 @@ void go_to_step(State& s, Ui& ui, int k) {
 }
 
 void update_playback(State& s, Ui& ui, double seconds) {
+    update_crowd_playback(s, seconds);
     if (!ui.playing || s.trace.empty()) return;
     ui.play_clock += seconds * double(ui.rate);
     const int steps = int(ui.play_clock);
@@ -327,6 +395,7 @@ void draw_panels(State& s, Ui& ui) {
     trace_panel(s, ui);
     fit_panel(s, ui);
     pick_panel(s, ui);
+    crowd_panel(s, ui);
 }
 
 }  // namespace mobb::viewer

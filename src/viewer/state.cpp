@@ -38,6 +38,7 @@ static LoadedClip load_clip(const SceneClip& c, std::size_t index) {
 }
 
 static Path path_of(const State& s, std::size_t k) {
+    if (k < s.fixed_paths.size()) return s.fixed_paths[k];
     if (s.clips[k].clip) return s.clips[k].clip->path;
     if (k < s.scene.clips.size()) return random_walk(*s.scene.clips[k].walk);
     RandomWalk w = s.scene.generate.walk;
@@ -117,7 +118,7 @@ render::Frame frame_of(const State& s) {
             v.up = s.clips[k].clip->up;
         }
         v.place = s.places[k];
-        v.color = render::clip_color(int(k));
+        v.color = k < s.colors.size() ? s.colors[k] : render::clip_color(int(k));
         v.visible = k >= s.scene.clips.size() || s.scene.clips[k].visible;
         f.clips.push_back(v);
     }

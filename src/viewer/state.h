@@ -16,6 +16,8 @@
 
 namespace mobb::viewer {
 
+struct CrowdView;  // crowd_view.h
+
 struct LoadedClip {
     std::string name;                   ///< file name, or "walk N"
     std::shared_ptr<io::Clip> clip;     ///< null for synthetic paths (no skeleton)
@@ -33,6 +35,11 @@ struct State {
     bool queried = false;
     render::Camera camera;
     std::uint64_t revision = 1;         ///< bumped on any change of clips, placements or trees
+    /// A recorded crowd (mobb view --crowd): clip k's path is fixed_paths[k] when k < its size, and
+    /// its colour colors[k] when k < that size. Empty for scenes.
+    std::shared_ptr<CrowdView> crowd;
+    std::vector<Path> fixed_paths;
+    std::vector<glm::vec3> colors;
 };
 
 /// The absolute path of a scene clip's file (relative names are under io::data_dir()).

@@ -10,7 +10,10 @@ if(NOT EXISTS ${DATA}/cmu/007_01.bvh)
   cmake_language(EXIT 77)
 endif()
 file(REMOVE ${OUT})
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${MOBB} view ${SCENE} --frames 30 --screenshot ${OUT}
+if(NOT DEFINED VIEW_ARGS)
+  set(VIEW_ARGS ${SCENE})
+endif()
+execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${MOBB} view ${VIEW_ARGS} --frames 30 --screenshot ${OUT}
                         --width 1024 --height 640
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("exit ${code}\nstdout: ${out}\nstderr: ${err}")

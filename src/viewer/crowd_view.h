@@ -1,0 +1,52 @@
+// A recorded crowd (`mobb crowd --record FILE`) in the viewer: one disk stack per agent from the
+// record's samples, the agents' choice points, and a choice point's candidates placed where the
+// agent stood (from the motion graph's clip paths) with the query of a candidate against another
+// agent's committed clip opened in the trace debugger.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/record.h"
+#include "state.h"
+
+namespace mobb::viewer {
+
+struct CrowdView {
+    crowd::Record record;
+    std::shared_ptr<crowd::MotionGraph> graph;  ///< null when the record's graph cannot be read
+    std::string graph_error;
+    int agents = 0;                             ///< clips 0..agents-1 of the state are the agents
+    int agent = 0;                              ///< agent whose choice points the panel lists
+    int choice = -1;                            ///< index into record.choices, -1 for none
+    std::vector<int> candidate_clips;           ///< state clip of each candidate of the choice
+    std::vector<bool> accepted;                 ///< per candidate: no hit, inside the world
+    bool playing = false;
+    float rate = 1.0f;                          ///< seconds of crowd per second while playing
+};
+
+/// Loads a record and its graph (when readable) into a state: agents as clips, no query.
+/// Throws std::runtime_error naming the file.
+State load_crowd_state(const std::string& record_file, float aspect);
+
+/// Indices into record.choices of one agent's choice points, in time order.
+std::vector<int> agent_choices(const CrowdView& view, int agent);
+
+/// The agent's committed clip started at a choice point (its placement is the candidates' too:
+/// every successor starts at the exit pose of the clip before). Null when none.
+const crowd::PlacedClip* committed_at(const CrowdView& view, const crowd::ChoicePoint& c);
+
+/// Selects an agent (-1 keeps it) and one of the record's choice points (-1 for none): the
+/// candidates are added as extra clips after the agents, coloured accepted / rejected.
+void select_choice(State& state, int agent, int choice);
+
+/// Runs the query of candidate `k` of the selected choice against the first other agent's committed
+/// clip overlapping it in time that it collides with (else the first overlapping one), as the
+/// state's query with a trace. Returns false when the record or the graph lacks what it needs.
+bool open_candidate_query(State& state, int k, std::string* message = nullptr);
+
+/// Advances the time cursor while playing (wraps at the end).
+void update_crowd_playback(State& state, double seconds);
+
+}  // namespace mobb::viewer
