@@ -126,16 +126,35 @@ void add_render(CLI::App& app, int& exit_code) {
     });
 }
 
+struct ViewArgs {
+    std::vector<std::string> inputs;
+    std::string up = "y", scale = "auto", screenshot, crowd;
+    double fps = 0;
+    int frames = 0, width = 1280, height = 800;
+    TreeArgs tree;
+};
+
+// Opens a window on the state, or renders it headless when there is no display (`what` names it).
+void show(State& s, const ViewArgs& a, const std::string& what, std::ostream& out) {
+    if (!render::display_available()) {
+        const std::string png = a.screenshot.empty() ? "mobb-view.png" : a.screenshot;
+        render::write_png(png, viewer::render_headless(s, {a.width, a.height, true}));
+        std::cerr << "no display: rendered " << what << " headless to " << std::filesystem::absolute(png).string()
+                  << "\n";
+        return;
+    }
+    viewer::WindowOptions w;
+    w.width = a.width;
+    w.height = a.height;
+    w.frames = a.frames;
+    w.screenshot = a.screenshot;
+    viewer::run_window(s, w);
+    if (!a.screenshot.empty()) out << a.screenshot << "\n";
+}
+
 void add_view(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("view", "Open the interactive viewer on a scene or on clip files");
-    struct Args {
-        std::vector<std::string> inputs;
-        std::string up = "y", scale = "auto", screenshot, crowd;
-        double fps = 0;
-        int frames = 0, width = 1280, height = 800;
-        TreeArgs tree;
-    };
-    auto a = std::make_shared<Args>();
+    auto a = std::make_shared<ViewArgs>();
     cmd->add_option("SCENE_OR_FILES", a->inputs, "A scene (.json) or BVH / glTF files (default: assets/scenes/default.json)");
     cmd->add_option("--up", a->up, "Up axis of BVH files: y or z")->check(CLI::IsMember({"y", "z"}));
     cmd->add_option("--scale", a->scale, "Metres per file unit, or auto");
@@ -151,20 +170,7 @@ void add_view(CLI::App& app, int& exit_code) {
             if (!a->crowd.empty()) {
                 if (!a->inputs.empty()) throw app::InputError("view: --crowd takes no scene or clip files");
                 State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
-                if (!render::display_available()) {
-                    const std::string png = a->screenshot.empty() ? "mobb-view.png" : a->screenshot;
-                    render::write_png(png, viewer::render_headless(s, {a->width, a->height, true}));
-                    std::cerr << "no display: rendered " << a->crowd << " headless to "
-                              << std::filesystem::absolute(png).string() << "\n";
-                    return;
-                }
-                viewer::WindowOptions w;
-                w.width = a->width;
-                w.height = a->height;
-                w.frames = a->frames;
-                w.screenshot = a->screenshot;
-                viewer::run_window(s, w);
-                if (!a->screenshot.empty()) out << a->screenshot << "\n";
+                show(s, *a, a->crowd, out);
                 return;
             }
             const bool files = !a->inputs.empty() && !(a->inputs.size() == 1 && a->inputs[0].size() > 5 &&
@@ -191,20 +197,7 @@ void add_view(CLI::App& app, int& exit_code) {
                 if (s.queried) s.scene.step = 0;
                 viewer::frame_all(s, aspect(a->width, a->height));
             }
-            if (!render::display_available()) {
-                const std::string png = a->screenshot.empty() ? "mobb-view.png" : a->screenshot;
-                render::write_png(png, viewer::render_headless(s, {a->width, a->height, true}));
-                std::cerr << "no display: rendered " << (scene_file.empty() ? "the clips" : scene_file)
-                          << " headless to " << std::filesystem::absolute(png).string() << "\n";
-                return;
-            }
-            viewer::WindowOptions w;
-            w.width = a->width;
-            w.height = a->height;
-            w.frames = a->frames;
-            w.screenshot = a->screenshot;
-            viewer::run_window(s, w);
-            if (!a->screenshot.empty()) out << a->screenshot << "\n";
+            show(s, *a, scene_file.empty() ? "the clips" : scene_file, out);
         });
     });
 }
