@@ -124,4 +124,30 @@ int guarded(const std::function<void(std::ostream& out)>& body) {
     return kOk;
 }
 
+void parse_world(const std::string& text, double& w, double& h) {
+    const auto x = text.find('x');
+    try {
+        std::size_t u1 = 0, u2 = 0;
+        if (x == std::string::npos) throw std::invalid_argument("");
+        w = std::stod(text.substr(0, x), &u1);
+        h = std::stod(text.substr(x + 1), &u2);
+        if (u1 != x || u2 != text.size() - x - 1 || !(w > 0) || !(h > 0) || !std::isfinite(w) || !std::isfinite(h))
+            throw std::invalid_argument("");
+    } catch (const std::exception&) {
+        throw InputError("--world: expected WxH in metres (e.g. 30x40), got '" + text + "'");
+    }
+}
+
+std::function<void(double)> progress_bar(const std::string& label) {
+    auto last = std::make_shared<int>(-1);
+    return [label, last](double f) {
+        const int pct = int(f * 100.0);
+        if (pct == *last) return;
+        *last = pct;
+        const int w = 30, filled = pct * w / 100;
+        std::cerr << "\r" << label << " [" << std::string(std::size_t(filled), '#') << std::string(std::size_t(w - filled), ' ')
+                  << "] " << pct << " %" << (pct >= 100 ? "\n" : "") << std::flush;
+    };
+}
+
 }  // namespace mobb::app

@@ -78,6 +78,12 @@ void add_path(CLI::App& app, int& exit_code);
 void add_tree(CLI::App& app, int& exit_code);
 void add_query(CLI::App& app, int& exit_code);
 void add_batch(CLI::App& app, int& exit_code);
-void add_crowd_commands(CLI::App& app, int& exit_code);  // graph, crowd, bench (cmd_crowd.cpp)
+void add_crowd_commands(CLI::App& app, int& exit_code);  // graph, crowd (cmd_crowd.cpp)
+void add_bench_commands(CLI::App& app, int& exit_code);  // bench ... (cmd_bench.cpp)
+
+/// "WxH" in metres -> w, h. Throws InputError.
+void parse_world(const std::string& text, double& w, double& h);
+/// A progress bar on stderr, redrawn when the percentage changes.
+std::function<void(double)> progress_bar(const std::string& label);
 
 }  // namespace mobb::app

@@ -107,6 +107,8 @@ void Simulation::place_agents() {
 
 int Simulation::count_hits(ChoicePoint& cp, int index, const Placed& c, const std::vector<int>& near, bool stop_at_hit) {
     Candidate& cand = cp.candidates[std::size_t(index)];
+    cand.queries = 0;  // a fallback reruns a candidate's queries in full: keep only the full list
+    cand.against.clear();
     int hits = 0;
     for (int id : near) {
         const auto [b, k] = handles_[std::size_t(id)];
@@ -114,6 +116,7 @@ int Simulation::count_hits(ChoicePoint& cp, int index, const Placed& c, const st
         QueryStats st;
         const bool hit = collide(trees_[std::size_t(c.clip)], c.place, trees_[std::size_t(other.clip)], other.place, &st);
         ++cand.queries;
+        cand.against.push_back({b, k, hit});
         ++cp.queries;
         cp.tests2d += st.tests2d;
         cp.tests3d += st.tests3d;
@@ -164,7 +167,7 @@ void Simulation::choose(int agent, std::int64_t frame) {
     for (int clip : order) {
         placed.push_back(place_clip(g_, clip, base, frame, o_));
         const Placed& c = placed.back();
-        cp.candidates.push_back({clip, c.outside, 0, 0});
+        cp.candidates.push_back({clip, c.outside, 0, 0, {}});
         broad_.query(c.box, agent, near_);
         nears.push_back(near_);
         out_.summary.time_pairs += broad_.size();

@@ -95,8 +95,12 @@ std::string record_to_text(const Record& r, const std::string& summary_json) {
     J choices = J::array();
     for (const ChoicePoint& c : r.choices) {
         J cands = J::array();
-        for (const Candidate& k : c.candidates)
-            cands.push_back({{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits}});
+        for (const Candidate& k : c.candidates) {
+            J against = J::array();
+            for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.index, int(q.hit)});
+            cands.push_back({{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits},
+                             {"against", against}});
+        }
         choices.push_back({{"agent", c.agent}, {"frame", c.frame}, {"t", rounded(double(c.frame) * r.dt, 9)},
                            {"taken", c.taken}, {"fallback", c.fallback}, {"queries", c.queries}, {"tests2d", c.tests2d},
                            {"tests3d", c.tests3d}, {"samples", c.samples}, {"pruned", c.pruned}, {"candidates", cands}});
@@ -145,8 +149,19 @@ Record load_record(const std::string& file) {
             cp.tests3d = c.at("tests3d").get<std::uint64_t>();
             cp.samples = c.at("samples").get<std::uint64_t>();
             cp.pruned = c.at("pruned").get<std::uint64_t>();
-            for (const auto& k : c.at("candidates"))
-                cp.candidates.push_back({k.at("clip").get<int>(), k.at("outside").get<bool>(), k.at("queries").get<int>(), k.at("hits").get<int>()});
+            for (const auto& k : c.at("candidates")) {
+                Candidate cand{k.at("clip").get<int>(), k.at("outside").get<bool>(), k.at("queries").get<int>(),
+                               k.at("hits").get<int>(), {}};
+                for (const auto& q : k.at("against")) {
+                    const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>() != 0};
+                    if (cq.agent < 0 || std::size_t(cq.agent) >= r.tracks.size() || cq.index < 0 ||
+                        std::size_t(cq.index) >= r.tracks[std::size_t(cq.agent)].clips.size())
+                        throw std::runtime_error("choice " + std::to_string(r.choices.size()) +
+                                                 ": a query names a clip not in the tracks");
+                    cand.against.push_back(cq);
+                }
+                cp.candidates.push_back(std::move(cand));
+            }
             r.choices.push_back(std::move(cp));
         }
         return r;

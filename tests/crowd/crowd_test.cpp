@@ -150,7 +150,46 @@ TEST(Crowd, RecordRoundTripsThroughAFile) {
     EXPECT_EQ(r.frames, c.record.frames);
     EXPECT_EQ(r.tracks[2].samples[17], c.record.tracks[2].samples[17]);
     EXPECT_EQ(r.choices.size(), c.record.choices.size());
+    for (std::size_t k = 0; k < r.choices.size(); ++k)
+        for (std::size_t j = 0; j < r.choices[k].candidates.size(); ++j) {
+            const auto &x = r.choices[k].candidates[j].against, &y = c.record.choices[k].candidates[j].against;
+            ASSERT_EQ(x.size(), y.size());
+            for (std::size_t q = 0; q < x.size(); ++q)
+                EXPECT_TRUE(x[q].agent == y[q].agent && x[q].index == y[q].index && x[q].hit == y[q].hit);
+        }
     EXPECT_EQ(frame_contacts(r).size(), c.summary.contacts);
+}
+
+// Each candidate's recorded queries name committed clips of other agents overlapping it in time, and
+// rerunning them gives the recorded answers, which add up to its hits.
+TEST(Crowd, RecordedQueriesReplayToTheirAnswers) {
+    const CrowdRun c = run(30, 15, 11, Selection::Avoid);
+    const MotionGraph& g = fixture().graph;
+    const Record& r = c.record;
+    std::uint64_t replayed = 0;
+    for (const ChoicePoint& cp : r.choices) {
+        const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+        auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.start == cp.frame; });
+        ASSERT_NE(at, own.end());
+        for (const Candidate& k : cp.candidates) {
+            EXPECT_EQ(k.against.size(), std::size_t(k.queries));
+            int hits = 0;
+            for (const CandidateQuery& q : k.against) {
+                ASSERT_NE(q.agent, cp.agent);
+                const PlacedClip& other = r.tracks[std::size_t(q.agent)].clips[std::size_t(q.index)];
+                EXPECT_LT(other.commit, at->commit);
+                const bool hit = collide(fixture().trees[std::size_t(k.clip)], at->place,
+                                         fixture().trees[std::size_t(other.clip)], other.place);
+                EXPECT_EQ(hit, q.hit);
+                EXPECT_TRUE(times_overlap(at->place.t0, at->place.t0 + g.clips[std::size_t(k.clip)].path.duration(),
+                                          other.place.t0, other.place.t0 + g.clips[std::size_t(other.clip)].path.duration()));
+                hits += q.hit;
+                ++replayed;
+            }
+            EXPECT_EQ(hits, k.hits);
+        }
+    }
+    EXPECT_GT(replayed, 100u);
 }
 
 TEST(Crowd, RejectsImpossibleWorlds) {

@@ -14,10 +14,13 @@
 //     }, ... ],
 //     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "fallback": bool,
 //                   "queries": q, "tests2d": n, "tests3d": n, "samples": n, "pruned": n,
-//                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h}, ... ]}, ... ]
+//                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h,
+//                                    "against": [ [agent, index, hit], ... ]}, ... ]}, ... ]
 //   }
 // A candidate's "hits" counts the committed clips it collides with; in avoid mode the queries of a
 // candidate stop at its first hit unless every candidate failed (then all are counted for the fallback).
+// "against" lists its queries in the order run: the other agent, the index of that agent's committed
+// clip in its track's "clips", and the answer (0 or 1).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -37,12 +40,20 @@ struct PlacedClip {
     std::int64_t commit = 0;   ///< order of the choice point that committed it
 };
 
+/// One narrow-phase query of a candidate: against clip `index` of agent `agent`'s track.
+struct CandidateQuery {
+    int agent = 0;
+    int index = 0;
+    bool hit = false;
+};
+
 struct Candidate {
     int clip = 0;
     bool outside = false;      ///< leaves the world: some root position is farther outside the rectangle
                                ///< than the clip's start (0 when it starts inside)
     int queries = 0;           ///< narrow-phase queries run for it
     int hits = 0;              ///< committed clips it collides with (see the layout note)
+    std::vector<CandidateQuery> against;  ///< its queries, in the order run
 };
 
 struct ChoicePoint {

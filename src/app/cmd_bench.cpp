@@ -1,0 +1,113 @@
+// mobb bench ...: the paper's experiments and the performance workloads (src/crowd/bench_tables.h).
+#include <fstream>
+#include <iostream>
+
+#include "cli.h"
+#include "mobb/crowd/bench_tables.h"
+#include "mobb/crowd/motion_graph.h"
+
+namespace mobb::app {
+
+namespace {
+
+// Where a benchmark table goes: Markdown on stdout, and optionally JSON and PNG files.
+struct TableOutputs {
+    std::string json, png;
+    bool quiet = false;
+
+    void add_to(CLI::App& cmd) {
+        cmd.add_option("--json", json, "Also write the table as JSON");
+        cmd.add_option("--png", png, "Also write a bar chart of time per query (PNG)");
+        cmd.add_flag("--quiet", quiet, "No progress bar");
+    }
+    void write(const crowd::BenchTable& t, std::ostream& out) const {
+        if (!json.empty()) {
+            std::ofstream f(json);
+            f << crowd::table_json(t);
+            if (!f) throw InputError(json + ": cannot write");
+        }
+        if (!png.empty()) crowd::write_table_png(t, png);
+        out << crowd::table_markdown(t);
+    }
+    std::function<void(double)> progress(const std::string& label) const {
+        return quiet ? std::function<void(double)>() : progress_bar(label);
+    }
+};
+
+void add_table1(CLI::App& bench, int& exit_code) {
+    auto* cmd = bench.add_subcommand("table1", "Paper Table 1: the crowd's queries replayed by every tree type, plus frame stepping");
+    auto o = std::make_shared<crowd::Table1Options>();
+    auto world = std::make_shared<std::string>("30x40");
+    auto outputs = std::make_shared<TableOutputs>();
+    auto quick = std::make_shared<bool>(false);
+    cmd->add_option("--graph", o->graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
+    cmd->add_option("--agents", o->agents, "Agents")->check(CLI::Range(1, 1000000))->capture_default_str();
+    cmd->add_option("--world", *world, "World WxH (metres)")->capture_default_str();
+    cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+    cmd->add_option("--passes", o->passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd->add_option("--nmin", o->n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    cmd->add_flag("--quick", *quick, "Smoke run: 20 agents, 10 s, 1 pass");
+    outputs->add_to(*cmd);
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            crowd::Table1Options opt = *o;
+            parse_world(*world, opt.width, opt.height);
+            if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
+            if (*quick) {
+                opt.agents = std::min(opt.agents, 20);
+                opt.seconds = std::min(opt.seconds, 10.0);
+                opt.passes = 1;
+            }
+            outputs->write(crowd::run_table1(opt, {}, outputs->progress("table1")), out);
+        });
+    });
+}
+
+void add_table2(CLI::App& bench, int& exit_code) {
+    auto* cmd = bench.add_subcommand("table2", "Paper Table 2: identical random tests on long motions, every tree type");
+    auto o = std::make_shared<crowd::Table2Options>();
+    auto outputs = std::make_shared<TableOutputs>();
+    auto quick = std::make_shared<bool>(false);
+    cmd->add_option("--graph", o->graph, "Motion graph JSON (for --synth and the crowd's root-overlap share)");
+    cmd->add_flag("--synth", o->synth, "Motion-graph sequences instead of the longest clips of the data");
+    cmd->add_option("--motions", o->motions, "Number of motions")->check(CLI::Range(1, 10000))->capture_default_str();
+    cmd->add_option("--synth-seconds", o->synth_seconds, "Length of each --synth sequence (s)")->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--tests", o->tests, "Random tests (the same for every method)")->check(CLI::Range(1, 100000000))
+        ->capture_default_str();
+    cmd->add_option("--fps", o->fps, "Resample the clips to this rate")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--root-share", o->root_share, "Target share of root overlaps (default: measured on a crowd run)");
+    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+    cmd->add_option("--passes", o->passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd->add_option("--nmin", o->n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    cmd->add_flag("--quick", *quick, "Smoke run: 2,000 tests, a 20-agent 10 s crowd for the target share, 1 pass");
+    outputs->add_to(*cmd);
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            crowd::Table2Options opt = *o;
+            if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
+            if (opt.root_share > 1) throw InputError("--root-share: must be at most 1");
+            if (*quick) {
+                opt.tests = std::min(opt.tests, 2000);
+                opt.crowd_agents = 20;
+                opt.crowd_seconds = 10;
+                opt.passes = 1;
+            }
+            outputs->write(crowd::run_table2(opt, {}, outputs->progress("table2")), out);
+        });
+    });
+}
+
+void add_bench(CLI::App& app, int& exit_code) {
+    auto* bench = app.add_subcommand("bench", "The paper's experiments (section 5), every row measured in one run");
+    bench->require_subcommand(1);
+    add_table1(*bench, exit_code);
+    add_table2(*bench, exit_code);
+}
+
+}  // namespace
+
+void add_bench_commands(CLI::App& app, int& exit_code) { add_bench(app, exit_code); }
+
+}  // namespace mobb::app
