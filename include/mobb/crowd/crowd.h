@@ -29,6 +29,7 @@ struct CrowdOptions {
     Selection select = Selection::Avoid;
     double cell = 4.0;                ///< broad-phase grid cell, metres
     bool log_queries = false;         ///< keep every narrow-phase query (for replays by the benchmarks)
+    int threads = 1;                  ///< worker threads for choice points; the record is the same for any count
 };
 
 /// One narrow-phase query of a run: candidate clip a at pa against committed clip b at pb.
@@ -49,6 +50,7 @@ struct CrowdSummary {
     std::uint64_t fallbacks = 0, outside = 0;  ///< fallback clips taken; of them, clips leaving the world
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
     double seconds = 0;                ///< wall time of the simulation (without the record check)
+    double cd_seconds = 0;             ///< wall time of collision detection in it (broad + narrow phase)
 };
 std::string summary_json(const CrowdSummary& s);
 std::string summary_text(const CrowdSummary& s);
