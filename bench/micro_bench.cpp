@@ -12,6 +12,7 @@
 #include "mobb/core/query.h"
 #include "mobb/core/scan.h"
 #include "mobb/io/load.h"
+#include "crowd_workload.h"
 #include "workload.h"
 
 namespace {
@@ -188,6 +189,39 @@ void Seq42(benchmark::State& state) {
     state.counters["agree"] = double(agree) / double(count);
 }
 BENCHMARK(Seq42)->ArgsProduct({benchmark::CreateDenseRange(0, bench::kMethods - 1, 1), {30, 60}});
+
+// Issue 5's workloads (bench/crowd_workload.h) side by side: args (workload, method). Workloads:
+// 0 crowd (the crowd's logged queries, Table 1 like), 1 longest (14 longest CMU clips, Table 2 like),
+// 2 synth42, 3 synth120 (motion-graph walks). Methods: 0 fast, 1 scan, 2 mobb1 (paper 1-level),
+// 3 mobb. Run with --benchmark_enable_random_interleaving=true and compare ratios.
+const bench::ClipWorkload& clip_workload(int which) {
+    static const char* names[] = {"crowd", "longest", "synth42", "synth120"};
+    static std::map<int, bench::ClipWorkload> cache;
+    auto it = cache.find(which);
+    if (it == cache.end()) it = cache.emplace(which, bench::ClipWorkload::make(names[which])).first;
+    return it->second;
+}
+
+void Issue5(benchmark::State& state) {
+    const bench::ClipWorkload* w = nullptr;
+    try {
+        w = &clip_workload(int(state.range(0)));
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+        return;
+    }
+    const auto m = bench::CrowdMethod(state.range(1));
+    const std::size_t n = w->size();
+    std::size_t i = 0, hits = 0, count = 0;
+    for (auto _ : state) {
+        hits += w->query(m, i);
+        ++count;
+        if (++i == n) i = 0;
+    }
+    state.SetLabel(w->name + " " + bench::to_string(m));
+    state.counters["positive"] = double(hits) / double(count);
+}
+BENCHMARK(Issue5)->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2, 3}});
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 // mobb bench ...: the paper's experiments and the performance workloads (src/crowd/bench_tables.h).
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -35,7 +36,7 @@ struct TableOutputs {
 };
 
 void add_table1(CLI::App& bench, int& exit_code) {
-    auto* cmd = bench.add_subcommand("table1", "Paper Table 1: the crowd's queries replayed by every tree type, plus frame stepping");
+    auto* cmd = bench.add_subcommand("table1", "Paper Table 1: the crowd's queries replayed by every method, plus frame stepping");
     auto o = std::make_shared<crowd::Table1Options>();
     auto world = std::make_shared<std::string>("30x40");
     auto outputs = std::make_shared<TableOutputs>();
@@ -47,6 +48,9 @@ void add_table1(CLI::App& bench, int& exit_code) {
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
     cmd->add_option("--passes", o->passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--nmin", o->n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    cmd->add_option("--slow-queries", o->slow_queries, "Brute force and FCL are timed on this many queries")
+        ->check(CLI::Range(1, 100000000))->capture_default_str();
+    cmd->add_option("--save-queries", o->save_queries, "Write the replayed queries there (for bench/callgrind_workload.sh)");
     cmd->add_flag("--quick", *quick, "Smoke run: 20 agents, 10 s, 1 pass");
     outputs->add_to(*cmd);
     cmd->callback([=, &exit_code] {
@@ -64,37 +68,110 @@ void add_table1(CLI::App& bench, int& exit_code) {
     });
 }
 
+// Options shared by table2, synth42 and synth120.
+void add_random_test_options(CLI::App& cmd, crowd::Table2Options& o) {
+    cmd.add_option("--graph", o.graph, "Motion graph JSON (for motion-graph sequences and the crowd's root-overlap share)");
+    cmd.add_option("--motions", o.motions, "Number of motions")->check(CLI::Range(1, 10000))->capture_default_str();
+    cmd.add_option("--tests", o.tests, "Random tests (the same for every method)")->check(CLI::Range(1, 100000000))
+        ->capture_default_str();
+    cmd.add_option("--fps", o.fps, "Resample the clips to this rate")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd.add_option("--root-share", o.root_share, "Target share of root overlaps (default: measured on a crowd run)");
+    cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
+    cmd.add_option("--passes", o.passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd.add_option("--nmin", o.n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    cmd.add_option("--slow-queries", o.slow_queries, "Brute force and FCL are timed on this many tests")
+        ->check(CLI::Range(1, 100000000))->capture_default_str();
+    cmd.add_option("--save-queries", o.save_queries, "Write the tests there (for bench/callgrind_workload.sh)");
+}
+
+// The run of table2 / synth42 / synth120 with the parsed options.
+void run_random_tests(crowd::Table2Options opt, bool quick, const TableOutputs& outputs, const std::string& label,
+                      std::ostream& out) {
+    if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
+    if (opt.root_share > 1) throw InputError("--root-share: must be at most 1");
+    if (quick) {
+        opt.tests = std::min(opt.tests, 2000);
+        opt.crowd_agents = 20;
+        opt.crowd_seconds = 10;
+        opt.passes = 1;
+        opt.slow_queries = std::min<std::size_t>(opt.slow_queries, 200);
+    }
+    outputs.write(crowd::run_table2(opt, {}, outputs.progress(label)), out);
+}
+
 void add_table2(CLI::App& bench, int& exit_code) {
-    auto* cmd = bench.add_subcommand("table2", "Paper Table 2: identical random tests on long motions, every tree type");
+    auto* cmd = bench.add_subcommand("table2", "Paper Table 2: identical random tests on long motions, every method");
     auto o = std::make_shared<crowd::Table2Options>();
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
-    cmd->add_option("--graph", o->graph, "Motion graph JSON (for --synth and the crowd's root-overlap share)");
+    add_random_test_options(*cmd, *o);
     cmd->add_flag("--synth", o->synth, "Motion-graph sequences instead of the longest clips of the data");
-    cmd->add_option("--motions", o->motions, "Number of motions")->check(CLI::Range(1, 10000))->capture_default_str();
     cmd->add_option("--synth-seconds", o->synth_seconds, "Length of each --synth sequence (s)")->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--tests", o->tests, "Random tests (the same for every method)")->check(CLI::Range(1, 100000000))
-        ->capture_default_str();
-    cmd->add_option("--fps", o->fps, "Resample the clips to this rate")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--root-share", o->root_share, "Target share of root overlaps (default: measured on a crowd run)");
-    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--passes", o->passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
-    cmd->add_option("--nmin", o->n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     cmd->add_flag("--quick", *quick, "Smoke run: 2,000 tests, a 20-agent 10 s crowd for the target share, 1 pass");
     outputs->add_to(*cmd);
     cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) { run_random_tests(*o, *quick, *outputs, "table2", out); });
+    });
+}
+
+// synth42 / synth120: Table 2's protocol on motion-graph sequences of `seconds` each.
+void add_synth(CLI::App& bench, int& exit_code, int seconds, int tests) {
+    const std::string name = "synth" + std::to_string(seconds);
+    auto* cmd = bench.add_subcommand(name, "Table 2's random tests on " + std::to_string(seconds) +
+                                               " s motion-graph sequences, every method");
+    auto o = std::make_shared<crowd::Table2Options>();
+    o->synth = true;
+    o->synth_seconds = seconds;
+    o->tests = tests;
+    o->workload = name;
+    auto outputs = std::make_shared<TableOutputs>();
+    auto quick = std::make_shared<bool>(false);
+    add_random_test_options(*cmd, *o);
+    cmd->add_flag("--quick", *quick, "Smoke run: 2,000 tests, a 20-agent 10 s crowd for the target share, 1 pass");
+    outputs->add_to(*cmd);
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) { run_random_tests(*o, *quick, *outputs, name, out); });
+    });
+}
+
+void add_scale(CLI::App& bench, int& exit_code) {
+    auto* cmd = bench.add_subcommand("scale", "The avoiding crowd at the paper's density for growing agent counts, 1 and all threads");
+    auto o = std::make_shared<crowd::ScaleOptions>();
+    auto outputs = std::make_shared<TableOutputs>();
+    auto quick = std::make_shared<bool>(false);
+    cmd->add_option("--graph", o->graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
+    cmd->add_option("--agents", o->agents, "Crowd sizes (the first is the reference)")->delimiter(',')->capture_default_str();
+    cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--area", o->area_per_agent, "Square metres per agent")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads of the parallel runs (0: all hardware threads)")
+        ->check(CLI::Range(0, 1024))->capture_default_str();
+    cmd->add_option("--repeats", o->repeats, "Runs per size and thread count (medians)")->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+    cmd->add_option("--save-queries", o->save_queries,
+                    "Write up to 5,000 queries of each size's crowd to FILE.<agents> (for bench/callgrind_workload.sh)");
+    cmd->add_flag("--quick", *quick, "Smoke run: 10 and 40 agents, 5 s, 1 repeat");
+    outputs->add_to(*cmd);
+    cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
-            crowd::Table2Options opt = *o;
+            crowd::ScaleOptions opt = *o;
             if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
-            if (opt.root_share > 1) throw InputError("--root-share: must be at most 1");
+            for (int n : opt.agents)
+                if (n < 1) throw InputError("--agents: every size must be at least 1");
             if (*quick) {
-                opt.tests = std::min(opt.tests, 2000);
-                opt.crowd_agents = 20;
-                opt.crowd_seconds = 10;
-                opt.passes = 1;
+                opt.agents = {10, 40};
+                opt.seconds = std::min(opt.seconds, 5.0);
+                opt.repeats = 1;
             }
-            outputs->write(crowd::run_table2(opt, {}, outputs->progress("table2")), out);
+            const crowd::ScaleTable t = crowd::run_scale(opt, outputs->progress("scale"));
+            if (!outputs->json.empty()) {
+                std::ofstream f(outputs->json);
+                f << crowd::scale_json(t);
+                if (!f) throw InputError(outputs->json + ": cannot write");
+            }
+            if (!outputs->png.empty()) crowd::write_scale_png(t, outputs->png);
+            out << crowd::scale_markdown(t);
         });
     });
 }
@@ -104,6 +181,9 @@ void add_bench(CLI::App& app, int& exit_code) {
     bench->require_subcommand(1);
     add_table1(*bench, exit_code);
     add_table2(*bench, exit_code);
+    add_synth(*bench, exit_code, 42, 20000);
+    add_synth(*bench, exit_code, 120, 10000);
+    add_scale(*bench, exit_code);
 }
 
 }  // namespace

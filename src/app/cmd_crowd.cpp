@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/worker_pool.h"
 
 namespace mobb::app {
 
@@ -63,6 +64,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
     auto select = std::make_shared<std::string>("avoid");
     auto record = std::make_shared<std::string>();
     auto o = std::make_shared<crowd::CrowdOptions>();
+    o->threads = crowd::WorkerPool::hardware_threads();
     auto tree = std::make_shared<TreeArgs>();
     auto quiet = std::make_shared<bool>(false);
     cmd->add_option("--graph", *graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
@@ -73,6 +75,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
     cmd->add_option("--select", *select, "Clip choice: avoid or random")->check(CLI::IsMember({"avoid", "random"}))
         ->capture_default_str();
     cmd->add_option("--cell", o->cell, "Broad-phase grid cell (metres)")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads for the choice points (the record is the same for any count)")
+        ->check(CLI::Range(1, 1024))->capture_default_str();
     cmd->add_option("--record", *record, "Write the record (JSON) to this file");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
@@ -93,8 +97,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 if (!f) throw InputError(*record + ": cannot write");
             }
             out << opt.agents << " agents, " << opt.width << " x " << opt.height << " m, " << opt.seconds << " s, seed "
-                << opt.seed << ", " << *select << ", tree " << tree->type << ", graph " << file << " (" << g.clips.size()
-                << " clips)\n"
+                << opt.seed << ", " << *select << ", tree " << tree->type << ", " << opt.threads << " threads, graph "
+                << file << " (" << g.clips.size() << " clips)\n"
                 << crowd::summary_text(run.summary);
         });
     });

@@ -6,8 +6,12 @@ namespace mobb {
 
 namespace {
 
-// At most this many time-aligned pairs: scanning them beats descending.
-constexpr std::int64_t kScanPairs = 48;
+// At most this many time-aligned pairs: scanning them beats descending. 200 covers every crowd
+// query (clips of ~60 samples: up to ~180 pairs over the candidate diagonals), where the scan's high
+// IPC ties collide_scan in time (48: 1.26x slower); on the longest clips 200 costs as many
+// instructions as 48, 600 costs 6 % more there and 20 % more on 42 s sequences (callgrind,
+// bench/crowd_callgrind.sh; times: micro_bench Issue5 interleaved).
+constexpr std::int64_t kScanPairs = 200;
 // A block at this level or below that may collide is scanned rather than split further: blocks
 // of 32 samples (fewer instructions per query than descending to 16 or scanning at 64, callgrind).
 constexpr int kScanLevel = 1;

@@ -76,51 +76,153 @@ std::vector<Tree> mobb_trees(const std::vector<Path>& clips, int n_min) {
 
 }  // namespace
 
-std::vector<MethodRow> time_methods(const QuerySet& set, const std::vector<std::unique_ptr<QueryMethod>>& methods,
-                                    int passes, const std::function<void(double)>& progress) {
-    const std::size_t n = set.queries.size();
-    std::vector<MethodRow> rows(methods.size());
-    std::vector<std::vector<bool>> answers(methods.size());
-    for (std::size_t m = 0; m < methods.size(); ++m) {
-        methods[m]->prepare(set.clips);
-        QueryStats st;
-        std::uint64_t pos = 0;
-        for (const BenchQuery& q : set.queries) {
-            const bool hit = methods[m]->query(q.a, q.pa, q.b, q.pb, &st);
-            answers[m].push_back(hit);
-            pos += hit;
-        }
-        MethodRow& r = rows[m];
-        r.method = methods[m]->name();
-        r.queries = n;
-        const double d = double(std::max<std::size_t>(1, n));
-        r.tests2d = double(st.tests2d) / d;
-        r.tests3d = double(st.tests3d) / d;
-        r.samples = double(st.samples) / d;
-        r.positive = double(pos) / d;
-        if (progress) progress(0.2 * double(m + 1) / double(methods.size()));
-    }
-    std::size_t ref = methods.size();
-    for (std::size_t m = 0; m < methods.size(); ++m)
-        if (rows[m].method == "brute force") ref = m;
-    if (ref < methods.size())
-        for (std::size_t m = 0; m < methods.size(); ++m)
-            for (std::size_t k = 0; k < n; ++k) rows[m].disagreements += answers[m][k] != answers[ref][k];
+namespace {
 
-    std::vector<std::vector<double>> times(methods.size());
-    volatile bool sink = false;
-    for (int p = 0; p < passes; ++p)
-        for (std::size_t m = 0; m < methods.size(); ++m) {
-            const auto t0 = Clock::now();
-            bool acc = false;
-            for (const BenchQuery& q : set.queries) acc ^= methods[m]->query(q.a, q.pa, q.b, q.pb, nullptr);
-            times[m].push_back(seconds_since(t0) * 1e6 / double(std::max<std::size_t>(1, n)));
-            sink = sink ^ acc;
-            if (progress) progress(0.2 + 0.8 * double(std::size_t(p) * methods.size() + m + 1) / double(std::size_t(passes) * methods.size()));
+// The untimed pass of one method: answers (the first `count` queries), tests, positives.
+MethodRow count_pass(const QuerySet& set, const QueryMethod& m, std::size_t count, std::vector<bool>& answers) {
+    QueryStats st;
+    std::uint64_t pos = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const BenchQuery& q = set.queries[k];
+        const bool hit = m.query(q.a, q.pa, q.b, q.pb, &st);
+        answers.push_back(hit);
+        pos += hit;
+    }
+    MethodRow r;
+    r.method = m.name();
+    r.queries = count;
+    const double d = double(std::max<std::size_t>(1, count));
+    r.tests2d = double(st.tests2d) / d;
+    r.tests3d = double(st.tests3d) / d;
+    r.samples = double(st.samples) / d;
+    r.positive = double(pos) / d;
+    r.note = m.note();
+    return r;
+}
+
+// One timed pass of one method over the first `count` queries: microseconds per query.
+double timed_pass(const QuerySet& set, const QueryMethod& m, std::size_t count) {
+    static volatile bool sink = false;
+    const auto t0 = Clock::now();
+    bool acc = false;
+    for (std::size_t k = 0; k < count; ++k) {
+        const BenchQuery& q = set.queries[k];
+        acc ^= m.query(q.a, q.pa, q.b, q.pb, nullptr);
+    }
+    const double us = seconds_since(t0) * 1e6 / double(std::max<std::size_t>(1, count));
+    sink = sink ^ acc;
+    return us;
+}
+
+// Disagreements with the brute-force row (over the queries both answered) and ratios to the mobb row.
+void compare_rows(std::vector<MethodRow>& rows, const std::vector<std::vector<bool>>& answers) {
+    std::size_t ref = rows.size(), fast = rows.size();
+    for (std::size_t m = 0; m < rows.size(); ++m) {
+        if (rows[m].method == "brute force") ref = m;
+        if (rows[m].method == "mobb" && rows[m].measured) fast = m;
+    }
+    for (std::size_t m = 0; m < rows.size(); ++m) {
+        if (ref < rows.size()) {
+            const std::size_t n = std::min(answers[m].size(), answers[ref].size());
+            for (std::size_t k = 0; k < n; ++k) {
+                rows[m].extra += answers[m][k] && !answers[ref][k];
+                rows[m].missed += !answers[m][k] && answers[ref][k];
+            }
+            rows[m].disagreements = rows[m].extra + rows[m].missed;
         }
-    for (std::size_t m = 0; m < methods.size(); ++m) rows[m].us_per_query = median(times[m]);
+        if (fast < rows.size() && rows[fast].us_per_query > 0 && rows[m].measured)
+            rows[m].x_mobb = rows[m].us_per_query / rows[fast].us_per_query;
+    }
+}
+
+}  // namespace
+
+std::vector<MethodRow> time_methods(const QuerySet& set, const std::vector<std::unique_ptr<QueryMethod>>& methods,
+                                    int passes, const std::function<void(double)>& progress, std::size_t slow_queries) {
+    const std::size_t n = set.queries.size(), nm = methods.size();
+    std::vector<MethodRow> rows(nm);
+    std::vector<std::vector<bool>> answers(nm);
+    std::vector<std::size_t> timed(nm, 0);
+    for (std::size_t m = 0; m < nm; ++m) {
+        const QueryMethod& qm = *methods[m];
+        if (!qm.unavailable().empty()) {
+            rows[m].method = qm.name();
+            rows[m].measured = false;
+            rows[m].note = qm.unavailable();
+            continue;
+        }
+        methods[m]->prepare(set.clips);
+        timed[m] = qm.slow() ? std::min(n, slow_queries) : n;
+        const bool reference = qm.name() == "brute force";
+        rows[m] = count_pass(set, qm, reference ? n : timed[m], answers[m]);
+        rows[m].timed_queries = timed[m];
+        if (timed[m] < n) rows[m].note += std::string(rows[m].note.empty() ? "" : "; ") + "timed on the first " +
+                                          std::to_string(timed[m]) + " queries";
+        if (progress) progress(0.2 * double(m + 1) / double(nm));
+    }
+    std::vector<std::vector<double>> times(nm);
+    for (int p = 0; p < passes; ++p)
+        for (std::size_t m = 0; m < nm; ++m) {
+            if (rows[m].measured) times[m].push_back(timed_pass(set, *methods[m], timed[m]));
+            if (progress) progress(0.2 + 0.8 * double(std::size_t(p) * nm + m + 1) / double(std::size_t(passes) * nm));
+        }
+    for (std::size_t m = 0; m < nm; ++m) rows[m].us_per_query = median(times[m]);
+    compare_rows(rows, answers);
     return rows;
 }
+
+namespace {
+
+const MethodRow* find_row(const BenchTable& t, const std::string& method) {
+    for (const MethodRow& r : t.rows)
+        if (r.method == method && r.measured && r.us_per_query > 0) return &r;
+    return nullptr;
+}
+
+// Target "mobb >= goal x faster than <peer>" from the table's rows.
+Target speed_target(const BenchTable& t, const std::string& peer, double goal) {
+    Target g;
+    g.what = "mobb >= " + fixed(goal, 0) + "x faster than " + peer;
+    g.goal = goal;
+    const MethodRow *m = find_row(t, "mobb"), *p = find_row(t, peer);
+    if (!m || !p) {
+        g.known = false;
+        g.detail = "no measured " + std::string(m ? peer : "mobb") + " row";
+        return g;
+    }
+    g.measured = p->us_per_query / m->us_per_query;
+    g.detail = fixed(p->us_per_query, 3) + " us / " + fixed(m->us_per_query, 3) + " us per query";
+    return g;
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 5's Table 1 targets; the crowd-against-frame-stepping one is per simulated second, on the
+// choice points of this run (the crowd's own CD time, CrowdSummary::cd_seconds).
+void add_table1_targets(BenchTable& t, const CrowdSummary& s, const FrameSteppingResult& fs, double seconds) {
+    t.targets.push_back(speed_target(t, "best scan", 1));
+    t.targets.push_back(speed_target(t, "MOBB 1 level", 4));
+    Target g;
+    g.what = "crowd CD time per simulated second >= 10x less than frame stepping on the same choice points";
+    g.goal = 10;
+    const double step = (fs.build_seconds + fs.check_seconds) / seconds;
+    const MethodRow* m = find_row(t, "mobb");
+    const double replay = m ? m->us_per_query * 1e-6 * double(m->queries) / seconds : 0;
+    g.detail = "frame stepping " + fixed(step * 1e3, 3) + " ms per simulated s; crowd cd_seconds " +
+               fixed(s.cd_seconds / seconds * 1e3, 3) + " ms per simulated s; mobb replay of the same queries " +
+               fixed(replay * 1e3, 3) + " ms per simulated s (narrow phase only, " + fixed(replay > 0 ? step / replay : 0, 1) + "x)";
+    if (s.cd_seconds > 0) {
+        g.measured = step / (s.cd_seconds / seconds);
+    } else {
+        g.known = false;
+        g.detail = "CrowdSummary::cd_seconds reads 0 (not measured by run_crowd yet); " + g.detail;
+    }
+    t.targets.push_back(g);
+}
+
+}  // namespace
 
 BenchTable run_table1(const Table1Options& o, std::vector<std::unique_ptr<QueryMethod>> extra,
                       const std::function<void(double)>& progress) {
@@ -141,14 +243,15 @@ BenchTable run_table1(const Table1Options& o, std::vector<std::unique_ptr<QueryM
     QuerySet set;
     for (const GraphClip& c : g.clips) set.clips.push_back(c.path);
     for (const LoggedQuery& q : run.queries) set.queries.push_back({q.clip_a, q.clip_b, q.pa, q.pb});
-    std::vector<std::unique_ptr<QueryMethod>> methods = paper_methods(o.n_min);
+    if (!o.save_queries.empty()) save_query_set(set, o.save_queries);
+    std::vector<std::unique_ptr<QueryMethod>> methods = bench_methods(o.n_min);
     for (auto& m : extra) methods.push_back(std::move(m));
 
     BenchTable t;
     t.workload = "table1";
     t.title = "Table 1: crowd workload (" + std::to_string(o.agents) + " agents, " + fixed(o.width, 0) + " x " +
               fixed(o.height, 0) + " m, " + fixed(o.seconds, 0) + " s, random selection)";
-    t.rows = time_methods(set, methods, o.passes, stage(progress, 0.1, 0.95));
+    t.rows = time_methods(set, methods, o.passes, stage(progress, 0.1, 0.95), o.slow_queries);
 
     const FrameSteppingResult fs = frame_stepping(g, run.record);
     MethodRow step;
@@ -159,7 +262,11 @@ BenchTable run_table1(const Table1Options& o, std::vector<std::unique_ptr<QueryM
     step.samples = double(fs.disk_tests) / nq;
     step.positive = fs.candidates ? double(fs.positive) / double(fs.candidates) : 0.0;
     step.disagreements = fs.disagreements;
+    step.extra = fs.only_stepping;
+    step.missed = fs.only_queries;
     step.note = "per candidate, not per query; time = (grid build + stepping) / queries";
+    step.timed_queries = step.queries;
+    if (const MethodRow* m = find_row(t, "mobb")) step.x_mobb = step.us_per_query / m->us_per_query;
     t.rows.push_back(step);
     if (progress) progress(1.0);
 
@@ -185,6 +292,7 @@ BenchTable run_table1(const Table1Options& o, std::vector<std::unique_ptr<QueryM
     t.notes["crowd simulation (MOBB queries, broad phase, bookkeeping)"] =
         fixed(s.seconds * 1e3, 1) + " ms, " + fixed(s.seconds * 1e6 / double(std::max<std::uint64_t>(1, s.choice_points)), 2) +
         " us per choice point";
+    add_table1_targets(t, run.summary, fs, o.seconds);
     t.notes["tree time per choice point (MOBB)"] = fixed(t.rows[2].us_per_query * nq / double(std::max<std::uint64_t>(1, s.choice_points)), 2) + " us";
     t.notes["frame stepping time per choice point"] = fixed((fs.build_seconds + fs.check_seconds) * 1e6 / double(std::max<std::uint64_t>(1, s.choice_points)), 2) + " us";
     t.notes["passes"] = std::to_string(o.passes);
@@ -266,10 +374,26 @@ std::vector<BenchQuery> random_tests(const std::vector<Path>& clips, double radi
 
 }  // namespace
 
+namespace {
+
+void add_table2_targets(BenchTable& t, const Table2Options& o) {
+    if (!o.synth) {
+        t.targets.push_back(speed_target(t, "best scan", 1));
+        t.targets.push_back(speed_target(t, "MOBB 1 level", 25));
+        t.targets.push_back(speed_target(t, "FCL", 20));
+    } else if (o.synth_seconds >= 100) {
+        t.targets.push_back(speed_target(t, "best scan", 8));
+    } else {
+        t.targets.push_back(speed_target(t, "best scan", 2));
+    }
+}
+
+}  // namespace
+
 BenchTable run_table2(const Table2Options& o, std::vector<std::unique_ptr<QueryMethod>> extra,
                       const std::function<void(double)>& progress) {
     BenchTable t;
-    t.workload = o.synth ? "table2 --synth" : "table2";
+    t.workload = !o.workload.empty() ? o.workload : o.synth ? "synth" + fixed(o.synth_seconds, 0) : "table2";
     const auto motions = table2_motions(o);
     if (motions.empty()) throw std::runtime_error("table2: no motions");
     QuerySet set;
@@ -319,10 +443,12 @@ BenchTable run_table2(const Table2Options& o, std::vector<std::unique_ptr<QueryM
     set.queries = random_tests(set.clips, radius, o.tests, o.seed);
     const double achieved = root_share(roots, set.queries);
     if (progress) progress(0.15);
+    if (!o.save_queries.empty()) save_query_set(set, o.save_queries);
 
-    std::vector<std::unique_ptr<QueryMethod>> methods = paper_methods(o.n_min);
+    std::vector<std::unique_ptr<QueryMethod>> methods = bench_methods(o.n_min);
     for (auto& m : extra) methods.push_back(std::move(m));
-    t.rows = time_methods(set, methods, o.passes, stage(progress, 0.15, 1.0));
+    t.rows = time_methods(set, methods, o.passes, stage(progress, 0.15, 1.0), o.slow_queries);
+    add_table2_targets(t, o);
     t.title = std::string("Table 2: ") + (o.synth ? "motion-graph sequences" : "longest clips") + " (" +
               std::to_string(motions.size()) + " motions, mean " + fixed(total / double(motions.size()), 1) + " s, " +
               std::to_string(o.tests) + " identical random tests)";
@@ -337,43 +463,6 @@ BenchTable run_table2(const Table2Options& o, std::vector<std::unique_ptr<QueryM
     add_machine_notes(t);
     if (progress) progress(1.0);
     return t;
-}
-
-std::string table_markdown(const BenchTable& t) {
-    std::ostringstream out;
-    out << "### " << t.title << "\n\n"
-        << "| Method | Time (us) | #2D | #3D | #sample | positive | differs from brute force |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|\n";
-    for (const MethodRow& r : t.rows)
-        out << "| " << r.method << " | " << fixed(r.us_per_query, 3) << " | " << fixed(r.tests2d, 2) << " | "
-            << fixed(r.tests3d, 2) << " | " << fixed(r.samples, 2) << " | " << fixed(100.0 * r.positive, 1) << " % | "
-            << r.disagreements << (r.note.empty() ? "" : " (" + r.note + ")") << " |\n";
-    out << "\n";
-    for (const auto& [k, v] : t.notes) out << "- " << k << ": " << v << "\n";
-    return out.str();
-}
-
-std::string table_json(const BenchTable& t) {
-    nlohmann::ordered_json j;
-    j["workload"] = t.workload;
-    j["title"] = t.title;
-    nlohmann::ordered_json notes = nlohmann::ordered_json::object();
-    for (const auto& [k, v] : t.notes) notes[k] = v;
-    j["notes"] = notes;
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    for (const MethodRow& r : t.rows)
-        rows.push_back({{"method", r.method}, {"us_per_query", rounded(r.us_per_query, 4)}, {"tests2d", rounded(r.tests2d, 4)},
-                        {"tests3d", rounded(r.tests3d, 4)}, {"samples", rounded(r.samples, 4)},
-                        {"positive", rounded(r.positive, 6)}, {"queries", r.queries}, {"disagreements", r.disagreements},
-                        {"note", r.note}});
-    j["rows"] = rows;
-    return readable_json(j);
-}
-
-void write_table_png(const BenchTable& t, const std::string& file) {
-    std::vector<Bar> bars;
-    for (const MethodRow& r : t.rows) bars.push_back({r.method, r.us_per_query});
-    write_bar_chart(file, t.title, bars, "us/query");
 }
 
 }  // namespace mobb::crowd

@@ -10,55 +10,90 @@ BroadPhase::BroadPhase(double cell) : cell_(cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
 
+BroadPhase::BroadPhase(double cell, double width, double height) : BroadPhase(cell) {
+    if (!(width >= 0) || !(height >= 0)) throw std::invalid_argument("broad phase: negative world size");
+    // A huge world would make a huge array: then every cell is hashed.
+    if ((width / cell + 1) * (height / cell + 1) > double(kMaxFlatCells)) return;
+    nx_ = index(width) + 1;
+    ny_ = index(height) + 1;
+    flat_.resize(std::size_t(nx_ * ny_));
+}
+
+std::int64_t BroadPhase::index(double x) const { return std::int64_t(std::floor(x / cell_)); }
+
+BroadPhase::Cell& BroadPhase::cell(std::int64_t ix, std::int64_t iy) {
+    if (0 <= ix && ix < nx_ && 0 <= iy && iy < ny_) return flat_[std::size_t(ix * ny_ + iy)];
+    return hashed_[key(ix, iy)];
+}
+
+const BroadPhase::Cell* BroadPhase::find(std::int64_t ix, std::int64_t iy) const {
+    if (0 <= ix && ix < nx_ && 0 <= iy && iy < ny_) return &flat_[std::size_t(ix * ny_ + iy)];
+    const auto it = hashed_.find(key(ix, iy));
+    return it == hashed_.end() ? nullptr : &it->second;
+}
+
 template <class F>
 void BroadPhase::cells(const SpaceTimeBox& box, F&& f) const {
-    const auto ix0 = std::int64_t(std::floor(box.x0 / cell_)), ix1 = std::int64_t(std::floor(box.x1 / cell_));
-    const auto iy0 = std::int64_t(std::floor(box.y0 / cell_)), iy1 = std::int64_t(std::floor(box.y1 / cell_));
+    const std::int64_t ix0 = index(box.x0), ix1 = index(box.x1), iy0 = index(box.y0), iy1 = index(box.y1);
     for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-        for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(key(ix, iy));
+        for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(ix, iy);
 }
 
 void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     if (id < 0) throw std::invalid_argument("broad phase: negative id");
-    if (std::size_t(id) >= items_.size()) {
-        items_.resize(std::size_t(id) + 1);
-        stamp_.resize(std::size_t(id) + 1, 0);
-    }
-    Item& item = items_[std::size_t(id)];
-    if (item.live) remove(id);
-    item = {box, owner, true};
+    if (std::size_t(id) >= items_.size()) items_.resize(std::size_t(id) + 1);
+    if (items_[std::size_t(id)].live) remove(id);
+    if (box.f1 <= expired_) return;
+    items_[std::size_t(id)] = {box, owner, true};
     ++live_;
-    cells(box, [&](std::uint64_t k) { grid_[k].push_back(id); });
+    ends_.emplace(box.f1, id);
+    const std::int64_t expired = expired_;
+    cells(box, [&](std::int64_t ix, std::int64_t iy) {
+        Cell& c = cell(ix, iy);
+        c.erase(std::remove_if(c.begin(), c.end(), [expired](const Entry& e) { return e.box.f1 <= expired; }), c.end());
+        c.push_back({box, id, owner});
+    });
+}
+
+void BroadPhase::expire(std::int64_t frame) {
+    expired_ = std::max(expired_, frame);
+    for (; !ends_.empty() && ends_.top().first <= expired_; ends_.pop()) {
+        Item& item = items_[std::size_t(ends_.top().second)];
+        // A removed item, or one inserted again since, is not this entry's to expire.
+        if (item.live && item.box.f1 <= expired_) {
+            item.live = false;
+            --live_;
+        }
+    }
 }
 
 void BroadPhase::remove(int id) {
     if (id < 0 || std::size_t(id) >= items_.size() || !items_[std::size_t(id)].live) return;
     Item& item = items_[std::size_t(id)];
-    cells(item.box, [&](std::uint64_t k) {
-        auto it = grid_.find(k);
-        if (it == grid_.end()) return;
-        auto& v = it->second;
-        v.erase(std::remove(v.begin(), v.end(), id), v.end());
-        if (v.empty()) grid_.erase(it);
+    cells(item.box, [&](std::int64_t ix, std::int64_t iy) {
+        Cell& v = cell(ix, iy);
+        v.erase(std::remove_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; }), v.end());
     });
     item.live = false;
     --live_;
 }
 
-void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) {
+void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {
     out.clear();
-    ++query_;
-    cells(box, [&](std::uint64_t k) {
-        const auto it = grid_.find(k);
-        if (it == grid_.end()) return;
-        for (int id : it->second) {
-            if (stamp_[std::size_t(id)] == query_) continue;
-            stamp_[std::size_t(id)] = query_;
-            const Item& item = items_[std::size_t(id)];
-            if (item.owner != owner && item.box.overlaps(box)) out.push_back(id);
+    cells(box, [&](std::int64_t ix, std::int64_t iy) {
+        const Cell* c = find(ix, iy);
+        if (!c) return;
+        for (const Entry& e : *c) {
+            if (e.owner == owner || e.box.f1 <= expired_ || !e.box.overlaps(box)) continue;
+            // An item spans several cells: report it only from the cell holding the lower corner of
+            // the two boxes' intersection, which both cover. No visited marks, so the query is const.
+            if (index(std::max(e.box.x0, box.x0)) != ix || index(std::max(e.box.y0, box.y0)) != iy) continue;
+            out.push_back(e.id);
         }
     });
     std::sort(out.begin(), out.end());
+    // Two far cells may share a hash key; then an item could be met twice in one array.
+    out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 }  // namespace mobb::crowd

@@ -4,13 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <queue>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "choice.h"
 #include "mobb/crowd/broad_phase.h"
+#include "mobb/crowd/worker_pool.h"
 #include "random.h"
 
 namespace mobb::crowd {
@@ -19,183 +20,150 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A candidate clip placed in the world: its space-time box and whether it stays inside.
-struct Placed {
-    int clip = 0;
-    Placement place;
-    SpaceTimeBox box;
-    bool outside = false;
-    double excess = 0;  // metres farther outside than at the start (ranks fallbacks)
-};
+using Clock = std::chrono::steady_clock;
 
-// How far a point is outside the world rectangle (0 inside), metres.
-double excursion(double x, double y, const CrowdOptions& o) {
-    return std::max({0.0, -x, x - o.width, -y, y - o.height});
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void check(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o) {
+    if (o.agents < 1 || !(o.seconds > 0) || !(o.width > 0) || !(o.height > 0))
+        throw std::invalid_argument("crowd: agents, seconds and the world must be positive");
+    if (o.threads < 1) throw std::invalid_argument("crowd: threads must be at least 1");
+    if (trees.size() != g.clips.size()) throw std::invalid_argument("crowd: one tree per graph clip expected");
 }
 
-// A candidate "leaves the world" when its root goes farther outside the rectangle than where it
-// starts, so an agent pushed out by a fallback may walk back in.
-Placed place_clip(const MotionGraph& g, int clip, const Placement& p, std::int64_t frame, const CrowdOptions& o) {
-    Placed out{clip, p, {}, false, 0.0};
-    const Rigid2 m = Rigid2::of(p);
-    const Path& path = g.clips[std::size_t(clip)].path;
-    out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + std::int64_t(path.size())};
-    const double start = excursion(p.x, p.y, o);
-    for (const Sample& s : path.samples) {
-        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
-        out.box.x0 = std::min(out.box.x0, x - s.r);
-        out.box.y0 = std::min(out.box.y0, y - s.r);
-        out.box.x1 = std::max(out.box.x1, x + s.r);
-        out.box.y1 = std::max(out.box.y1, y + s.r);
-        out.excess = std::max(out.excess, excursion(x, y, o) - start);
-    }
-    out.outside = out.excess > 0;
-    return out;
-}
-
-// One choice point's search, with the simulation's state it needs.
+// The simulation: frames in order; the choice points of one frame form a batch, evaluated in parallel
+// against the state at the start of the frame, then committed in agent order. A choice that a commit
+// earlier in its batch could have changed is evaluated again before its own commit, so the outcome is
+// that of running the choice points one by one in (frame, agent) order, for any number of threads.
 class Simulation {
 public:
     Simulation(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o)
-        : g_(g), trees_(trees), o_(o), rng_(o.seed), broad_(o.cell) {}
+        : g_(g), trees_(trees), o_(o), pool_(o.threads), broad_(o.cell, o.width, o.height), chosen_(o.cell, o.width, o.height) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
 
 private:
-    struct Agent {
-        std::vector<PlacedClip> clips;
-        Placement start;
-    };
-
+    CrowdState state() const { return {g_, trees_, o_, broad_, agents_, handles_}; }
+    double max_radius() const;
     void place_agents();
-    void choose(int agent, std::int64_t frame);
-    int count_hits(ChoicePoint& cp, int index, const Placed& c, const std::vector<int>& near, bool stop_at_hit);
-    void commit(int agent, const Placed& c, bool fallback);
+    void run_frames(const std::function<void(double)>& progress);
+    void run_batch(std::int64_t frame, const std::vector<int>& batch);
+    void commit(Choice& c);
+    void log_queries(const Choice& c);
     void fill_samples();
 
     const MotionGraph& g_;
     const std::vector<Tree>& trees_;
     const CrowdOptions& o_;
-    Random rng_;
-    BroadPhase broad_;
+    WorkerPool pool_;
+    BroadPhase broad_;                             // committed clips still playing
+    BatchGrid chosen_;                             // the clips chosen by the current batch, by position
+    std::vector<char> stale_;                      // per position: a clip chosen before may change it
+    std::vector<SpaceTimeBox> moved_;             // new boxes of clips chosen differently on re-evaluation
     std::vector<Agent> agents_;
-    std::vector<std::pair<int, int>> handles_;  // broad-phase id -> (agent, clip index)
-    std::priority_queue<std::pair<std::int64_t, int>, std::vector<std::pair<std::int64_t, int>>, std::greater<>> expiry_;
+    std::vector<std::pair<int, int>> handles_;     // broad-phase id -> (agent, clip index)
+    std::vector<std::vector<int>> due_;            // per frame: agents at a choice point
+    std::vector<Choice> slots_;                    // one per choice point of a batch, reused
     CrowdRun out_;
-    std::vector<int> near_;
 };
 
-void Simulation::place_agents() {
+double Simulation::max_radius() const {
     double rmax = 0;
     for (const GraphClip& c : g_.clips)
         for (const Sample& s : c.path.samples) rmax = std::max(rmax, s.r);
-    if (o_.width <= 2 * rmax || o_.height <= 2 * rmax) throw std::invalid_argument("crowd: world smaller than an agent");
+    return rmax;
+}
+
+// Random positions, rejected when closer than 2 r_max to an agent placed before. Placed agents are
+// kept in a grid of cells at least 2 r_max wide, so a test reads the 3 x 3 cells around the position.
+void Simulation::place_agents() {
+    const double rmax = max_radius(), gap = 2 * rmax;
+    if (o_.width <= gap || o_.height <= gap) throw std::invalid_argument("crowd: world smaller than an agent");
+    const double cell = std::max(gap, std::sqrt(o_.width * o_.height / double(o_.agents)));
+    const int nx = int(o_.width / cell) + 1, ny = int(o_.height / cell) + 1;
+    std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));
+    auto cell_of = [&](double v, int n) { return std::clamp(int(v / cell), 0, n - 1); };
+    auto free_at = [&](const Placement& p) {
+        const int cx = cell_of(p.x, nx), cy = cell_of(p.y, ny);
+        for (int ix = std::max(0, cx - 1); ix <= std::min(nx - 1, cx + 1); ++ix)
+            for (int iy = std::max(0, cy - 1); iy <= std::min(ny - 1, cy + 1); ++iy)
+                for (int b : grid[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)]) {
+                    const Placement& q = agents_[std::size_t(b)].start;
+                    if (!(std::hypot(q.x - p.x, q.y - p.y) >= gap)) return false;
+                }
+        return true;
+    };
+    Random rng(o_.seed);
     for (int a = 0; a < o_.agents; ++a) {
         Placement p;
         bool ok = false;
         for (int attempt = 0; attempt < 100000 && !ok; ++attempt) {
-            p = {rng_.uniform(rmax, o_.width - rmax), rng_.uniform(rmax, o_.height - rmax), rng_.uniform(-kPi, kPi), 0.0};
-            ok = std::all_of(agents_.begin(), agents_.end(), [&](const Agent& b) {
-                return std::hypot(b.start.x - p.x, b.start.y - p.y) >= 2 * rmax;
-            });
+            p = {rng.uniform(rmax, o_.width - rmax), rng.uniform(rmax, o_.height - rmax), rng.uniform(-kPi, kPi), 0.0};
+            ok = free_at(p);
         }
         if (!ok) throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
-                                             std::to_string(2 * rmax) + " m apart in the world");
-        agents_.push_back({{}, p});
+                                             std::to_string(gap) + " m apart in the world");
+        grid[std::size_t(cell_of(p.x, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y, ny))].push_back(a);
+        agents_.push_back({p, {}});
     }
 }
 
-int Simulation::count_hits(ChoicePoint& cp, int index, const Placed& c, const std::vector<int>& near, bool stop_at_hit) {
-    Candidate& cand = cp.candidates[std::size_t(index)];
-    cand.queries = 0;  // a fallback reruns a candidate's queries in full: keep only the full list
-    cand.against.clear();
-    int hits = 0;
-    for (int id : near) {
-        const auto [b, k] = handles_[std::size_t(id)];
-        const PlacedClip& other = agents_[std::size_t(b)].clips[std::size_t(k)];
-        QueryStats st;
-        const bool hit = collide(trees_[std::size_t(c.clip)], c.place, trees_[std::size_t(other.clip)], other.place, &st);
-        ++cand.queries;
-        cand.against.push_back({b, k, hit});
-        ++cp.queries;
-        cp.tests2d += st.tests2d;
-        cp.tests3d += st.tests3d;
-        cp.samples += st.samples;
-        CrowdSummary& s = out_.summary;
-        if (!hit && st.tests2d + st.tests3d <= 1 && st.samples == 0) ++s.root_rejected;
-        if (o_.log_queries)
-            out_.queries.push_back({int(out_.record.choices.size()), index, c.clip, other.clip, c.place, other.place, hit});
-        if (hit) {
-            ++hits;
-            if (stop_at_hit) break;
+// Four steps, the same for any number of threads: (1) every choice point of the frame is evaluated
+// against the clips committed before the frame (in parallel); (2) the clips they chose are gathered;
+// (3) each choice point checks whether a clip chosen before it in the frame could have changed its
+// evaluation (in parallel); (4) in agent order, such choice points are evaluated again against the
+// clips committed so far, which also catches clips that changed in a re-evaluation, then each commits.
+void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
+    const std::size_t n = batch.size();
+    if (slots_.size() < n) slots_.resize(n);
+    const CrowdState s = state();
+    pool_.for_each(n, [&](std::size_t i, int) {
+        slots_[i].prepare(s, batch[i], frame);
+        slots_[i].evaluate(s);
+    });
+    chosen_.clear();
+    for (std::size_t i = 0; i < n; ++i) chosen_.add(int(i), slots_[i].taken().box);
+    stale_.assign(n, 0);
+    pool_.for_each(n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
+    moved_.clear();  // clips chosen again differently: the grid holds their old boxes
+    for (std::size_t i = 0; i < n; ++i) {
+        Choice& c = slots_[i];
+        const auto near = [&](const SpaceTimeBox& b) { return c.affected_by(b); };
+        if (stale_[i] || std::any_of(moved_.begin(), moved_.end(), near)) {
+            const int before = c.taken().clip;
+            c.evaluate(s);
+            ++out_.summary.reevaluated;
+            if (c.taken().clip != before) moved_.push_back(c.taken().box);
         }
+        commit(c);
     }
-    cand.hits = hits;
-    return hits;
 }
 
-void Simulation::commit(int agent, const Placed& c, bool fallback) {
-    Agent& a = agents_[std::size_t(agent)];
-    const int id = int(handles_.size());
-    a.clips.push_back({c.clip, c.box.f0, c.place, fallback, std::int64_t(out_.record.choices.size())});
-    handles_.emplace_back(agent, int(a.clips.size()) - 1);
-    broad_.insert(id, agent, c.box);
-    expiry_.emplace(c.box.f1, id);
+void Simulation::log_queries(const Choice& c) {
+    const int choice = int(out_.record.choices.size());
+    for (const auto& [k, a] : c.log()) {
+        const Placed& cand = c.candidate(k);
+        const auto [b, index] = handles_[std::size_t(a.id)];
+        const PlacedClip& other = agents_[std::size_t(b)].clips[std::size_t(index)];
+        out_.queries.push_back({choice, k, cand.clip, other.clip, cand.place, other.place, a.hit});
+    }
 }
 
-void Simulation::choose(int agent, std::int64_t frame) {
-    Agent& a = agents_[std::size_t(agent)];
-    std::vector<int> order;
-    Placement base = a.start;
-    if (a.clips.empty()) {
-        order = g_.clips[std::size_t(rng_.below(int(g_.clips.size())))].successors;
-    } else {
-        const PlacedClip& last = a.clips.back();
-        order = g_.clips[std::size_t(last.clip)].successors;
-        base = g_.next(last.place, last.clip);
-    }
-    base.t0 = double(frame) * g_.dt();  // on the global grid, not accumulated
-    for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng_.below(int(k)))]);
-
-    ChoicePoint cp;
-    cp.agent = agent;
-    cp.frame = frame;
-    const bool random = o_.select == Selection::Random;
-    std::vector<Placed> placed;
-    std::vector<std::vector<int>> nears;
-    int taken = -1;
-    for (int clip : order) {
-        placed.push_back(place_clip(g_, clip, base, frame, o_));
-        const Placed& c = placed.back();
-        cp.candidates.push_back({clip, c.outside, 0, 0, {}});
-        broad_.query(c.box, agent, near_);
-        nears.push_back(near_);
-        out_.summary.time_pairs += broad_.size();
-        cp.pruned += broad_.size() - near_.size();
-        if (!random && c.outside) continue;  // dropped without queries
-        const int hits = count_hits(cp, int(placed.size()) - 1, c, near_, !random);
-        if (!random && hits == 0) {
-            taken = int(placed.size()) - 1;
-            break;
-        }
-    }
-    if (random) {
-        taken = rng_.below(int(placed.size()));
-    } else if (taken < 0) {  // every candidate failed: count all collisions, take the fewest, then the least far out
-        cp.fallback = true;
-        for (std::size_t k = 0; k < placed.size(); ++k) count_hits(cp, int(k), placed[k], nears[k], false);
-        taken = 0;
-        for (std::size_t k = 1; k < placed.size(); ++k) {
-            const Candidate &x = cp.candidates[k], &y = cp.candidates[std::size_t(taken)];
-            if (std::make_pair(x.hits, placed[k].excess) < std::make_pair(y.hits, placed[std::size_t(taken)].excess))
-                taken = int(k);
-        }
-        ++out_.summary.fallbacks;
-        if (placed[std::size_t(taken)].outside) ++out_.summary.outside;
-    }
-    cp.taken = placed[std::size_t(taken)].clip;
-    commit(agent, placed[std::size_t(taken)], cp.fallback);
+void Simulation::commit(Choice& c) {
+    ChoicePoint& cp = c.point();
     CrowdSummary& s = out_.summary;
+    // Every clip live now overlaps the candidates in time (it started before and ends after).
+    const std::uint64_t pairs = broad_.size() * std::uint64_t(c.queried());
+    cp.pruned = pairs - c.near_total();
+    s.time_pairs += pairs;
+    if (o_.log_queries) log_queries(c);
+    const Placed& taken = c.taken();
+    Agent& a = agents_[std::size_t(c.agent())];
+    const int id = int(handles_.size());
+    a.clips.push_back({taken.clip, taken.box.f0, taken.place, cp.fallback, std::int64_t(out_.record.choices.size())});
+    handles_.emplace_back(c.agent(), int(a.clips.size()) - 1);
+    broad_.insert(id, c.agent(), taken.box);
+    if (taken.box.f1 < std::int64_t(due_.size())) due_[std::size_t(taken.box.f1)].push_back(c.agent());
     ++s.choice_points;
     s.candidates += cp.candidates.size();
     s.queries += cp.queries;
@@ -203,30 +171,60 @@ void Simulation::choose(int agent, std::int64_t frame) {
     s.tests3d += cp.tests3d;
     s.samples += cp.samples;
     s.pruned += cp.pruned;
-    for (const Candidate& c : cp.candidates) s.hits += std::uint64_t(c.hits);
+    s.root_rejected += c.root_rejected();
+    for (const Candidate& k : cp.candidates) s.hits += std::uint64_t(k.hits);
+    if (cp.fallback) {
+        ++s.fallbacks;
+        if (taken.outside) ++s.outside;
+    }
     out_.record.choices.push_back(std::move(cp));
 }
 
-void Simulation::fill_samples() {
-    for (std::size_t a = 0; a < agents_.size(); ++a) {
-        AgentTrack& t = out_.record.tracks[a];
-        t.clips = agents_[a].clips;
-        std::size_t k = 0;
-        for (std::int64_t f = 0; f < out_.record.frames; ++f) {
-            while (k + 1 < t.clips.size() && t.clips[k + 1].start <= f) ++k;
-            const PlacedClip& c = t.clips[k];
-            const Sample& s = g_.clips[std::size_t(c.clip)].path.samples[std::size_t(f - c.start)];
-            const Rigid2 m = Rigid2::of(c.place);  // the core's own transform, so the check rounds as the queries do
-            t.samples.push_back({double(f) * g_.dt(), m.apply_x(s.x, s.y), m.apply_y(s.x, s.y), s.r});
+void Simulation::run_frames(const std::function<void(double)>& progress) {
+    const std::int64_t frames = out_.record.frames;
+    due_.assign(std::size_t(frames), {});
+    for (int a = 0; a < o_.agents; ++a) due_[0].push_back(a);
+    // About agents x frames / mean clip length choice points: reserving saves moving them while committing.
+    std::size_t samples = 0;
+    for (const GraphClip& c : g_.clips) samples += c.path.size();
+    const double expected = double(o_.agents) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
+    out_.record.choices.reserve(std::size_t(expected * 1.2));
+    handles_.reserve(std::size_t(expected * 1.2));
+    std::int64_t reported = -1;
+    for (std::int64_t f = 0; f < frames; ++f) {
+        std::vector<int> batch = std::move(due_[std::size_t(f)]);
+        if (batch.empty()) continue;
+        std::sort(batch.begin(), batch.end());  // commit order: agent ids within a frame
+        const auto start = Clock::now();
+        broad_.expire(f);  // clips ending by now cannot overlap a candidate starting now
+        run_batch(f, batch);
+        out_.summary.cd_seconds += since(start);
+        if (progress && f / 30 != reported) {
+            reported = f / 30;
+            progress(double(f) / double(frames));
         }
     }
 }
 
+void Simulation::fill_samples() {
+    const std::int64_t frames = out_.record.frames;
+    pool_.for_each(agents_.size(), [&](std::size_t a, int) {
+        AgentTrack& t = out_.record.tracks[a];
+        t.clips = std::move(agents_[a].clips);
+        t.samples.reserve(std::size_t(frames));
+        std::size_t k = 0;
+        Rigid2 m = Rigid2::of(t.clips[0].place);  // the core's own transform, so the check rounds as the queries do
+        for (std::int64_t f = 0; f < frames; ++f) {
+            if (k + 1 < t.clips.size() && t.clips[k + 1].start <= f) m = Rigid2::of(t.clips[++k].place);
+            const PlacedClip& c = t.clips[k];
+            const Sample& s = g_.clips[std::size_t(c.clip)].path.samples[std::size_t(f - c.start)];
+            t.samples.push_back({double(f) * g_.dt(), m.apply_x(s.x, s.y), m.apply_y(s.x, s.y), s.r});
+        }
+    });
+}
+
 CrowdRun Simulation::run(const std::function<void(double)>& progress) {
-    const auto start = std::chrono::steady_clock::now();
-    if (o_.agents < 1 || !(o_.seconds > 0) || !(o_.width > 0) || !(o_.height > 0))
-        throw std::invalid_argument("crowd: agents, seconds and the world must be positive");
-    if (trees_.size() != g_.clips.size()) throw std::invalid_argument("crowd: one tree per graph clip expected");
+    const auto start = Clock::now();
     Record& r = out_.record;
     r.dt = g_.dt();
     r.frames = std::max<std::int64_t>(1, std::llround(o_.seconds / r.dt));
@@ -235,31 +233,17 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     r.seed = o_.seed;
     r.select = to_string(o_.select);
     r.tracks.resize(std::size_t(o_.agents));
+    CrowdSummary& s = out_.summary;
+    s.agents = std::uint64_t(o_.agents);
+    s.simulated_seconds = double(r.frames) * r.dt;
+    s.threads = o_.threads;
     place_agents();
-    std::priority_queue<std::pair<std::int64_t, int>, std::vector<std::pair<std::int64_t, int>>, std::greater<>> events;
-    for (int a = 0; a < o_.agents; ++a) events.emplace(0, a);
-    std::int64_t reported = -1;
-    while (!events.empty()) {
-        const auto [frame, agent] = events.top();
-        events.pop();
-        while (!expiry_.empty() && expiry_.top().first <= frame) {
-            broad_.remove(expiry_.top().second);
-            expiry_.pop();
-        }
-        choose(agent, frame);
-        const std::int64_t end = agents_[std::size_t(agent)].clips.back().start +
-                                 std::int64_t(g_.clips[std::size_t(agents_[std::size_t(agent)].clips.back().clip)].path.size());
-        if (end < r.frames) events.emplace(end, agent);
-        if (progress && frame / 30 != reported) {
-            reported = frame / 30;
-            progress(double(frame) / double(r.frames));
-        }
-    }
+    run_frames(progress);
     fill_samples();
-    out_.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    s.seconds = since(start);
     for (const Contact& c : frame_contacts(r)) {
-        ++out_.summary.contacts;
-        if (!c.excused) ++out_.summary.contacts_unexcused;
+        ++s.contacts;
+        if (!c.excused) ++s.contacts_unexcused;
     }
     if (progress) progress(1.0);
     return std::move(out_);
@@ -286,7 +270,13 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 
 CrowdRun run_crowd(const MotionGraph& graph, const std::vector<Tree>& trees, const CrowdOptions& options,
                    const std::function<void(double)>& progress) {
+    check(graph, trees, options);
     return Simulation(graph, trees, options).run(progress);
+}
+
+double CrowdSummary::cd_us_per_agent_second() const {
+    const double n = double(agents) * simulated_seconds;
+    return n > 0 ? cd_seconds * 1e6 / n : 0.0;
 }
 
 std::string summary_json(const CrowdSummary& s) {
@@ -305,7 +295,11 @@ std::string summary_json(const CrowdSummary& s) {
     j["fallbacks_outside_world"] = s.outside;
     j["contacts"] = s.contacts;
     j["contacts_outside_fallbacks"] = s.contacts_unexcused;
+    j["reevaluated"] = s.reevaluated;
+    j["threads"] = s.threads;
     j["simulation_seconds"] = s.seconds;
+    j["cd_seconds"] = s.cd_seconds;
+    j["cd_us_per_agent_second"] = s.cd_us_per_agent_second();
     return j.dump();
 }
 
@@ -320,7 +314,10 @@ std::string summary_text(const CrowdSummary& s) {
         << "fallbacks                " << s.fallbacks << " (" << s.outside << " leaving the world)\n"
         << "contacts (frame check)   " << s.contacts << " agent-pair frames, " << s.contacts_unexcused
         << " outside fallbacks\n"
-        << "simulation time          " << s.seconds << " s\n";
+        << "re-evaluated choices     " << s.reevaluated << " (a commit earlier in the frame was near)\n"
+        << "simulation time          " << s.seconds << " s (" << s.threads << " threads)\n"
+        << "collision detection      " << s.cd_seconds << " s, " << s.cd_us_per_agent_second()
+        << " us per agent per simulated s\n";
     return out.str();
 }
 

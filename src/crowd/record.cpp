@@ -13,55 +13,113 @@ namespace mobb::crowd {
 
 namespace {
 
-struct Cell {
-    std::int64_t ix, iy;
-    int agent;
-    bool operator<(const Cell& o) const { return ix != o.ix ? ix < o.ix : iy != o.iy ? iy < o.iy : agent < o.agent; }
-};
-
 // Whether agent a plays a fallback clip at frame f (clips are in time order).
 bool fallback_at(const AgentTrack& t, std::int64_t f) {
     auto it = std::upper_bound(t.clips.begin(), t.clips.end(), f, [](std::int64_t x, const PlacedClip& c) { return x < c.start; });
     return it != t.clips.begin() && std::prev(it)->fallback;
 }
 
+// The agents of one frame sorted into a flat grid over their bounding rectangle (a counting sort, so
+// linear in the agents), their disks stored in cell order so that scans read contiguous memory. Cells
+// are wider than any contact distance, so contacts are between agents of neighbouring cells, and there
+// are at most about 2 n cells however far agents stray.
+class FrameGrid {
+public:
+    struct Disk {
+        double x, y, r;
+        int agent;
+    };
+
+    /// Sorts the disks of one frame, `frame[a]` for agent a (frame[a].agent == a).
+    void build(const Disk* frame, std::size_t n, double reach) {
+        x0_ = y0_ = 1e300;
+        double x1 = -1e300, y1 = -1e300;
+        for (std::size_t a = 0; a < n; ++a)
+            x0_ = std::min(x0_, frame[a].x), y0_ = std::min(y0_, frame[a].y), x1 = std::max(x1, frame[a].x), y1 = std::max(y1, frame[a].y);
+        const double w = x1 - x0_, h = y1 - y0_, count = double(n);
+        // The margin keeps rounding of (x - x0) / cell from putting two agents closer than `reach` two
+        // cells apart.
+        cell_ = std::max({reach * (1 + 1e-9), std::sqrt(w * h / count), (w + h) / count, 1e-6});
+        nx_ = int(w / cell_) + 1, ny_ = int(h / cell_) + 1;
+        cell_of_.resize(n);
+        first_.assign(std::size_t(nx_) * std::size_t(ny_) + 1, 0);
+        for (std::size_t a = 0; a < n; ++a) {
+            cell_of_[a] = cell(column(frame[a].x - x0_, nx_), column(frame[a].y - y0_, ny_));
+            ++first_[cell_of_[a] + 1];
+        }
+        for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+        disks_.resize(n);
+        fill_.assign(first_.begin(), first_.end() - 1);
+        for (std::size_t a = 0; a < n; ++a) disks_[fill_[cell_of_[a]]++] = frame[a];
+    }
+
+    /// Calls f(a, b) once for every unordered pair of agents whose disks overlap (|p_a - p_b| < r_a + r_b).
+    template <class F>
+    void overlaps(F&& f) const {
+        for (int ix = 0; ix < nx_; ++ix)
+            for (int iy = 0; iy < ny_; ++iy) {
+                const std::size_t c = cell(ix, iy);
+                for (std::size_t i = first_[c]; i < first_[c + 1]; ++i) {
+                    test(i, i + 1, first_[c + 1], f);                  // the rest of its cell
+                    if (iy + 1 < ny_) test(i, first_[c + 1], first_[c + 2], f);  // the cell above
+                    if (ix + 1 < nx_) {                                  // the three cells to the right
+                        const std::size_t lo = cell(ix + 1, std::max(0, iy - 1)), hi = cell(ix + 1, std::min(ny_ - 1, iy + 1));
+                        test(i, first_[lo], first_[hi + 1], f);
+                    }
+                }
+            }
+    }
+
+private:
+    int column(double d, int n) const { return std::clamp(int(d / cell_), 0, n - 1); }
+    std::size_t cell(int ix, int iy) const { return std::size_t(ix) * std::size_t(ny_) + std::size_t(iy); }
+
+    template <class F>
+    void test(std::size_t i, std::size_t lo, std::size_t hi, F& f) const {
+        const Disk& a = disks_[i];
+        for (std::size_t j = lo; j < hi; ++j) {
+            const Disk& b = disks_[j];
+            const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+            if (dx * dx + dy * dy < r * r) f(a.agent, b.agent);
+        }
+    }
+
+    double x0_ = 0, y0_ = 0, cell_ = 1;
+    int nx_ = 1, ny_ = 1;
+    std::vector<std::size_t> cell_of_, first_, fill_;
+    std::vector<Disk> disks_;
+};
+
 }  // namespace
 
 std::vector<Contact> frame_contacts(const Record& record) {
-    double rmax = 0;
-    for (const AgentTrack& t : record.tracks)
-        for (const auto& s : t.samples) rmax = std::max(rmax, s[3]);
-    const double cell = std::max(2.0 * rmax, 1e-3);
+    const std::size_t n = record.tracks.size();
     std::vector<Contact> out;
-    std::vector<Cell> cells;
-    const int n = int(record.tracks.size());
-    for (std::int64_t f = 0; f < record.frames; ++f) {
-        cells.clear();
-        for (int a = 0; a < n; ++a) {
-            const auto& s = record.tracks[std::size_t(a)].samples[std::size_t(f)];
-            cells.push_back({std::int64_t(std::floor(s[1] / cell)), std::int64_t(std::floor(s[2] / cell)), a});
-        }
-        std::sort(cells.begin(), cells.end());
-        std::vector<Contact> here;
-        for (int a = 0; a < n; ++a) {
-            const auto& sa = record.tracks[std::size_t(a)].samples[std::size_t(f)];
-            const std::int64_t ix = std::int64_t(std::floor(sa[1] / cell)), iy = std::int64_t(std::floor(sa[2] / cell));
-            for (std::int64_t dx = -1; dx <= 1; ++dx)
-                for (std::int64_t dy = -1; dy <= 1; ++dy) {
-                    auto it = std::lower_bound(cells.begin(), cells.end(), Cell{ix + dx, iy + dy, -1});
-                    for (; it != cells.end() && it->ix == ix + dx && it->iy == iy + dy; ++it) {
-                        const int b = it->agent;
-                        if (b <= a) continue;
-                        const auto& sb = record.tracks[std::size_t(b)].samples[std::size_t(f)];
-                        const double ddx = sa[1] - sb[1], ddy = sa[2] - sb[2], r = sa[3] + sb[3];
-                        if (ddx * ddx + ddy * ddy < r * r) here.push_back({f, a, b, false});
-                    }
-                }
-        }
-        std::sort(here.begin(), here.end(), [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-        for (Contact& c : here) {
-            c.excused = fallback_at(record.tracks[std::size_t(c.a)], f) || fallback_at(record.tracks[std::size_t(c.b)], f);
-            out.push_back(c);
+    if (n < 2) return out;
+    // The samples are stored per agent; frames are scanned a block at a time from a frame-major copy,
+    // so every track is read in runs rather than one cache line per agent per frame.
+    constexpr std::int64_t kBlock = 32;
+    std::vector<FrameGrid::Disk> block(std::size_t(kBlock) * n);
+    FrameGrid grid;
+    const auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
+    for (std::int64_t f0 = 0; f0 < record.frames; f0 += kBlock) {
+        const std::int64_t frames = std::min(kBlock, record.frames - f0);
+        double rmax = 0;  // of the block: contacts are closer than 2 rmax
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::int64_t k = 0; k < frames; ++k) {
+                const auto& s = record.tracks[a].samples[std::size_t(f0 + k)];
+                block[std::size_t(k) * n + a] = {s[1], s[2], s[3], int(a)};
+                rmax = std::max(rmax, s[3]);
+            }
+        for (std::int64_t k = 0; k < frames; ++k) {
+            const std::int64_t f = f0 + k;
+            grid.build(&block[std::size_t(k) * n], n, 2 * rmax);
+            const std::size_t first = out.size();
+            grid.overlaps([&](int a, int b) { out.push_back({f, std::min(a, b), std::max(a, b), false}); });
+            std::sort(out.begin() + std::ptrdiff_t(first), out.end(), by_pair);
+            for (std::size_t c = first; c < out.size(); ++c)
+                out[c].excused = fallback_at(record.tracks[std::size_t(out[c].a)], f) ||
+                                 fallback_at(record.tracks[std::size_t(out[c].b)], f);
         }
     }
     return out;

@@ -26,22 +26,38 @@ void CursorLayer::skeletons(const Frame& frame) {
         }
         revision_ = frame.revision;
     }
-    const double base = frame.cursor * frame.time_scale;
     for (std::size_t c = 0; c < frame.clips.size(); ++c) {
         const ClipView& clip = frame.clips[c];
         const int f = clip.visible ? frame_at(clip, frame.cursor) : -1;
-        if (f < 0) continue;
-        const Rigid2 m = Rigid2::of(clip.place);
-        const io::Skeleton& skel = clip.animation->skeleton;
-        const glm::vec4 color(clip.color * 0.55f, 1.0f);
-        auto joint = [&](int j) {
-            const glm::dvec3 g = io::to_ground(clip.animation->at(f, j), clip.up);
-            return glm::vec3(float(m.apply_x(g.x, g.y)), float(base + (g.z - floor_[c]) * frame.skeleton_scale),
-                             float(-m.apply_y(g.x, g.y)));
-        };
-        for (int j = 0; j < skel.size(); ++j)
-            if (skel.parents[std::size_t(j)] >= 0) lines_.line(joint(skel.parents[std::size_t(j)]), joint(j), color);
+        if (f >= 0) skeleton(lines_, *clip.animation, clip.up, f, Rigid2::of(clip.place), floor_[c], frame, clip.color);
     }
+}
+
+void CursorLayer::draw_posed(const Frame& frame, const DrawContext& ctx) {
+    if (!frame.layers.skeletons || frame.posed.empty()) return;
+    posed_.clear();
+    for (const PosedSkeleton& p : frame.posed)
+        if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
+            skeleton(posed_, *p.animation, p.up, p.frame, Rigid2::of(p.place), p.floor, frame, p.color);
+    ctx.color->use();
+    ctx.color->set("u_mvp", ctx.view_proj);
+    glLineWidth(2.0f);
+    posed_.draw();
+    glLineWidth(1.0f);
+}
+
+void CursorLayer::skeleton(Batch& out, const io::Animation& anim, io::UpAxis up, int f, const Rigid2& m, double floor,
+                           const Frame& frame, const glm::vec3& color) {
+    const double base = frame.cursor * frame.time_scale;
+    const io::Skeleton& skel = anim.skeleton;
+    const glm::vec4 rgba(color * 0.55f, 1.0f);
+    auto joint = [&](int j) {
+        const glm::dvec3 g = io::to_ground(anim.at(f, j), up);
+        return glm::vec3(float(m.apply_x(g.x, g.y)), float(base + (g.z - floor) * frame.skeleton_scale),
+                         float(-m.apply_y(g.x, g.y)));
+    };
+    for (int j = 0; j < skel.size(); ++j)
+        if (skel.parents[std::size_t(j)] >= 0) out.line(joint(skel.parents[std::size_t(j)]), joint(j), rgba);
 }
 
 void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text) {

@@ -39,6 +39,18 @@ struct Layers {
     bool trace = true;            ///< the current trace step
 };
 
+/// A skeleton posed by the caller rather than played from a clip (a crowd agent: the viewer picks the
+/// source and frame at the cursor): frame `frame` of `animation`, its ground coordinates moved by
+/// `place` (x, y, theta; t0 unused), standing on the cursor plane on height `floor` (its lowest joint).
+struct PosedSkeleton {
+    const io::Animation* animation = nullptr;
+    io::UpAxis up = io::UpAxis::Y;
+    int frame = 0;
+    Placement place;
+    double floor = 0.0;
+    glm::vec3 color{0.5f};
+};
+
 /// The trace step to show: event `step` of `events`, a query between clips a and b.
 struct TraceView {
     const Trace* events = nullptr;
@@ -53,6 +65,7 @@ struct Frame {
     double cursor = 0.0;          ///< seconds (global time)
     double skeleton_scale = 0.5;  ///< skeleton height factor on the cursor plane
     TraceView trace;
+    std::vector<PosedSkeleton> posed;  ///< with the skeletons layer: drawn at the cursor, over everything
     /// Changes whenever clips, placements or trees change: the renderer rebuilds cached geometry.
     std::uint64_t revision = 0;
 };

@@ -101,8 +101,9 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     glDisable(GL_BLEND);
     l.trace.draw_hit(frame, ctx, l.disks);
 
-    // Labels on top.
+    // Labels and posed skeletons (crowd agents) on top.
     glDisable(GL_DEPTH_TEST);
+    l.cursor.draw_posed(frame, ctx);
     l.text.draw(ctx);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);

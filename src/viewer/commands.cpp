@@ -58,11 +58,33 @@ State crowd_state(const std::string& record, float asp, int agent, double time) 
     return s;
 }
 
+/// `render --crowd ... --choice C [--candidate K [--query J]]`: selects choice point C (the cursor at
+/// its time unless --time was given) and opens query J (default 0) of its candidate K in the trace,
+/// as the crowd panel does. Throws InputError with the reason when the record has no such query.
+void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_time) {
+    const auto& r = s.crowd->record;
+    if (choice < 0) {
+        if (candidate >= 0 || query >= 0) throw InputError("render: --candidate and --query need --choice");
+        return;
+    }
+    if (std::size_t(choice) >= r.choices.size())
+        throw InputError("render: --choice " + std::to_string(choice) + ": the record has " +
+                         std::to_string(r.choices.size()) + " choice points");
+    viewer::select_choice(s, -1, choice);
+    if (!keep_time) s.scene.cursor = double(r.choices[std::size_t(choice)].frame) * r.dt;
+    if (candidate < 0) {
+        if (query >= 0) throw InputError("render: --query needs --candidate");
+        return;
+    }
+    std::string message;
+    if (!viewer::open_candidate_query(s, candidate, std::max(query, 0), &message)) throw InputError("render: " + message);
+}
+
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
         std::string scene, out, crowd;
-        int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0;
+        int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1;
         bool ui = false, bench = false;
     };
@@ -71,6 +93,9 @@ void add_render(CLI::App& app, int& exit_code) {
     cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--agent", a->agent, "With --crowd: agent listed in the crowd panel")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--choice", a->choice, "With --crowd: select this choice point (index in the record)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--candidate", a->candidate, "With --choice: open a query of this candidate in the trace")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--query", a->query, "With --candidate: which of its queries, in the order run (default 0)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")->check(CLI::Range(16, 8192));
     cmd->add_option("--height", a->height, "Image height (default: the scene's; 720 with --bench)")->check(CLI::Range(16, 8192));
@@ -89,10 +114,17 @@ void add_render(CLI::App& app, int& exit_code) {
             exit_code = kUsage;
             return;
         }
+        if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0)) {
+            std::cerr << "render: --time, --choice, --candidate and --query go with --crowd\n";
+            exit_code = kUsage;
+            return;
+        }
         exit_code = guarded([&](std::ostream& out) {
             if (!a->crowd.empty()) {
                 const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
                 State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
+                open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
+                apply_step(s, a->step);
                 if (a->bench) {
                     out << "bench: crowd, " << std::fixed << std::setprecision(2)
                         << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";

@@ -21,6 +21,7 @@ void drop_extra(State& s) {
     s.colors.resize(n);
     s.crowd->candidate_clips.clear();
     s.crowd->accepted.clear();
+    s.crowd->opened_candidate = s.crowd->opened_query = -1;
     s.scene.query_a = s.scene.query_b = -1;
     s.scene.step = -1;
 }
@@ -36,8 +37,15 @@ int add_clip(State& s, const std::string& name, const Path& path, const Placemen
     return int(s.clips.size()) - 1;
 }
 
-double end_time(const crowd::PlacedClip& p, const crowd::MotionGraph& g) {
-    return p.place.t0 + g.clips[std::size_t(p.clip)].path.duration();
+/// Drops the clip an earlier opened query added after the candidates.
+void drop_opened(State& s) {
+    const CrowdView& v = *s.crowd;
+    std::size_t keep = std::size_t(v.agents);
+    for (int c : v.candidate_clips) keep = std::max(keep, std::size_t(c + 1));
+    s.clips.resize(keep);
+    s.places.resize(keep);
+    s.fixed_paths.resize(keep);
+    s.colors.resize(keep);
 }
 
 }  // namespace
@@ -48,13 +56,15 @@ State load_crowd_state(const std::string& record_file, float aspect) {
     const crowd::Record& r = view->record;
     try {
         view->graph = std::make_shared<crowd::MotionGraph>(crowd::load_graph(r.graph));
+        view->poses = std::make_shared<PoseSources>(view->graph);
     } catch (const std::exception& e) {
         view->graph_error = e.what();
     }
     State s;
     s.scene.query_a = s.scene.query_b = -1;
-    s.scene.layers.skeletons = false;
+    s.scene.layers.skeletons = true;
     s.scene.layers.trace = false;
+    s.scene.skeleton_scale = 1.0;  // life-size at 1 m per s: a crowd is seen from farther than a pair
     s.scene.width = 960;
     s.scene.height = 540;
     view->agents = int(r.tracks.size());
@@ -106,17 +116,20 @@ void select_choice(State& s, int agent, int choice) {
             for (const crowd::Candidate& cand : c.candidates) {
                 const bool ok = !cand.outside && cand.hits == 0;
                 const glm::vec3 color = cand.clip == c.taken ? kCommitted : ok ? kAccepted : kRejected;
-                if (cand.clip < 0 || std::size_t(cand.clip) >= v.graph->clips.size()) continue;
+                v.accepted.push_back(ok);
+                if (cand.clip < 0 || std::size_t(cand.clip) >= v.graph->clips.size()) {
+                    v.candidate_clips.push_back(-1);  // kept aligned with the candidates
+                    continue;
+                }
                 v.candidate_clips.push_back(add_clip(s, "candidate clip " + std::to_string(cand.clip),
                                                      v.graph->clips[std::size_t(cand.clip)].path, at->place, color));
-                v.accepted.push_back(ok);
             }
         }
     }
     ++s.revision;
 }
 
-bool open_candidate_query(State& s, int k, std::string* message) {
+bool open_candidate_query(State& s, int k, int j, std::string* message) {
     CrowdView& v = *s.crowd;
     auto fail = [&](const std::string& m) {
         if (message) *message = m;
@@ -124,48 +137,54 @@ bool open_candidate_query(State& s, int k, std::string* message) {
     };
     if (v.choice < 0) return fail("no choice point selected");
     if (!v.graph) return fail("the record's graph cannot be read: " + v.graph_error);
-    if (k < 0 || std::size_t(k) >= v.candidate_clips.size()) return fail("no such candidate");
     const crowd::ChoicePoint& c = v.record.choices[std::size_t(v.choice)];
-    const crowd::PlacedClip* at = committed_at(v, c);
-    if (!at) return fail("the record has no committed clip at this choice point");
-    // Keep the candidates, drop an earlier opened query's other clip.
-    const std::size_t keep = std::size_t(v.candidate_clips.back()) + 1;
-    s.clips.resize(keep);
-    s.places.resize(keep);
-    s.fixed_paths.resize(keep);
-    s.colors.resize(keep);
+    if (k < 0 || std::size_t(k) >= c.candidates.size() || std::size_t(k) >= v.candidate_clips.size())
+        return fail("no candidate " + std::to_string(k));
+    const crowd::Candidate& cand = c.candidates[std::size_t(k)];
+    if (j < 0 || std::size_t(j) >= cand.against.size())
+        return fail("candidate clip " + std::to_string(cand.clip) + " has no query " + std::to_string(j));
     const int a = v.candidate_clips[std::size_t(k)];
-    const Tree& ta = *s.clips[std::size_t(a)].tree;
-    const double a0 = at->place.t0, a1 = a0 + ta.path().duration();
-    const crowd::PlacedClip* pick = nullptr;
-    int pick_agent = -1;
-    bool pick_hits = false;
-    for (std::size_t o = 0; o < v.record.tracks.size() && !pick_hits; ++o) {
-        if (int(o) == c.agent) continue;
-        for (const crowd::PlacedClip& p : v.record.tracks[o].clips) {
-            if (p.commit >= at->commit || p.clip < 0 || std::size_t(p.clip) >= v.graph->clips.size()) continue;
-            if (!times_overlap(a0, a1, p.place.t0, end_time(p, *v.graph))) continue;
-            const Tree tb = Tree::build(v.graph->clips[std::size_t(p.clip)].path, s.scene.tree);
-            const bool hits = collide(ta, at->place, tb, p.place);
-            if (!pick || (hits && !pick_hits)) {
-                pick = &p;
-                pick_agent = int(o);
-                pick_hits = hits;
-            }
-            if (pick_hits) break;
-        }
-    }
-    if (!pick) return fail("no other agent's committed clip overlaps this candidate in time");
-    const int b = add_clip(s, "agent " + std::to_string(pick_agent) + " clip " + std::to_string(pick->clip),
-                           v.graph->clips[std::size_t(pick->clip)].path, pick->place, render::clip_color(pick_agent));
+    if (a < 0) return fail("candidate clip " + std::to_string(cand.clip) + " is not in the graph");
+    const crowd::CandidateQuery& q = cand.against[std::size_t(j)];
+    if (q.agent < 0 || std::size_t(q.agent) >= v.record.tracks.size() || q.index < 0 ||
+        std::size_t(q.index) >= v.record.tracks[std::size_t(q.agent)].clips.size())
+        return fail("query " + std::to_string(j) + " names no committed clip of the record");
+    const crowd::PlacedClip& other = v.record.tracks[std::size_t(q.agent)].clips[std::size_t(q.index)];
+    if (other.clip < 0 || std::size_t(other.clip) >= v.graph->clips.size())
+        return fail("agent " + std::to_string(q.agent) + "'s clip " + std::to_string(other.clip) + " is not in the graph");
+    drop_opened(s);
+    const int b = add_clip(s, "agent " + std::to_string(q.agent) + " clip " + std::to_string(other.clip),
+                           v.graph->clips[std::size_t(other.clip)].path, other.place, render::clip_color(q.agent));
     s.scene.query_a = a;
     s.scene.query_b = b;
     run_query(s);
     s.scene.step = 0;
+    s.scene.layers.trace = true;
+    v.opened_candidate = k;
+    v.opened_query = j;
     if (message)
-        *message = "candidate clip " + std::to_string(c.candidates[std::size_t(k)].clip) + " vs agent " +
-                   std::to_string(pick_agent) + (s.answer ? ": collide" : ": clear");
+        *message = "candidate clip " + std::to_string(cand.clip) + " vs agent " + std::to_string(q.agent) + " clip " +
+                   std::to_string(other.clip) + (s.answer ? ": collide" : ": clear") +
+                   (s.answer == q.hit ? " (as recorded)" : " (the record says otherwise)");
     return true;
+}
+
+namespace {
+
+/// A record frame is a graph sample only when both share dt (else the poses would drift off the disks).
+bool same_rate(const CrowdView& v) { return v.graph && std::abs(v.record.dt - v.graph->dt()) < 1e-9; }
+
+}  // namespace
+
+std::string skeleton_problem(const CrowdView& v) {
+    if (!v.graph) return "no graph: " + v.graph_error;
+    if (!same_rate(v)) return "the record's dt differs from its graph's (" + v.record.graph + ")";
+    return v.poses ? v.poses->error() : std::string();
+}
+
+std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const std::vector<glm::vec3>& colors) {
+    if (!v.graph || !v.poses || !same_rate(v)) return {};
+    return crowd_skeletons(v.record, *v.graph, *v.poses, t, colors);
 }
 
 void update_crowd_playback(State& s, double seconds) {

@@ -1,12 +1,13 @@
 // A recorded crowd (`mobb crowd --record FILE`) in the viewer: one disk stack per agent from the
 // record's samples, the agents' choice points, and a choice point's candidates placed where the
 // agent stood (from the motion graph's clip paths) with the query of a candidate against another
-// agent's committed clip opened in the trace debugger.
+// agent's committed clip opened in the trace debugger, and every agent's skeleton at the time cursor.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "crowd_poses.h"
 #include "mobb/crowd/motion_graph.h"
 #include "mobb/crowd/record.h"
 #include "state.h"
@@ -17,10 +18,12 @@ struct CrowdView {
     crowd::Record record;
     std::shared_ptr<crowd::MotionGraph> graph;  ///< null when the record's graph cannot be read
     std::string graph_error;
+    std::shared_ptr<PoseSources> poses;         ///< the graph's mocap sources for the skeletons (null without graph)
     int agents = 0;                             ///< clips 0..agents-1 of the state are the agents
     int agent = 0;                              ///< agent whose choice points the panel lists
     int choice = -1;                            ///< index into record.choices, -1 for none
-    std::vector<int> candidate_clips;           ///< state clip of each candidate of the choice
+    std::vector<int> candidate_clips;           ///< state clip of each candidate of the choice (-1: unknown clip id)
+    int opened_candidate = -1, opened_query = -1;  ///< the query shown in the trace debugger, -1 for none
     std::vector<bool> accepted;                 ///< per candidate: no hit, inside the world
     bool playing = false;
     float rate = 1.0f;                          ///< seconds of crowd per second while playing
@@ -41,10 +44,17 @@ const crowd::PlacedClip* committed_at(const CrowdView& view, const crowd::Choice
 /// candidates are added as extra clips after the agents, coloured accepted / rejected.
 void select_choice(State& state, int agent, int choice);
 
-/// Runs the query of candidate `k` of the selected choice against the first other agent's committed
-/// clip overlapping it in time that it collides with (else the first overlapping one), as the
-/// state's query with a trace. Returns false when the record or the graph lacks what it needs.
-bool open_candidate_query(State& state, int k, std::string* message = nullptr);
+/// Rebuilds query j of candidate k of the selected choice (candidate.against[j]: the candidate placed
+/// where the agent stood against another agent's committed clip, as the crowd ran it) as the state's
+/// query with a trace, shown from its first step. Returns false, with the reason in `message`, when
+/// the record or the graph lacks what it needs; else `message` gives the answer and the recorded one.
+bool open_candidate_query(State& state, int k, int j, std::string* message = nullptr);
+
+/// Why skeletons are missing ("" when every source needed so far loaded): no graph, or a source failed.
+std::string skeleton_problem(const CrowdView& view);
+
+/// Every agent's skeleton at time t (loads the sources it needs on first use), coloured like its disks.
+std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& view, double t, const std::vector<glm::vec3>& colors);
 
 /// Advances the time cursor while playing (wraps at the end).
 void update_crowd_playback(State& state, double seconds);

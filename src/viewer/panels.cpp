@@ -273,8 +273,44 @@ void pick_panel(const State& s, const Ui& ui) {
 }
 
 
+/// The graph clip id of a query's other clip, -1 when the record does not have it.
+int committed_clip(const crowd::Record& r, const crowd::CandidateQuery& q) {
+    if (q.agent < 0 || std::size_t(q.agent) >= r.tracks.size()) return -1;
+    const auto& clips = r.tracks[std::size_t(q.agent)].clips;
+    return q.index >= 0 && std::size_t(q.index) < clips.size() ? clips[std::size_t(q.index)].clip : -1;
+}
+
+/// One candidate of the selected choice point, coloured taken / clear / rejected, unfolding into its
+/// queries in the order the crowd ran them (other agent, its clip, the answer); clicking one opens it
+/// in the trace debugger.
+void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
+    CrowdView& v = *s.crowd;
+    const crowd::Candidate& cand = c.candidates[std::size_t(k)];
+    const bool taken = cand.clip == c.taken;
+    const bool ok = !cand.outside && cand.hits == 0;
+    const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f) : ok ? glm::vec3(0.25f, 0.8f, 0.3f) : glm::vec3(0.9f, 0.2f, 0.2f);
+    char label[128];
+    std::snprintf(label, sizeof label, "clip %d: %s%s, %d queries, %d hits###cand%d", cand.clip,
+                  taken ? "taken" : ok ? "clear" : "rejected", cand.outside ? " (leaves the world)" : "", cand.queries,
+                  cand.hits, k);
+    ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
+    // The candidate whose query is open stays unfolded.
+    if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+    const bool open = ImGui::TreeNodeEx(label, cand.against.empty() ? ImGuiTreeNodeFlags_Leaf : 0);
+    ImGui::PopStyleColor();
+    if (!open) return;
+    for (std::size_t j = 0; j < cand.against.size(); ++j) {
+        const crowd::CandidateQuery& q = cand.against[j];
+        std::snprintf(label, sizeof label, "vs agent %d, clip %d (its #%d): %s###q%d_%zu", q.agent,
+                      committed_clip(v.record, q), q.index, q.hit ? "hit" : "clear", k, j);
+        const bool shown = v.opened_candidate == k && v.opened_query == int(j);
+        if (ImGui::Selectable(label, shown) && v.graph) open_candidate_query(s, k, int(j), &ui.status);
+    }
+    ImGui::TreePop();
+}
+
 /// A recorded crowd: play the time cursor, pick an agent and one of its choice points, list the
-/// candidates (accepted / rejected) and open a candidate's query in the trace debugger.
+/// candidates (accepted / rejected) and their queries, and open any of them in the trace debugger.
 void crowd_panel(State& s, Ui& ui) {
     if (!s.crowd) return;
     CrowdView& v = *s.crowd;
@@ -296,6 +332,8 @@ void crowd_panel(State& s, Ui& ui) {
     if (ImGui::Button("space-time")) ui.request_view = 2;
     int agent = v.agent;
     if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select_choice(s, agent, -1);
+    if (!v.graph) ImGui::TextWrapped("graph not loaded (%s): no skeletons, candidates listed only", v.graph_error.c_str());
+    else if (!skeleton_problem(v).empty()) ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
     ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
     const std::vector<int> choices = agent_choices(v, v.agent);
     ImGui::BeginChild("choices", ImVec2(0, 110), true);
@@ -314,25 +352,13 @@ void crowd_panel(State& s, Ui& ui) {
         const crowd::ChoicePoint& c = r.choices[std::size_t(v.choice)];
         ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
                     static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
-        if (!v.graph) ImGui::TextWrapped("graph not loaded (%s): candidates listed only", v.graph_error.c_str());
-        for (std::size_t k = 0; k < c.candidates.size(); ++k) {
-            const crowd::Candidate& cand = c.candidates[k];
-            const bool taken = cand.clip == c.taken;
-            const bool ok = !cand.outside && cand.hits == 0;
-            const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f) : ok ? glm::vec3(0.25f, 0.8f, 0.3f) : glm::vec3(0.9f, 0.2f, 0.2f);
-            ImGui::TextColored(imvec(col), "clip %d: %s%s, %d queries, %d hits", cand.clip, taken ? "taken" : ok ? "clear" : "rejected",
-                               cand.outside ? " (leaves the world)" : "", cand.queries, cand.hits);
-            if (v.graph && k < v.candidate_clips.size()) {
-                ImGui::SameLine();
-                ImGui::PushID(int(k));
-                if (ImGui::SmallButton("trace")) {
-                    std::string message;
-                    open_candidate_query(s, int(k), &message);
-                    ui.status = message;
-                }
-                ImGui::PopID();
-            }
-        }
+        // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
+        std::size_t rows = c.candidates.size();
+        for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();
+        const float height = float(std::min<std::size_t>(rows, 14)) * ImGui::GetTextLineHeightWithSpacing() + 8.0f;
+        ImGui::BeginChild("candidates", ImVec2(0, height), true);
+        for (std::size_t k = 0; k < c.candidates.size(); ++k) candidate_row(s, ui, c, int(k));
+        ImGui::EndChild();
     }
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::End();

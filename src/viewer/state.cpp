@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli.h"
+#include "crowd_view.h"
 #include "random_walk.h"
 #include "renderer.h"
 
@@ -127,6 +128,8 @@ render::Frame frame_of(const State& s) {
     f.cursor = s.scene.cursor;
     f.skeleton_scale = s.scene.skeleton_scale;
     f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
+    // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
+    if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
     f.revision = s.revision;
     return f;
 }

@@ -57,6 +57,8 @@ void sync_scene(State& state);      ///< copies placements and camera back into 
 /// The step actually shown: scene.step clamped to the trace (-1 when none).
 int shown_step(const State& state);
 
+/// What the renderer draws. For a crowd it also poses every agent's skeleton at the cursor, loading
+/// the mocap sources it needs the first time (through state.crowd, which is shared, not copied).
 render::Frame frame_of(const State& state);
 
 }  // namespace mobb::viewer

@@ -178,4 +178,30 @@ TEST(CliTest, BatchAnswersEveryLineInOrder) {
     EXPECT_NE(bad.err.find("stdin:4"), std::string::npos) << bad.err;
 }
 
+// The queries run on a worker pool; the output is the same, line for line, for any thread count.
+TEST(CliTest, BatchOutputDoesNotDependOnThreads) {
+    MOBB_REQUIRE_MOCAP();
+    const std::string a = cmu("007_01.bvh"), b = cmu("002_01.bvh");
+    std::string input;
+    for (int k = 0; k < 120; ++k) {  // near and far placements, so answers and work differ per line
+        const double x = 0.25 * double(k % 13) - 1.5, y = 0.2 * double(k % 7) - 0.6, t = 0.1 * double(k % 11);
+        input += "{\"a\": \"" + (k % 2 ? a : b) + "\", \"b\": \"" + b + "\", \"ta\": [0,0," + std::to_string(k * 17 % 360) +
+                 ",0], \"tb\": [" + std::to_string(x) + "," + std::to_string(y) + ",90," + std::to_string(t) + "]}\n";
+        if (k % 40 == 0) input += "\n";  // blank lines are skipped
+    }
+    const Result one = mobb("batch --threads 1", input), three = mobb("batch --threads 3", input);
+    ASSERT_EQ(one.code, 0) << one.err;
+    ASSERT_EQ(three.code, 0) << three.err;
+    EXPECT_EQ(count_lines(one.out), 120);
+    EXPECT_EQ(one.out, three.out);
+    EXPECT_NE(one.out.find("true"), std::string::npos);
+    EXPECT_NE(one.out.find("false"), std::string::npos);
+    // The first bad line is still the one reported, whatever the threads.
+    const Result bad = mobb("batch --threads 3", input + "{\"a\": 1}\n" + input);
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_NE(bad.err.find("stdin:" + std::to_string(count_lines(input) + 1)), std::string::npos) << bad.err;
+    EXPECT_EQ(mobb("batch --threads 0", input).code, 2);
+}
+
 }  // namespace

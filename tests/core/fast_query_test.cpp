@@ -110,6 +110,45 @@ TEST(FastQueryTest, DegeneratePaths) {
         }
 }
 
+// The plan's boundaries: time overlaps of exactly kScanPairs-ish pairs (scan / descend switch),
+// overlaps of one to a few samples at either end, one-sample clips, different spacings, rotations
+// at and near +-pi and beyond the polynomial range (2^19 rad), huge offsets, jumpy paths (large
+// step slack: the neighbour diagonals come from a widened filter), grid-aligned and shifted times.
+TEST(FastQueryTest, PlanBoundaries) {
+    std::mt19937_64 rng(35);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double pi = 3.141592653589793;
+    const double thetas[] = {pi, -pi, std::nextafter(pi, 0.0), std::nextafter(-pi, 0.0), 0.5 * pi, -0.5 * pi,
+                             0.25 * pi, 0x1p19, -0x1p19, 0x1p19 + 1, 1e12, 2 * pi, 1e-300};
+    for (int clip = 0; clip < 30; ++clip) {
+        const double dt = clip % 3 == 0 ? 1.0 / 30 : 1.0 / 60;
+        const int na = clip % 5 == 0 ? 1 : 1 + int(u(rng) * 300), nb = clip % 7 == 0 ? 1 : 1 + int(u(rng) * 300);
+        Path a = test::random_walk(rng, na, dt), b = test::random_walk(rng, nb, clip % 4 == 1 ? 1.0 / 50 : dt);
+        if (clip % 6 == 2 && nb > 3) b.samples[std::size_t(nb / 2)].x += 3.0;  // a stray frame
+        const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+        for (int q = 0; q < 1500; ++q) {
+            Placement pa = random_placement(rng, 1, 0), pb = random_placement(rng, 1, 0);
+            if (q % 4 == 0) pa.theta = thetas[std::size_t(q / 4) % std::size(thetas)];
+            if (q % 4 == 1) pb.theta = thetas[std::size_t(q / 4) % std::size(thetas)];
+            // B starts so that the overlap is `overlap` samples long at A's start or end, give or take.
+            const int overlap = int(u(rng) * 140);
+            const double shift = q % 3 == 0 ? 0.0 : (u(rng) - 0.5) * (q % 3 == 1 ? 1e-9 : 1.0);
+            pa.t0 = double(int(u(rng) * 40)) * dt;
+            pb.t0 = q % 2 ? pa.t0 + double(na - overlap) * dt + shift * dt : pa.t0 - double(nb - overlap) * b.dt + shift * dt;
+            if (q % 13 == 0) {
+                pa.x += 1e7, pb.x += 1e7;
+                pa.t0 += 1e5, pb.t0 += 1e5;
+            }
+            const bool expected = collide_brute(a, pa, b, pb);
+            SamplePair h;
+            ASSERT_EQ(collide_fast(ia, pa, ib, pb, &h), expected) << clip << " " << q;
+            ASSERT_EQ(collide_fast(ib, pb, ia, pa), expected) << clip << " " << q;
+            ASSERT_EQ(collide_scan(ia, pa, ib, pb), expected) << clip << " " << q;
+            if (expected) expect_real_hit(a, pa, b, pb, h);
+        }
+    }
+}
+
 TEST(FastQueryTest, BuildValidates) {
     EXPECT_THROW(ClipIndex::build(Path{}), std::invalid_argument);
     Path p = test::standing_still(3);

@@ -1,10 +1,16 @@
 // Crowd runs on the committed graph, checked on their records by this test's own frame-by-frame scan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <stdexcept>
 #include <fstream>
+#include <sstream>
 
+#include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
+#include "mobb/crowd/worker_pool.h"
 
 namespace mobb::crowd {
 namespace {
@@ -21,14 +27,44 @@ Fixture& fixture() {
     return f;
 }
 
-CrowdRun run(int agents, double seconds, std::uint64_t seed, Selection select, bool log = false) {
+CrowdRun run(int agents, double seconds, std::uint64_t seed, Selection select, bool log = false, int threads = 1) {
     CrowdOptions o;
     o.agents = agents;
     o.seconds = seconds;
     o.seed = seed;
     o.select = select;
     o.log_queries = log;
+    o.threads = threads;
     return run_crowd(fixture().graph, fixture().trees, o);
+}
+
+// The space-time box of a placed clip, computed here independently of the simulation.
+SpaceTimeBox box_of(int clip, const Placement& p, std::int64_t start) {
+    const Path& path = fixture().graph.clips[std::size_t(clip)].path;
+    const Rigid2 m = Rigid2::of(p);
+    SpaceTimeBox b{1e300, 1e300, -1e300, -1e300, start, start + std::int64_t(path.size())};
+    for (const Sample& s : path.samples) {
+        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
+        b.x0 = std::min(b.x0, x - s.r), b.y0 = std::min(b.y0, y - s.r);
+        b.x1 = std::max(b.x1, x + s.r), b.y1 = std::max(b.y1, y + s.r);
+    }
+    return b;
+}
+
+// Every counter of a summary but the times.
+std::vector<std::uint64_t> counters(const CrowdSummary& s) {
+    return {s.choice_points, s.candidates, s.queries, s.hits, s.tests2d, s.tests3d, s.samples, s.root_rejected,
+            s.time_pairs, s.pruned, s.fallbacks, s.outside, s.contacts, s.contacts_unexcused, s.reevaluated};
+}
+
+std::string logged_text(const std::vector<LoggedQuery>& log) {
+    std::ostringstream out;
+    out.precision(17);
+    for (const LoggedQuery& q : log)
+        out << q.choice << " " << q.candidate << " " << q.clip_a << " " << q.clip_b << " " << q.pa.x << " " << q.pa.y
+            << " " << q.pa.theta << " " << q.pa.t0 << " " << q.pb.x << " " << q.pb.y << " " << q.pb.theta << " "
+            << q.pb.t0 << " " << q.hit << "\n";
+    return out.str();
 }
 
 // Contacts at every frame between every pair, not excused by a fallback clip of either agent.
@@ -192,12 +228,143 @@ TEST(Crowd, RecordedQueriesReplayToTheirAnswers) {
     EXPECT_GT(replayed, 100u);
 }
 
+// The choice points of a frame run in parallel and are committed in agent order; any thread count
+// gives the very same record, logged queries (in the same order) and counters.
+TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
+    for (Selection select : {Selection::Avoid, Selection::Random}) {
+        // Dense enough that choice points of one frame often meet (re-evaluations) and fallbacks occur.
+        const CrowdRun ref = run(60, 15, 21, select, true, 1);
+        const std::string text = record_to_text(ref.record, "");
+        const std::string log = logged_text(ref.queries);
+        EXPECT_GT(ref.summary.reevaluated, 0u) << to_string(select);
+        if (select == Selection::Avoid) {
+            EXPECT_GT(ref.summary.fallbacks, 0u);
+        }
+        EXPECT_EQ(ref.queries.size(), ref.summary.queries);
+        for (int threads : {2, 3, 8}) {
+            const CrowdRun r = run(60, 15, 21, select, true, threads);
+            EXPECT_EQ(r.summary.threads, threads);
+            EXPECT_TRUE(record_to_text(r.record, "") == text) << to_string(select) << ", " << threads << " threads";
+            EXPECT_TRUE(logged_text(r.queries) == log) << to_string(select) << ", " << threads << " threads";
+            EXPECT_EQ(counters(r.summary), counters(ref.summary)) << to_string(select) << ", " << threads << " threads";
+        }
+    }
+}
+
+// The outcome is that of taking the choice points one by one: each candidate queried exactly the
+// clips committed before its choice point (by other agents, still playing, boxes overlapping), in
+// commit order, up to its first hit when it stopped there.
+TEST(Crowd, EachChoiceSeesEveryEarlierCommit) {
+    for (Selection select : {Selection::Avoid, Selection::Random}) {
+        const CrowdRun c = run(60, 12, 4, select, false, 3);
+        const Record& r = c.record;
+        ASSERT_GT(c.summary.reevaluated, 0u);
+        // Committed clips in commit order: (commit, agent, index).
+        std::vector<std::array<std::int64_t, 3>> commits;
+        for (std::size_t a = 0; a < r.tracks.size(); ++a)
+            for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
+                commits.push_back({r.tracks[a].clips[k].commit, std::int64_t(a), std::int64_t(k)});
+        std::sort(commits.begin(), commits.end());
+        for (std::size_t n = 0; n < r.choices.size(); ++n) {
+            const ChoicePoint& cp = r.choices[n];
+            const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+            const auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
+            ASSERT_NE(at, own.end());
+            ASSERT_EQ(at->start, cp.frame);
+            for (const Candidate& k : cp.candidates) {
+                const SpaceTimeBox box = box_of(k.clip, at->place, cp.frame);
+                std::vector<std::pair<int, int>> expected;
+                for (const auto& [commit, b, index] : commits) {
+                    if (commit >= std::int64_t(n)) break;
+                    const PlacedClip& other = r.tracks[std::size_t(b)].clips[std::size_t(index)];
+                    if (b != cp.agent && box_of(other.clip, other.place, other.start).overlaps(box))
+                        expected.emplace_back(int(b), int(index));
+                }
+                ASSERT_LE(k.against.size(), expected.size());
+                for (std::size_t q = 0; q < k.against.size(); ++q) {
+                    EXPECT_EQ(k.against[q].agent, expected[q].first) << "choice " << n;
+                    EXPECT_EQ(k.against[q].index, expected[q].second) << "choice " << n;
+                }
+                const bool stopped = !k.against.empty() && k.against.back().hit && select == Selection::Avoid && !cp.fallback;
+                const bool skipped = k.outside && select == Selection::Avoid && !cp.fallback;
+                if (!stopped && !skipped) {
+                    EXPECT_EQ(k.against.size(), expected.size()) << "choice " << n;
+                }
+            }
+        }
+    }
+}
+
 TEST(Crowd, RejectsImpossibleWorlds) {
     CrowdOptions o;
     o.agents = 1000;
     o.width = o.height = 5;
     EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, o), std::invalid_argument);
     EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
+    CrowdOptions none;
+    none.threads = 0;
+    EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, none), std::invalid_argument);
+}
+
+TEST(WorkerPool, RunsEveryIndexOnceAndRethrowsTheLowestError) {
+    for (int threads : {1, 2, 5}) {
+        WorkerPool pool(threads);
+        EXPECT_EQ(pool.size(), threads);
+        for (std::size_t grain : {1u, 3u, 64u}) {
+            std::vector<std::atomic<int>> seen(1000);
+            std::vector<int> worker(seen.size(), -1);
+            pool.for_each(seen.size(), [&](std::size_t i, int w) {
+                ++seen[i];
+                worker[i] = w;
+            }, grain);
+            for (std::size_t i = 0; i < seen.size(); ++i) {
+                ASSERT_EQ(seen[i].load(), 1) << i;
+                ASSERT_TRUE(worker[i] >= 0 && worker[i] < threads);
+            }
+        }
+        try {
+            pool.for_each(100, [](std::size_t i, int) {
+                if (i % 10 == 7) throw std::runtime_error(std::to_string(i));
+            });
+            ADD_FAILURE() << "no exception";
+        } catch (const std::runtime_error& e) {
+            EXPECT_STREQ(e.what(), "7");
+        }
+        pool.for_each(0, [](std::size_t, int) { ADD_FAILURE(); });
+    }
+    EXPECT_THROW(WorkerPool(0), std::invalid_argument);
+}
+
+// Queries from several threads at once (the crowd's parallel choice points) agree with a scan of all
+// boxes; expired items are neither reported nor counted.
+TEST(BroadPhase, ConcurrentQueriesAndExpiry) {
+    BroadPhase bp(2.0, 20, 20);
+    std::vector<SpaceTimeBox> boxes;
+    for (int i = 0; i < 400; ++i) {
+        const double x = double((i * 37) % 26) - 3, y = double((i * 53) % 26) - 3;  // some beyond the flat cells
+        boxes.push_back({x, y, x + 0.5 + (i % 5), y + 0.5 + (i % 3), i % 7, 8 + i % 11});
+        bp.insert(i, i % 9, boxes.back());
+    }
+    bp.expire(10);
+    std::size_t live = 0;
+    for (const SpaceTimeBox& b : boxes) live += b.f1 > 10;
+    EXPECT_EQ(bp.size(), live);
+    WorkerPool pool(4);
+    std::vector<int> wrong(boxes.size(), 0);
+    pool.for_each(boxes.size(), [&](std::size_t q, int) {
+        SpaceTimeBox box = boxes[q];
+        box.f0 = 10;
+        std::vector<int> got, want;
+        bp.query(box, int(q % 9), got);
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (int(i % 9) != int(q % 9) && boxes[i].f1 > 10 && boxes[i].overlaps(box)) want.push_back(int(i));
+        wrong[q] = got != want;
+    });
+    EXPECT_EQ(std::count(wrong.begin(), wrong.end(), 1), 0);
+    bp.insert(1000, 0, {0, 0, 1, 1, 0, 9});  // ends before the expiry frame: dropped
+    std::vector<int> out;
+    bp.query({0, 0, 1, 1, 10, 20}, 1, out);
+    EXPECT_EQ(std::count(out.begin(), out.end(), 1000), 0);
 }
 
 }  // namespace

@@ -105,6 +105,37 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
     std::printf("%d of %d placements collide\n", positives, kQueries);
 }
 
+// The fast query's plan boundaries on real clips: crowd-like grid-aligned start times (touching
+// neighbour diagonals decided by one ulp) or shifted ones, overlaps of 0 to 160 samples at either end
+// (around the scan / descend switch), rotations at +-pi, huge global offsets.
+TEST(RealClipsTest, FastQueryPlanBoundariesAgreeWithBruteForce) {
+    MOBB_REQUIRE_MOCAP();
+    const Clips& c = clips();
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int positives = 0;
+    constexpr int kQueries = 60000;
+    for (int q = 0; q < kQueries; ++q) {
+        const std::size_t ia = rng() % c.paths.size(), ib = rng() % c.paths.size();
+        const Path &a = c.paths[ia], &b = c.paths[ib];
+        Placement pa, pb;
+        random_query(rng, a, b, pa, pb);
+        const double dt = a.dt;
+        const auto overlap = double(int(u(rng) * 160));
+        pa.t0 = double(int(u(rng) * 3000)) * dt;
+        pb.t0 = q % 2 ? pa.t0 + (double(a.size()) - overlap) * dt : pa.t0 - (double(b.size()) - overlap) * b.dt;
+        if (q % 3 == 1) pb.t0 += (u(rng) - 0.5) * dt;
+        if (q % 5 == 0) pb.theta = q % 10 ? 3.141592653589793 : -3.141592653589793;
+        if (q % 17 == 0) pa.x += 1e6, pb.x += 1e6, pa.t0 += 1e4, pb.t0 += 1e4;
+        const bool expected = collide_brute(a, pa, b, pb);
+        positives += expected;
+        ASSERT_EQ(collide_fast(c.indexes[ia], pa, c.indexes[ib], pb), expected) << q;
+        ASSERT_EQ(collide_scan(c.indexes[ia], pa, c.indexes[ib], pb), expected) << q;
+    }
+    EXPECT_GT(positives, kQueries / 20);
+    std::printf("%d of %d placements collide\n", positives, kQueries);
+}
+
 // Mixed tree types in one query (a viewer or crowd may hold trees of different kinds).
 TEST(RealClipsTest, MixedTreeTypesAgreeWithBruteForce) {
     MOBB_REQUIRE_MOCAP();

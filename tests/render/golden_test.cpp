@@ -1,6 +1,7 @@
 // Image-diff tests: each case renders a scene headless (OSMesa, llvmpipe, 128-bit vectors) and
 // compares it with tests/golden/NAME.png. MOBB_UPDATE_GOLDENS=1 rewrites the goldens instead
 // (cmake --build BUILD --target update_goldens).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -155,21 +156,10 @@ TEST(Golden, UiPanels) {
     check_golden(c);
 }
 
-/// A small deterministic crowd recorded by the real `mobb crowd` (the graph ships in assets/graphs,
-/// its clip paths need no mocap data). Written once per test run.
-std::string crowd_record() {
-    static const std::string file = [] {
-        const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_record.json";
-        const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
-                                "\" --agents 12 --world 12x12 --seconds 8 --seed 3 --select avoid --record \"" + out +
-                                "\" > /dev/null";
-        std::remove(out.c_str());
-        return std::system(cmd.c_str()) == 0 ? out : std::string();
-    }();
-    return file;
-}
-
+/// The crowd from the default (space-time) camera: every agent's skeleton stands on its disk at the
+/// cursor (they need the mocap the graph was built from).
 TEST(Golden, Crowd) {
+    MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 320.0f / 240.0f);
@@ -178,22 +168,44 @@ TEST(Golden, Crowd) {
     viewer::select_choice(s, 0, -1);
     s.scene.cursor = 4.0;
     check_image("crowd", viewer::render_headless(s, {320, 240, false}));
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// Larger, so the skeletons read: the space-time view, and from above (the skeletons on their disks).
+TEST(Golden, CrowdSkeletons) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 800.0f / 500.0f);
+    viewer::select_choice(s, 0, -1);
+    s.scene.cursor = 3.0;
+    check_image("crowd_skeletons", viewer::render_headless(s, {800, 500, false}));
+    s.camera.top();
+    viewer::frame_all(s, 800.0f / 500.0f);
+    check_image("crowd_skeletons_top", viewer::render_headless(s, {800, 500, false}));
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// The first choice point after the start that found a clear clip (no fallback) among a few candidates,
+/// one of them rejected (so the Crowd panel stays short), or -1.
+int small_rejection(const crowd::Record& r) {
+    for (std::size_t n = 0; n < r.choices.size(); ++n) {
+        const auto& c = r.choices[n];
+        if (c.frame > 0 && !c.fallback && c.candidates.size() <= 6 &&
+            std::any_of(c.candidates.begin(), c.candidates.end(), [](const auto& k) { return k.hits > 0; }))
+            return int(n);
+    }
+    return -1;
 }
 
 /// One agent's choice point with its candidates placed where the agent stood, and the panels.
 TEST(Golden, CrowdChoicePoint) {
+    MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
-    // The first choice point (after the start) with a rejected candidate.
-    int pick = -1;
-    for (std::size_t k = 0; k < s.crowd->record.choices.size() && pick < 0; ++k) {
-        const auto& c = s.crowd->record.choices[k];
-        if (c.frame == 0) continue;
-        for (const auto& cand : c.candidates)
-            if (cand.hits > 0) pick = int(k);
-    }
+    const int pick = small_rejection(s.crowd->record);
     ASSERT_GE(pick, 0);
     viewer::select_choice(s, -1, pick);
     const auto& c = s.crowd->record.choices[std::size_t(pick)];
@@ -202,46 +214,37 @@ TEST(Golden, CrowdChoicePoint) {
     s.scene.layers.disks_translucent = true;
     s.camera.top();  // the "from above" preset: the candidates fan out from the agent's disk
     viewer::frame_all(s, 1024.0f / 640.0f);
+    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
     check_image("crowd_choice", viewer::render_headless(s, {1024, 640, true}));
 }
 
-/// The candidates' placement (the committed clip's) puts the taken clip's path on the agent's
-/// recorded disks, and a rejected candidate's query, rebuilt from the graph, collides.
-TEST(CrowdTrace, CandidatesRebuildTheRecordedQueries) {
+/// A rejected candidate's first colliding query opened in the trace debugger, seen from above: the
+/// panel lists the candidate's queries with the opened one selected, the trace shows its first step.
+TEST(Golden, CrowdQueryOpened) {
+    MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
-    ASSERT_FALSE(record.empty());
-    State s = viewer::load_crowd_state(record, 1.5f);
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
     const auto& r = s.crowd->record;
-    int checked = 0, collided = 0;
-    for (std::size_t k = 0; k < r.choices.size(); ++k) {
-        const auto& c = r.choices[k];
-        const crowd::PlacedClip* at = viewer::committed_at(*s.crowd, c);
-        ASSERT_NE(at, nullptr) << "choice " << k;
-        const Path& p = s.crowd->graph->clips[std::size_t(at->clip)].path;
-        const Rigid2 m = Rigid2::of(at->place);
-        for (std::size_t i = 0; i < p.size() && at->start + std::int64_t(i) < r.frames; i += 7) {
-            const auto& q = r.tracks[std::size_t(c.agent)].samples[std::size_t(at->start) + i];
-            ASSERT_NEAR(m.apply_x(p.samples[i].x, p.samples[i].y), q[1], 1e-6) << "choice " << k << " sample " << i;
-            ASSERT_NEAR(m.apply_y(p.samples[i].x, p.samples[i].y), q[2], 1e-6) << "choice " << k << " sample " << i;
-        }
-        for (std::size_t j = 0; j < c.candidates.size() && checked < 20; ++j) {
-            if (c.candidates[j].hits == 0 || c.candidates[j].outside) continue;
-            viewer::select_choice(s, -1, int(k));
-            std::string message;
-            ASSERT_TRUE(viewer::open_candidate_query(s, int(j), &message)) << message;
-            ASSERT_TRUE(s.queried);
-            EXPECT_FALSE(s.trace.empty());
-            collided += s.answer ? 1 : 0;
-            ++checked;
-        }
-    }
-    EXPECT_GT(checked, 0);
-    EXPECT_EQ(collided, checked) << "a rejected candidate's rebuilt query did not collide";
-    // Back to the plain crowd: only the agents remain.
-    viewer::select_choice(s, 0, -1);
-    EXPECT_EQ(s.clips.size(), r.tracks.size());
-    EXPECT_EQ(s.scene.query_a, -1);
+    const int pick = small_rejection(r);
+    ASSERT_GE(pick, 0);
+    viewer::select_choice(s, -1, pick);
+    const auto& c = r.choices[std::size_t(pick)];
+    int k = 0;
+    while (c.candidates[std::size_t(k)].hits == 0) ++k;
+    const auto& against = c.candidates[std::size_t(k)].against;
+    int j = 0;
+    while (std::size_t(j) < against.size() && !against[std::size_t(j)].hit) ++j;
+    ASSERT_LT(std::size_t(j), against.size());
+    std::string message;
+    ASSERT_TRUE(viewer::open_candidate_query(s, k, j, &message)) << message;
+    EXPECT_TRUE(s.answer) << message;
+    s.scene.cursor = double(c.frame) * r.dt;
+    s.camera.top();
+    viewer::frame_all(s, 1024.0f / 640.0f);
+    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
+    check_image("crowd_query", viewer::render_headless(s, {1024, 640, true}));
 }
 
 /// The comparator must catch a real change: the level-1 scene with one more box level drawn.

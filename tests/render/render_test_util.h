@@ -1,5 +1,6 @@
 // Shared by the render tests: data availability, scene paths, rendering a scene headless.
 #pragma once
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -22,6 +23,20 @@ inline bool have_mocap() {
 inline bool require_data() {
     const char* v = std::getenv("MOBB_REQUIRE_DATA");
     return v && std::string(v) == "1";
+}
+
+/// A small deterministic crowd recorded by the real `mobb crowd` (the graph ships in assets/graphs,
+/// its clip paths need no mocap data; the skeletons do). Written once per test run.
+inline std::string crowd_record() {
+    static const std::string file = [] {
+        const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_record.json";
+        const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
+                                "\" --agents 12 --world 12x12 --seconds 8 --seed 3 --select avoid --record \"" + out +
+                                "\" > /dev/null";
+        std::remove(out.c_str());
+        return std::system(cmd.c_str()) == 0 ? out : std::string();
+    }();
+    return file;
 }
 
 }  // namespace mobb::test

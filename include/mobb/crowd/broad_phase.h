@@ -1,8 +1,13 @@
-// Broad phase of the crowd: a uniform grid over the ground holding the space-time bounding boxes of
-// the clips agents have committed to, so a candidate clip is queried only against clips that can be near.
+// Broad phase of the crowd (paper section 5): a uniform grid over the ground holding the space-time
+// bounding boxes of the clips agents have committed to, so a candidate clip is queried only against
+// clips that can be near.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace mobb::crowd {
@@ -12,21 +17,43 @@ struct SpaceTimeBox {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::int64_t f0 = 0, f1 = 0;
 
+    /// Closed on the ground (touching rectangles overlap), half-open in time.
     bool overlaps(const SpaceTimeBox& o) const {
         return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1 && f0 < o.f1 && o.f0 < f1;
     }
 };
 
-/// Uniform grid of square cells (unbounded: cells are hashed, agents may leave the world). Items are
-/// caller-chosen ids with an owner (the agent): queries skip the asker's own items.
+/// Uniform grid of square cells, unbounded: the cells over an optional rectangle (the world) sit in a
+/// flat array, the others are hashed (agents may leave the world). Items are caller-chosen ids with an
+/// owner (the agent): queries skip the asker's own items.
+///
+/// Threads: query() is const and keeps no scratch state, so any number of threads may query at once
+/// as long as nobody inserts or removes meanwhile (the crowd evaluates a frame's choice points in
+/// parallel against a frozen grid, then commits sequentially).
 class BroadPhase {
 public:
-    explicit BroadPhase(double cell = 4.0);
+    static constexpr std::int64_t kMaxFlatCells = std::int64_t(1) << 20;
 
+    /// `cell`: side of a grid cell, metres. Throws std::invalid_argument unless cell > 0.
+    explicit BroadPhase(double cell = 4.0);
+    /// The same with flat storage for the cells over [0, width] x [0, height] (metres), where most items
+    /// are: no hashing there (unless that takes more than kMaxFlatCells cells). Throws
+    /// std::invalid_argument unless cell > 0 and the sizes are >= 0.
+    BroadPhase(double cell, double width, double height);
+
+    /// Adds (or replaces) item `id` >= 0; throws std::invalid_argument for a negative id. Ids index a
+    /// table, so keep them dense.
     void insert(int id, int owner, const SpaceTimeBox& box);
+    /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
-    /// Ids of items of other owners whose boxes overlap `box`, ascending (deterministic).
-    void query(const SpaceTimeBox& box, int owner, std::vector<int>& out);
+    /// Drops every item whose box ends at or before `frame` (f1 <= frame): they are no longer reported
+    /// nor counted, and items inserted later ending by then are dropped too. Cells are cleaned lazily,
+    /// when an item is next inserted into them, which is much cheaper than remove() per item (the
+    /// crowd expires every committed clip once). `frame` never decreases: smaller values are ignored.
+    void expire(std::int64_t frame);
+    /// Ids of items of other owners whose boxes overlap `box` (SpaceTimeBox::overlaps), ascending.
+    void query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const;
+    /// Items held.
     std::size_t size() const { return live_; }
 
 private:
@@ -35,18 +62,30 @@ private:
         int owner = -1;
         bool live = false;
     };
+    struct Entry {  // an item as a cell holds it: the box inline, so a query reads one array per cell
+        SpaceTimeBox box;
+        int id = 0, owner = -1;
+    };
+    using Cell = std::vector<Entry>;
+    std::int64_t index(double x) const;
     template <class F>
     void cells(const SpaceTimeBox& box, F&& f) const;
+    Cell& cell(std::int64_t ix, std::int64_t iy);
+    const Cell* find(std::int64_t ix, std::int64_t iy) const;
     static std::uint64_t key(std::int64_t ix, std::int64_t iy) {
         return (std::uint64_t(ix) << 32) ^ (std::uint64_t(iy) & 0xffffffffull);
     }
 
     double cell_;
-    std::unordered_map<std::uint64_t, std::vector<int>> grid_;
+    // Emptied cells keep their (empty) arrays: agents walk back and forth over the same ground, and
+    // reusing the arrays saves an allocation per cell per clip.
+    std::int64_t nx_ = 0, ny_ = 0;   // flat cells: ix in [0, nx), iy in [0, ny)
+    std::vector<Cell> flat_;
+    std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;
-    std::vector<std::uint32_t> stamp_;
-    std::uint32_t query_ = 0;
     std::size_t live_ = 0;
+    std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
+    std::priority_queue<std::pair<std::int64_t, int>, std::vector<std::pair<std::int64_t, int>>, std::greater<>> ends_;
 };
 
 }  // namespace mobb::crowd

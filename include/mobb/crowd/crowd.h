@@ -29,7 +29,9 @@ struct CrowdOptions {
     Selection select = Selection::Avoid;
     double cell = 4.0;                ///< broad-phase grid cell, metres
     bool log_queries = false;         ///< keep every narrow-phase query (for replays by the benchmarks)
-    int threads = 1;                  ///< worker threads for choice points; the record is the same for any count
+    /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
+    /// logged queries and every counter are the same for any count; only the times differ.
+    int threads = 1;
 };
 
 /// One narrow-phase query of a run: candidate clip a at pa against committed clip b at pb.
@@ -49,9 +51,19 @@ struct CrowdSummary {
     std::uint64_t pruned = 0;          ///< of those, skipped by the broad phase
     std::uint64_t fallbacks = 0, outside = 0;  ///< fallback clips taken; of them, clips leaving the world
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
+    std::uint64_t reevaluated = 0;     ///< choice points evaluated again: a commit earlier in their frame was near
+    std::uint64_t agents = 0;          ///< the run's agents
+    double simulated_seconds = 0;      ///< frames * dt
+    int threads = 1;                   ///< worker threads of the run
     double seconds = 0;                ///< wall time of the simulation (without the record check)
-    double cd_seconds = 0;             ///< wall time of collision detection in it (broad + narrow phase)
+    /// Wall time of collision detection in it: the frames' choice points (candidate placement, broad
+    /// phase, narrow-phase queries, re-evaluations) and their commits to the broad phase.
+    double cd_seconds = 0;
+
+    /// Collision detection per agent per simulated second, microseconds (0 for an empty run).
+    double cd_us_per_agent_second() const;
 };
+/// The summary as one JSON object (the record's "summary"), and as `mobb crowd` prints it.
 std::string summary_json(const CrowdSummary& s);
 std::string summary_text(const CrowdSummary& s);
 
@@ -64,13 +76,18 @@ struct CrowdRun {
 /// One tree per graph clip, built once.
 std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& options);
 
-/// Runs the crowd. Deterministic for a seed. Agents start at random positions at least 2 r_max apart
-/// (r_max: the largest r of the graph) and r_max from the walls, with random headings; each first
-/// choice point offers the successors of a random clip. Choice points are taken in order of frame,
-/// then agent. A candidate is tested against the committed clips of the other agents whose space-time
-/// boxes overlap its own (BroadPhase); committed clips checked at every commit guarantee, outside
-/// fallbacks, no contact at any frame. Throws std::invalid_argument for bad options or a world too
-/// small for the agents. `progress` (may be empty) receives the simulated fraction done.
+/// Runs the crowd (paper section 5). Deterministic for a seed, whatever options.threads. Agents start
+/// at random positions at least 2 r_max apart (r_max: the largest r of the graph) and r_max from the
+/// walls, with random headings; each first choice point offers the successors of a random clip. The
+/// random draws of a choice point (candidate order, first clip, random pick) come from its own stream
+/// of (seed, agent, frame). Choice points take effect in order of frame, then agent: those of one frame
+/// are evaluated in parallel against the clips committed before that frame, then committed in agent
+/// order, and one whose candidates overlap a clip committed earlier in its frame is evaluated again
+/// first, so the outcome equals one-by-one evaluation. A candidate is tested against the committed
+/// clips of the other agents whose space-time boxes overlap its own (BroadPhase); committed clips
+/// checked at every commit guarantee, outside fallbacks, no contact at any frame. Throws
+/// std::invalid_argument for bad options (threads < 1 included), a graph clip without successors or
+/// a world too small for the agents. `progress` (may be empty) receives the simulated fraction done.
 CrowdRun run_crowd(const MotionGraph& graph, const std::vector<Tree>& trees, const CrowdOptions& options,
                    const std::function<void(double)>& progress = {});
 

@@ -22,6 +22,13 @@ public:
     /// Does clip a placed at pa collide with clip b placed at pb? Same predicate as core collide().
     /// Adds its work to stats when not null.
     virtual bool query(int a, const Placement& pa, int b, const Placement& pb, QueryStats* stats) const = 0;
+    /// Slow methods (brute force, FCL) are timed on a prefix of the queries only (see time_methods).
+    virtual bool slow() const { return false; }
+    /// Empty when the method can run; otherwise why not (e.g. "built without FCL"): its row is kept,
+    /// untimed, with this as its note.
+    virtual std::string unavailable() const { return {}; }
+    /// Caveat printed with the row (e.g. FCL's conservative model); empty when none.
+    virtual std::string note() const { return {}; }
 };
 
 /// A core tree of one type (n_min samples per leaf) per clip, queried with collide().
@@ -29,9 +36,25 @@ std::unique_ptr<QueryMethod> tree_method(TreeType type, int n_min = 10);
 /// The brute-force reference, collide_brute() on the paths.
 std::unique_ptr<QueryMethod> brute_method();
 
+/// The library's default query ("mobb"): a ClipIndex per clip, collide_fast() (core/fast_query.h).
+/// Counts no tests (stats untouched).
+std::unique_ptr<QueryMethod> mobb_method();
+/// The best scan ("best scan"): a ClipIndex per clip, collide_scan() (core/scan.h).
+std::unique_ptr<QueryMethod> scan_method();
+/// The FCL peer ("FCL", bench/fcl_peer.h): one fcl::BVHModel<OBBRSSd> of 8-sided prisms circumscribing
+/// the disks per clip, fcl::collide with a boolean request. Conservative: may report contacts the exact
+/// model does not. When built without FCL (MOBB_WITH_FCL off or libfcl-dev missing) unavailable() says so.
+std::unique_ptr<QueryMethod> fcl_method();
+/// True when FCL was found at configure time.
+bool fcl_built();
+
 /// The rows of the paper's tables, in its order: MOBB 1 level, UMOBB 1 level, MOBB, UMOBB, Hybrid 1,
 /// Hybrid 2, then brute force.
 std::vector<std::unique_ptr<QueryMethod>> paper_methods(int n_min = 10);
+/// The rows of every performance table (issue 5), in order: paper_methods(n_min), then best scan, FCL, mobb.
+std::vector<std::unique_ptr<QueryMethod>> bench_methods(int n_min = 10);
+/// One method by its row name (any of bench_methods()); throws std::invalid_argument for another name.
+std::unique_ptr<QueryMethod> method_by_name(const std::string& name, int n_min = 10);
 
 /// Whether the MOBB root boxes of two placed paths overlap in space-time (the first test of an MOBB
 /// query; "root overlap" in the benchmarks).

@@ -1,0 +1,170 @@
+#include "choice.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "random.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+// How far a point is outside the world rectangle (0 inside), metres.
+double excursion(double x, double y, const CrowdOptions& o) {
+    return std::max({0.0, -x, x - o.width, -y, y - o.height});
+}
+
+}  // namespace
+
+// A candidate "leaves the world" when its root goes farther outside the rectangle than where it
+// starts, so an agent pushed out by a fallback may walk back in.
+Placed place_clip(const MotionGraph& g, int clip, const Placement& p, std::int64_t frame, const CrowdOptions& o) {
+    Placed out{clip, p, {}, false, 0.0};
+    const Rigid2 m = Rigid2::of(p);
+    const Path& path = g.clips[std::size_t(clip)].path;
+    out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + std::int64_t(path.size())};
+    const double start = excursion(p.x, p.y, o);
+    for (const Sample& s : path.samples) {
+        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
+        out.box.x0 = std::min(out.box.x0, x - s.r);
+        out.box.y0 = std::min(out.box.y0, y - s.r);
+        out.box.x1 = std::max(out.box.x1, x + s.r);
+        out.box.y1 = std::max(out.box.y1, y + s.r);
+        out.excess = std::max(out.excess, excursion(x, y, o) - start);
+    }
+    out.outside = out.excess > 0;
+    return out;
+}
+
+void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
+    agent_ = agent;
+    frame_ = frame;
+    Random rng = Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
+    const Agent& a = s.agents[std::size_t(agent)];
+    const MotionGraph& g = s.graph;
+    std::vector<int>& order = order_;
+    base_ = a.start;
+    if (a.clips.empty()) {
+        order = g.clips[std::size_t(rng.below(int(g.clips.size())))].successors;
+    } else {
+        const PlacedClip& last = a.clips.back();
+        order = g.clips[std::size_t(last.clip)].successors;
+        base_ = g.next(last.place, last.clip);
+    }
+    if (order.empty()) throw std::invalid_argument("crowd: a graph clip has no successors");
+    base_.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
+    for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng.below(int(k)))]);
+    random_pick_ = rng.below(int(order.size()));
+    placed_.clear();
+    near_.resize(order.size());
+    asked_.resize(order.size());
+    for (auto& v : asked_) v.clear();
+    queried_ = 0;
+}
+
+const Placed& Choice::place(const CrowdState& s, int k) {
+    while (int(placed_.size()) <= k) placed_.push_back(place_clip(s.graph, order_[placed_.size()], base_, frame_, s.options));
+    return placed_[std::size_t(k)];
+}
+
+const Answer& Choice::ask(const CrowdState& s, int k, std::size_t pos, int id) {
+    std::vector<Answer>& asked = asked_[std::size_t(k)];
+    if (pos < asked.size() && asked[pos].id == id) return asked[pos];
+    const auto [b, index] = s.handles[std::size_t(id)];
+    const PlacedClip& other = s.agents[std::size_t(b)].clips[std::size_t(index)];
+    const Placed& c = placed_[std::size_t(k)];
+    Answer a{id, false, {}};
+    a.hit = collide(s.trees[std::size_t(c.clip)], c.place, s.trees[std::size_t(other.clip)], other.place, &a.stats);
+    // Lists only grow at their end, so the answer belongs at `pos` (anything else is not kept).
+    asked.resize(std::min(asked.size(), pos));
+    asked.push_back(a);
+    return asked.back();
+}
+
+int Choice::count_hits(const CrowdState& s, int k, bool stop_at_hit) {
+    Candidate& cand = point_.candidates[std::size_t(k)];
+    cand.queries = 0;  // a fallback reruns a candidate's queries in full: keep only the full list
+    cand.against.clear();
+    int hits = 0;
+    const std::vector<int>& near = near_[std::size_t(k)];
+    for (std::size_t pos = 0; pos < near.size(); ++pos) {
+        const Answer& a = ask(s, k, pos, near[pos]);
+        const auto [b, index] = s.handles[std::size_t(a.id)];
+        ++cand.queries;
+        cand.against.push_back({b, index, a.hit});
+        ++point_.queries;
+        point_.tests2d += a.stats.tests2d;
+        point_.tests3d += a.stats.tests3d;
+        point_.samples += a.stats.samples;
+        if (!a.hit && a.stats.tests2d + a.stats.tests3d <= 1 && a.stats.samples == 0) ++root_rejected_;
+        if (s.options.log_queries) log_.emplace_back(k, a);
+        if (a.hit) {
+            ++hits;
+            if (stop_at_hit) break;
+        }
+    }
+    cand.hits = hits;
+    return hits;
+}
+
+// Every candidate failed: the fewest collisions, then the least far out.
+int Choice::fallback_pick() const {
+    int taken = 0;
+    for (std::size_t k = 1; k < placed_.size(); ++k) {
+        const Candidate &x = point_.candidates[k], &y = point_.candidates[std::size_t(taken)];
+        if (std::make_pair(x.hits, placed_[k].excess) < std::make_pair(y.hits, placed_[std::size_t(taken)].excess))
+            taken = int(k);
+    }
+    return taken;
+}
+
+void Choice::evaluate(const CrowdState& s) {
+    point_ = ChoicePoint{};
+    point_.agent = agent_;
+    point_.frame = frame_;
+    point_.candidates.reserve(order_.size());
+    queried_ = 0;
+    taken_ = -1;
+    root_rejected_ = 0;
+    log_.clear();
+    const bool random = s.options.select == Selection::Random;
+    for (int k = 0; k < int(order_.size()); ++k) {
+        const Placed& c = place(s, k);
+        point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
+        s.broad.query(c.box, agent_, near_[std::size_t(k)]);
+        queried_ = k + 1;
+        if (!random && c.outside) continue;  // dropped without queries
+        if (count_hits(s, k, !random) == 0 && !random) {
+            taken_ = k;
+            break;
+        }
+    }
+    if (random) {
+        taken_ = random_pick_;
+    } else if (taken_ < 0) {  // every candidate failed: count all collisions
+        point_.fallback = true;
+        for (int k = 0; k < int(placed_.size()); ++k) count_hits(s, k, false);
+        taken_ = fallback_pick();
+    }
+    point_.taken = placed_[std::size_t(taken_)].clip;
+}
+
+bool Choice::affected_by(const BatchGrid& chosen, int below) const {
+    for (int k = 0; k < queried_; ++k)
+        if (chosen.any_before(placed_[std::size_t(k)].box, below)) return true;
+    return false;
+}
+
+bool Choice::affected_by(const SpaceTimeBox& box) const {
+    for (int k = 0; k < queried_; ++k)
+        if (placed_[std::size_t(k)].box.overlaps(box)) return true;
+    return false;
+}
+
+std::uint64_t Choice::near_total() const {
+    std::uint64_t n = 0;
+    for (int k = 0; k < queried_; ++k) n += near_[std::size_t(k)].size();
+    return n;
+}
+
+}  // namespace mobb::crowd
