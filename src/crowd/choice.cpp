@@ -16,22 +16,62 @@ double excursion(double x, double y, const CrowdOptions& o) {
 
 }  // namespace
 
+ClipOutline outline_of(const Path& path) {
+    ClipOutline out;
+    std::vector<std::array<double, 2>> pts;
+    for (const Sample& s : path.samples) {
+        pts.push_back({s.x, s.y});
+        out.r_max = std::max(out.r_max, s.r);
+    }
+    std::sort(pts.begin(), pts.end());
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (pts.size() < 3) {
+        out.hull = pts;
+        return out;
+    }
+    // Andrew's monotone chain: lower hull, then upper hull.
+    auto cross = [](const auto& o, const auto& a, const auto& b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    };
+    std::vector<std::array<double, 2>>& h = out.hull;
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t floor = h.size();
+        for (const auto& q : pts) {
+            while (h.size() >= floor + 2 && cross(h[h.size() - 2], h.back(), q) <= 0) h.pop_back();
+            h.push_back(q);
+        }
+        h.pop_back();  // the next chain starts with it
+        std::reverse(pts.begin(), pts.end());
+    }
+    return out;
+}
+
+std::vector<ClipOutline> outlines_of(const MotionGraph& g) {
+    std::vector<ClipOutline> out;
+    for (const GraphClip& c : g.clips) out.push_back(outline_of(c.path));
+    return out;
+}
+
 // A candidate "leaves the world" when its root goes farther outside the rectangle than where it
 // starts, so an agent pushed out by a fallback may walk back in.
-Placed place_clip(const MotionGraph& g, int clip, const Placement& p, std::int64_t frame, const CrowdOptions& o) {
+Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, std::int64_t frame,
+                  const CrowdOptions& o) {
     Placed out{clip, p, {}, false, 0.0};
     const Rigid2 m = Rigid2::of(p);
-    const Path& path = g.clips[std::size_t(clip)].path;
-    out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + std::int64_t(path.size())};
+    out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + frames};
     const double start = excursion(p.x, p.y, o);
-    for (const Sample& s : path.samples) {
-        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
-        out.box.x0 = std::min(out.box.x0, x - s.r);
-        out.box.y0 = std::min(out.box.y0, y - s.r);
-        out.box.x1 = std::max(out.box.x1, x + s.r);
-        out.box.y1 = std::max(out.box.y1, y + s.r);
+    for (const auto& v : outline.hull) {
+        const double x = m.apply_x(v[0], v[1]), y = m.apply_y(v[0], v[1]);
+        out.box.x0 = std::min(out.box.x0, x);
+        out.box.y0 = std::min(out.box.y0, y);
+        out.box.x1 = std::max(out.box.x1, x);
+        out.box.y1 = std::max(out.box.y1, y);
         out.excess = std::max(out.excess, excursion(x, y, o) - start);
     }
+    out.box.x0 -= outline.r_max;
+    out.box.y0 -= outline.r_max;
+    out.box.x1 += outline.r_max;
+    out.box.y1 += outline.r_max;
     out.outside = out.excess > 0;
     return out;
 }
@@ -63,7 +103,11 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 }
 
 const Placed& Choice::place(const CrowdState& s, int k) {
-    while (int(placed_.size()) <= k) placed_.push_back(place_clip(s.graph, order_[placed_.size()], base_, frame_, s.options));
+    while (int(placed_.size()) <= k) {
+        const int clip = order_[placed_.size()];
+        placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
+                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, frame_, s.options));
+    }
     return placed_[std::size_t(k)];
 }
 

@@ -2,6 +2,7 @@
 // stream, placed in the world, and tested against the clips other agents have committed to.
 // Evaluations only read the committed state, so the choice points of one frame run in parallel.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -22,8 +23,20 @@ struct Placed {
     double excess = 0;  ///< metres farther outside than at the start (ranks fallbacks)
 };
 
-/// Places graph clip `clip` at `p` from global frame `frame` on.
-Placed place_clip(const MotionGraph& g, int clip, const Placement& p, std::int64_t frame, const CrowdOptions& o);
+/// A clip's root positions reduced to their convex hull (clip frame, metres, counter-clockwise) and its
+/// largest radius. A placed clip's world box and how far it leaves the world are maxima of convex
+/// functions of the root position, so the hull's vertices give them: a few points instead of every sample.
+struct ClipOutline {
+    std::vector<std::array<double, 2>> hull;
+    double r_max = 0;
+};
+ClipOutline outline_of(const Path& path);
+std::vector<ClipOutline> outlines_of(const MotionGraph& g);
+
+/// Places graph clip `clip` (outline `outline`) at `p` from global frame `frame` on. The box pads the
+/// hull by r_max, so it holds every sample disk.
+Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, std::int64_t frame,
+                  const CrowdOptions& o);
 
 /// One agent of the simulation: where it started and the clips it committed to, in time order.
 struct Agent {
@@ -34,6 +47,7 @@ struct Agent {
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
 struct CrowdState {
     const MotionGraph& graph;
+    const std::vector<ClipOutline>& outlines;         ///< one per graph clip
     const std::vector<Tree>& trees;
     const CrowdOptions& options;
     const BroadPhase& broad;                          ///< committed clips still playing

@@ -38,12 +38,12 @@ void check(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOpti
 class Simulation {
 public:
     Simulation(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o)
-        : g_(g), trees_(trees), o_(o), pool_(o.threads), broad_(o.cell, o.width, o.height), chosen_(o.cell, o.width, o.height) {}
+        : g_(g), outlines_(outlines_of(g)), trees_(trees), o_(o), pool_(o.threads), broad_(o.cell, o.width, o.height), chosen_(o.cell, o.width, o.height) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
 
 private:
-    CrowdState state() const { return {g_, trees_, o_, broad_, agents_, handles_}; }
+    CrowdState state() const { return {g_, outlines_, trees_, o_, broad_, agents_, handles_}; }
     double max_radius() const;
     void place_agents();
     void run_frames(const std::function<void(double)>& progress);
@@ -53,6 +53,7 @@ private:
     void fill_samples();
 
     const MotionGraph& g_;
+    const std::vector<ClipOutline> outlines_;
     const std::vector<Tree>& trees_;
     const CrowdOptions& o_;
     WorkerPool pool_;

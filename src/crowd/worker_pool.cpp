@@ -1,7 +1,26 @@
 #include "mobb/crowd/worker_pool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
+
+namespace {
+
+// A crowd frame's loops come a fraction of a millisecond apart, and waking a sleeping thread takes
+// about as long: spin this long before sleeping.
+constexpr auto kSpin = std::chrono::microseconds(300);
+
+template <class Ready>
+bool spin_until(Ready&& ready) {
+    const auto end = std::chrono::steady_clock::now() + kSpin;
+    for (int k = 0;; ++k) {
+        if (ready()) return true;
+        if ((k & 63) == 63 && std::chrono::steady_clock::now() > end) return false;
+        std::this_thread::yield();
+    }
+}
+
+}  // namespace
 
 namespace mobb::crowd {
 
@@ -32,12 +51,12 @@ void WorkerPool::for_each(std::size_t n, const std::function<void(std::size_t, i
         {
             std::lock_guard<std::mutex> lock(mutex_);
             job_ = job;
-            ++generation_;
+            posted_.store(++generation_, std::memory_order_release);
         }
         start_.notify_all();
     }
     work(*job, 0);
-    {
+    if (!spin_until([&] { return job->finished.load() == n; })) {
         std::unique_lock<std::mutex> lock(mutex_);
         done_.wait(lock, [&] { return job->finished.load() == n; });
     }
@@ -48,6 +67,7 @@ void WorkerPool::loop(int worker) {
     std::uint64_t seen = 0;
     for (;;) {
         std::shared_ptr<Job> job;
+        spin_until([&] { return posted_.load(std::memory_order_acquire) != seen; });
         {
             std::unique_lock<std::mutex> lock(mutex_);
             start_.wait(lock, [&] { return stop_ || generation_ != seen; });

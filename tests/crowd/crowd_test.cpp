@@ -38,16 +38,20 @@ CrowdRun run(int agents, double seconds, std::uint64_t seed, Selection select, b
     return run_crowd(fixture().graph, fixture().trees, o);
 }
 
-// The space-time box of a placed clip, computed here independently of the simulation.
+// The broad-phase box of a placed clip (crowd.h: its root positions' box padded by its largest
+// radius), computed here from every sample, independently of the simulation's convex hulls.
 SpaceTimeBox box_of(int clip, const Placement& p, std::int64_t start) {
     const Path& path = fixture().graph.clips[std::size_t(clip)].path;
     const Rigid2 m = Rigid2::of(p);
     SpaceTimeBox b{1e300, 1e300, -1e300, -1e300, start, start + std::int64_t(path.size())};
+    double r = 0;
     for (const Sample& s : path.samples) {
         const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
-        b.x0 = std::min(b.x0, x - s.r), b.y0 = std::min(b.y0, y - s.r);
-        b.x1 = std::max(b.x1, x + s.r), b.y1 = std::max(b.y1, y + s.r);
+        b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y);
+        b.x1 = std::max(b.x1, x), b.y1 = std::max(b.y1, y);
+        r = std::max(r, s.r);
     }
+    b.x0 -= r, b.y0 -= r, b.x1 += r, b.y1 += r;
     return b;
 }
 

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "mobb/io/load.h"
@@ -26,17 +28,21 @@ inline bool require_data() {
 }
 
 /// A small deterministic crowd recorded by the real `mobb crowd` (the graph ships in assets/graphs,
-/// its clip paths need no mocap data; the skeletons do). Written once per test run.
+/// its clip paths need no mocap data; the skeletons do). Written once per test process, to a file of
+/// its own: ctest -j runs the discovered tests as parallel processes.
 inline std::string crowd_record() {
-    static const std::string file = [] {
-        const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_record.json";
+    struct Record {
+        std::string path;
+        ~Record() { if (!path.empty()) std::remove(path.c_str()); }
+    };
+    static const Record record = [] {
+        const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_record_" + std::to_string(getpid()) + ".json";
         const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
                                 "\" --agents 12 --world 12x12 --seconds 8 --seed 3 --select avoid --record \"" + out +
                                 "\" > /dev/null";
-        std::remove(out.c_str());
-        return std::system(cmd.c_str()) == 0 ? out : std::string();
+        return Record{std::system(cmd.c_str()) == 0 ? out : std::string()};
     }();
-    return file;
+    return record.path;
 }
 
 }  // namespace mobb::test

@@ -84,7 +84,8 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 /// are evaluated in parallel against the clips committed before that frame, then committed in agent
 /// order, and one whose candidates overlap a clip committed earlier in its frame is evaluated again
 /// first, so the outcome equals one-by-one evaluation. A candidate is tested against the committed
-/// clips of the other agents whose space-time boxes overlap its own (BroadPhase); committed clips
+/// clips of the other agents whose space-time boxes overlap its own (BroadPhase; a box spans the
+/// clip's frames and its root positions padded by its largest radius r); committed clips
 /// checked at every commit guarantee, outside fallbacks, no contact at any frame. Throws
 /// std::invalid_argument for bad options (threads < 1 included), a graph clip without successors or
 /// a world too small for the agents. `progress` (may be empty) receives the simulated fraction done.

@@ -52,6 +52,7 @@ private:
     std::condition_variable start_, done_;
     std::shared_ptr<Job> job_;        // the latest job, guarded by mutex_
     std::uint64_t generation_ = 0;    // one per job that wakes the threads
+    std::atomic<std::uint64_t> posted_{0};  // generation_, readable without the lock (spinning)
     bool stop_ = false;
 };
 
