@@ -1,5 +1,7 @@
 #include "mobb/crowd/broad_phase.h"
 
+#include "mobb/crowd/worker_pool.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -22,12 +24,12 @@ BroadPhase::BroadPhase(double cell, double width, double height) : BroadPhase(ce
 std::int64_t BroadPhase::index(double x) const { return std::int64_t(std::floor(x / cell_)); }
 
 BroadPhase::Cell& BroadPhase::cell(std::int64_t ix, std::int64_t iy) {
-    if (0 <= ix && ix < nx_ && 0 <= iy && iy < ny_) return flat_[std::size_t(ix * ny_ + iy)];
+    if (flat(ix, iy)) return flat_[std::size_t(ix * ny_ + iy)];
     return hashed_[key(ix, iy)];
 }
 
 const BroadPhase::Cell* BroadPhase::find(std::int64_t ix, std::int64_t iy) const {
-    if (0 <= ix && ix < nx_ && 0 <= iy && iy < ny_) return &flat_[std::size_t(ix * ny_ + iy)];
+    if (flat(ix, iy)) return &flat_[std::size_t(ix * ny_ + iy)];
     const auto it = hashed_.find(key(ix, iy));
     return it == hashed_.end() ? nullptr : &it->second;
 }
@@ -39,19 +41,52 @@ void BroadPhase::cells(const SpaceTimeBox& box, F&& f) const {
         for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(ix, iy);
 }
 
-void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
+// The item table's part of an insertion; false when the item is gone already.
+bool BroadPhase::enroll(int id, int owner, const SpaceTimeBox& box) {
     if (id < 0) throw std::invalid_argument("broad phase: negative id");
     if (std::size_t(id) >= items_.size()) items_.resize(std::size_t(id) + 1);
     if (items_[std::size_t(id)].live) remove(id);
-    if (box.f1 <= expired_) return;
+    if (box.f1 <= expired_) return false;
     items_[std::size_t(id)] = {box, owner, true};
     ++live_;
     ends_.emplace(box.f1, id);
+    return true;
+}
+
+// Expired entries leave a cell when something is next put into it.
+void BroadPhase::put(Cell& c, const Entry& e) const {
     const std::int64_t expired = expired_;
-    cells(box, [&](std::int64_t ix, std::int64_t iy) {
-        Cell& c = cell(ix, iy);
-        c.erase(std::remove_if(c.begin(), c.end(), [expired](const Entry& e) { return e.box.f1 <= expired; }), c.end());
-        c.push_back({box, id, owner});
+    c.erase(std::remove_if(c.begin(), c.end(), [expired](const Entry& x) { return x.box.f1 <= expired; }), c.end());
+    c.push_back(e);
+}
+
+void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
+    if (!enroll(id, owner, box)) return;
+    cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), {box, id, owner}); });
+}
+
+void BroadPhase::insert_all(const std::vector<Insertion>& items, WorkerPool& pool) {
+    std::vector<char> kept(items.size());
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        const Insertion& it = items[k];
+        kept[k] = enroll(it.id, it.owner, it.box);
+        if (!kept[k]) continue;
+        cells(it.box, [&](std::int64_t ix, std::int64_t iy) {  // hashing is not thread-safe: here
+            if (!flat(ix, iy)) put(hashed_[key(ix, iy)], {it.box, it.id, it.owner});
+        });
+    }
+    // Bands of columns: a cell belongs to one band, so each cell still receives its items in order.
+    const std::int64_t bands = std::min<std::int64_t>(nx_, 4 * pool.size());
+    pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
+        const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
+        for (std::size_t k = 0; k < items.size(); ++k) {
+            const Insertion& it = items[k];
+            if (!kept[k]) continue;
+            const std::int64_t ix0 = std::max(lo, index(it.box.x0)), ix1 = std::min(hi - 1, index(it.box.x1));
+            const std::int64_t iy0 = std::max<std::int64_t>(0, index(it.box.y0)), iy1 = std::min(ny_ - 1, index(it.box.y1));
+            for (std::int64_t ix = ix0; ix <= ix1; ++ix)
+                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], {it.box, it.id, it.owner});
+        }
     });
 }
 

@@ -49,6 +49,7 @@ private:
     void run_frames(const std::function<void(double)>& progress);
     void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void commit(Choice& c);
+    void flush();
     void log_queries(const Choice& c);
     void fill_samples();
 
@@ -58,6 +59,7 @@ private:
     const CrowdOptions& o_;
     WorkerPool pool_;
     BroadPhase broad_;                             // committed clips still playing
+    std::vector<BroadPhase::Insertion> pending_;   // committed in this frame, not yet in broad_
     BatchGrid chosen_;                             // the clips chosen by the current batch, by position
     std::vector<char> stale_;                      // per position: a clip chosen before may change it
     std::vector<SpaceTimeBox> moved_;             // new boxes of clips chosen differently on re-evaluation
@@ -131,6 +133,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         Choice& c = slots_[i];
         const auto near = [&](const SpaceTimeBox& b) { return c.affected_by(b); };
         if (stale_[i] || std::any_of(moved_.begin(), moved_.end(), near)) {
+            flush();
             const int before = c.taken().clip;
             c.evaluate(s);
             ++out_.summary.reevaluated;
@@ -138,6 +141,13 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         }
         commit(c);
     }
+    flush();
+}
+
+// Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
+void Simulation::flush() {
+    broad_.insert_all(pending_, pool_);
+    pending_.clear();
 }
 
 void Simulation::log_queries(const Choice& c) {
@@ -154,7 +164,7 @@ void Simulation::commit(Choice& c) {
     ChoicePoint& cp = c.point();
     CrowdSummary& s = out_.summary;
     // Every clip live now overlaps the candidates in time (it started before and ends after).
-    const std::uint64_t pairs = broad_.size() * std::uint64_t(c.queried());
+    const std::uint64_t pairs = (broad_.size() + pending_.size()) * std::uint64_t(c.queried());
     cp.pruned = pairs - c.near_total();
     s.time_pairs += pairs;
     if (o_.log_queries) log_queries(c);
@@ -163,7 +173,7 @@ void Simulation::commit(Choice& c) {
     const int id = int(handles_.size());
     a.clips.push_back({taken.clip, taken.box.f0, taken.place, cp.fallback, std::int64_t(out_.record.choices.size())});
     handles_.emplace_back(c.agent(), int(a.clips.size()) - 1);
-    broad_.insert(id, c.agent(), taken.box);
+    pending_.push_back({id, c.agent(), taken.box});
     if (taken.box.f1 < std::int64_t(due_.size())) due_[std::size_t(taken.box.f1)].push_back(c.agent());
     ++s.choice_points;
     s.candidates += cp.candidates.size();

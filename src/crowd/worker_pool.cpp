@@ -6,9 +6,10 @@
 
 namespace {
 
-// A crowd frame's loops come a fraction of a millisecond apart, and waking a sleeping thread takes
-// about as long: spin this long before sleeping.
-constexpr auto kSpin = std::chrono::microseconds(300);
+// A crowd frame's parallel loops come up to a few milliseconds apart (the serial commits between
+// them), and a thread woken from sleep joins a loop late, often after it ended: spin this long first.
+// (300 us: 1.4x on 2 cores at 10,000 agents; 3 ms: 1.7-2x.)
+constexpr auto kSpin = std::chrono::microseconds(3000);
 
 template <class Ready>
 bool spin_until(Ready&& ready) {

@@ -12,6 +12,8 @@
 
 namespace mobb::crowd {
 
+class WorkerPool;
+
 /// Axis-aligned box in space-time: ground rectangle (metres) and global frames [f0, f1).
 struct SpaceTimeBox {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -44,6 +46,14 @@ public:
     /// Adds (or replaces) item `id` >= 0; throws std::invalid_argument for a negative id. Ids index a
     /// table, so keep them dense.
     void insert(int id, int owner, const SpaceTimeBox& box);
+    struct Insertion {
+        int id = 0, owner = -1;
+        SpaceTimeBox box;
+    };
+    /// The same as insert() of each, in order, for distinct ids that are not held; the flat cells are filled
+    /// by `pool`'s workers, each owning a band of grid columns (the crowd commits a frame's clips at
+    /// once). Throws std::invalid_argument for a negative id.
+    void insert_all(const std::vector<Insertion>& items, WorkerPool& pool);
     /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
     /// Drops every item whose box ends at or before `frame` (f1 <= frame): they are no longer reported
@@ -71,6 +81,9 @@ private:
     template <class F>
     void cells(const SpaceTimeBox& box, F&& f) const;
     Cell& cell(std::int64_t ix, std::int64_t iy);
+    bool flat(std::int64_t ix, std::int64_t iy) const { return 0 <= ix && ix < nx_ && 0 <= iy && iy < ny_; }
+    bool enroll(int id, int owner, const SpaceTimeBox& box);
+    void put(Cell& c, const Entry& e) const;
     const Cell* find(std::int64_t ix, std::int64_t iy) const;
     static std::uint64_t key(std::int64_t ix, std::int64_t iy) {
         return (std::uint64_t(ix) << 32) ^ (std::uint64_t(iy) & 0xffffffffull);
