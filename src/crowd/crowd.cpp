@@ -307,10 +307,6 @@ std::string summary_json(const CrowdSummary& s) {
     j["contacts"] = s.contacts;
     j["contacts_outside_fallbacks"] = s.contacts_unexcused;
     j["reevaluated"] = s.reevaluated;
-    j["threads"] = s.threads;
-    j["simulation_seconds"] = s.seconds;
-    j["cd_seconds"] = s.cd_seconds;
-    j["cd_us_per_agent_second"] = s.cd_us_per_agent_second();
     return j.dump();
 }
 

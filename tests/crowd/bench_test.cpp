@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -15,6 +16,9 @@
 
 namespace mobb::crowd {
 namespace {
+
+// A file of this process's own: ctest -j runs this binary's tests as parallel processes.
+std::string temp_file(const std::string& name) { return testing::TempDir() + std::to_string(getpid()) + "_" + name; }
 
 const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
 // Issue 5's row order: paper rows, brute force, best scan, FCL, mobb (then frame stepping in Table 1).
@@ -72,7 +76,7 @@ TEST(Bench, Table1QuickShape) {
     expect_shape(t, true);
     EXPECT_EQ(t.rows.back().method, "frame stepping");
     EXPECT_EQ(t.workload, "table1");
-    const std::string png = testing::TempDir() + "table1.png";
+    const std::string png = temp_file("table1.png");
     write_table_png(t, png);
     std::ifstream f(png, std::ios::binary);
     char magic[4] = {};
@@ -117,7 +121,7 @@ TEST(Bench, QuerySetRoundTrip) {
     QuerySet set;
     set.clips.push_back({1.0 / 30.0, {{0.1, 0.2, 0.3}, {1.0 / 3.0, -2.5e-7, 0.25}}});
     set.queries.push_back({0, 0, {0.5, 1.0 / 7.0, 3.0, 0.1}, {-1, 2, -3.1, 0}});
-    const std::string file = testing::TempDir() + "set.txt";
+    const std::string file = temp_file("set.txt");
     save_query_set(set, file);
     const QuerySet back = load_query_set(file);
     ASSERT_EQ(back.clips.size(), 1u);
@@ -168,7 +172,7 @@ struct Result {
 };
 
 Result run(const std::string& args) {
-    const std::string err = testing::TempDir() + "crowd_cli_err.txt";
+    const std::string err = temp_file("crowd_cli_err.txt");
     const std::string cmd = std::string(MOBB_EXE) + " " + args + " 2>" + err;
     FILE* p = popen(cmd.c_str(), "r");
     std::string out;
@@ -182,7 +186,7 @@ Result run(const std::string& args) {
 }
 
 TEST(CrowdCli, BenchCommandsPrintTables) {
-    const std::string json = testing::TempDir() + "t1.json", png = testing::TempDir() + "t1.png";
+    const std::string json = temp_file("t1.json"), png = temp_file("t1.png");
     const Result r = run("bench table1 --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("| MOBB 1 level |"), std::string::npos);
@@ -213,7 +217,7 @@ void expect_json_rows(const std::string& file, const std::string& workload) {
 }
 
 TEST(CrowdCli, Issue5Workloads) {
-    const std::string json = testing::TempDir() + "w.json", set = testing::TempDir() + "w.queries";
+    const std::string json = temp_file("w.json"), set = temp_file("w.queries");
     for (const std::string w : {"synth42", "synth120"}) {
         const Result r = run("bench " + w + " --quick --quiet --motions 2 --tests 300 --slow-queries 20 --graph " + kGraph +
                              " --json " + json + " --save-queries " + set);
@@ -231,12 +235,34 @@ TEST(CrowdCli, Issue5Workloads) {
 }
 
 TEST(CrowdCli, CrowdPrintsSummaryAndRecord) {
-    const std::string rec = testing::TempDir() + "rec.json";
+    const std::string rec = temp_file("rec.json");
     const Result r = run("crowd --quiet --graph " + kGraph + " --agents 10 --seconds 5 --world 20x20 --record " + rec);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("0 outside fallbacks"), std::string::npos) << r.out;
     EXPECT_EQ(load_record(rec).tracks.size(), 10u);
     std::remove(rec.c_str());
+}
+
+// The record file is the same, byte for byte, for another run and another thread count (wall times
+// and the thread count are printed, not recorded).
+TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
+    const std::string args = "crowd --quiet --graph " + kGraph + " --agents 40 --seconds 10 --world 20x25 --seed 5 --record ";
+    std::string text[3];
+    const int threads[3] = {1, 2, 2};
+    for (int k = 0; k < 3; ++k) {
+        const std::string rec = temp_file("rec" + std::to_string(k) + ".json");
+        const Result r = run(args + rec + " --threads " + std::to_string(threads[k]));
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find(std::to_string(threads[k]) + " threads"), std::string::npos) << r.out;
+        std::ifstream f(rec);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        text[k] = ss.str();
+        std::remove(rec.c_str());
+    }
+    EXPECT_FALSE(text[0].empty());
+    EXPECT_TRUE(text[1] == text[0]);
+    EXPECT_TRUE(text[2] == text[0]);
 }
 
 TEST(CrowdCli, ErrorsAndExitCodes) {

@@ -63,7 +63,8 @@ struct CrowdSummary {
     /// Collision detection per agent per simulated second, microseconds (0 for an empty run).
     double cd_us_per_agent_second() const;
 };
-/// The summary as one JSON object (the record's "summary"), and as `mobb crowd` prints it.
+/// The summary as one JSON object (the record's "summary": counts only, so a record is the same for
+/// any run and thread count), and as `mobb crowd` prints it (with threads and wall times).
 std::string summary_json(const CrowdSummary& s);
 std::string summary_text(const CrowdSummary& s);
 
