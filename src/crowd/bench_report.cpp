@@ -12,14 +12,6 @@ namespace mobb::crowd {
 
 namespace {
 
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << v;
-    return s.str();
-}
-
 nlohmann::ordered_json targets_json(const std::vector<Target>& targets) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const Target& g : targets)

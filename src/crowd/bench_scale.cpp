@@ -7,20 +7,13 @@
 #include <sstream>
 #include <thread>
 
+#include "json_text.h"
 #include "mobb/crowd/bench_tables.h"
 #include "mobb/crowd/crowd.h"
 
 namespace mobb::crowd {
 
 namespace {
-
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << v;
-    return s.str();
-}
 
 // 64-bit FNV-1a over integers and doubles (bit patterns).
 struct Fnv {
@@ -61,14 +54,20 @@ void world_for(int agents, double area_per_agent, double& width, double& height)
     height = std::sqrt(area * 4.0 / 3.0);
 }
 
-CrowdRun run_one(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents, int threads,
-                 const std::function<void(double)>& progress) {
+// The avoiding crowd of one size at the workload's density.
+CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
     CrowdOptions co;
     co.agents = agents;
     world_for(agents, o.area_per_agent, co.width, co.height);
     co.seconds = o.seconds;
     co.seed = o.seed;
     co.select = Selection::Avoid;
+    return co;
+}
+
+CrowdRun run_one(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents, int threads,
+                 const std::function<void(double)>& progress) {
+    CrowdOptions co = crowd_options(o, agents);
     co.threads = threads;
     return run_crowd(g, trees, co, progress);
 }
@@ -173,12 +172,7 @@ void add_scale_targets(ScaleTable& t) {
 
 // The untimed logged run of one size: a sample of its queries for bench/callgrind_workload.sh.
 void save_scale_queries(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents) {
-    CrowdOptions co;
-    co.agents = agents;
-    world_for(agents, o.area_per_agent, co.width, co.height);
-    co.seconds = o.seconds;
-    co.seed = o.seed;
-    co.select = Selection::Avoid;
+    CrowdOptions co = crowd_options(o, agents);
     co.log_queries = true;
     const CrowdRun run = run_crowd(g, trees, co);
     QuerySet set;

@@ -26,14 +26,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-std::string fixed(double v, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << v;
-    return s.str();
-}
-
 // Maps [0, 1] of a stage onto [lo, hi] of the whole run.
 std::function<void(double)> stage(const std::function<void(double)>& p, double lo, double hi) {
     if (!p) return {};

@@ -1,6 +1,7 @@
 #include "json_text.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace mobb::crowd {
 
@@ -50,6 +51,14 @@ double rounded(double x, int digits) {
     const double scale = std::pow(10.0, digits);
     const double r = std::round(x * scale) / scale;
     return r == 0 ? 0.0 : r;  // no "-0.0"
+}
+
+std::string fixed(double x, int digits) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << x;
+    return s.str();
 }
 
 }  // namespace mobb::crowd

@@ -1,4 +1,5 @@
-// Person-readable JSON text: objects indented, arrays of numbers on one line (paths, samples).
+// Person-readable text: JSON with objects indented and arrays of numbers on one line (paths,
+// samples), and numbers for tables.
 #pragma once
 #include <string>
 
@@ -12,5 +13,8 @@ std::string readable_json(const nlohmann::ordered_json& j);
 
 /// x rounded to `digits` decimals, so the text stays short (1e-6 m: a micrometre).
 double rounded(double x, int digits = 6);
+
+/// x in fixed notation with `digits` decimals (the benchmark tables' cells).
+std::string fixed(double x, int digits);
 
 }  // namespace mobb::crowd
