@@ -66,6 +66,7 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
 }
 
 void BroadPhase::insert_all(const std::vector<Insertion>& items, WorkerPool& pool) {
+    if (items.empty()) return;  // no need to wake the pool
     std::vector<char> kept(items.size());
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Insertion& it = items[k];
