@@ -19,58 +19,22 @@ float round_up(double v) {
     return f;
 }
 
-// Tube of samples [first, end): velocity along the chord from first to last sample (the MOBB
-// axis, paper 3.1), line through the centre of the residuals' bounding rectangle; both stored as
-// float, then the radius measured in double from the float line and rounded up.
-Tube bound(const Path& path, std::size_t first, std::size_t end, bool moving) {
-    const std::size_t last = end - 1;
-    const double m = 0.5 * double(first + last);
-    const Sample& s0 = path.samples[first];
-    const Sample& s1 = path.samples[last];
-    Tube t;
-    if (moving && last > first) {
-        t.vx = float((s1.x - s0.x) / double(last - first));
-        t.vy = float((s1.y - s0.y) / double(last - first));
-    }
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    for (std::size_t i = first; i < end; ++i) {
-        const Sample& s = path.samples[i];
-        const double k = double(i) - m;
-        x0 = std::min(x0, s.x - double(t.vx) * k), x1 = std::max(x1, s.x - double(t.vx) * k);
-        y0 = std::min(y0, s.y - double(t.vy) * k), y1 = std::max(y1, s.y - double(t.vy) * k);
-    }
-    t.x = float(0.5 * (x0 + x1));
-    t.y = float(0.5 * (y0 + y1));
-    double r = 0;
-    for (std::size_t i = first; i < end; ++i) {
-        const Sample& s = path.samples[i];
-        const double k = double(i) - m;
-        r = std::max(r, std::hypot(s.x - double(t.x) - double(t.vx) * k, s.y - double(t.y) - double(t.vy) * k) + s.r);
-    }
-    t.r = round_up(r * (1 + 1e-12));
-    t.speed = round_up(std::hypot(double(t.vx), double(t.vy)) * (1 + 1e-12));
-    return t;
-}
-
-// The thinner of the chord tube and the standing one (a circle): a turning block is often rounder.
-Tube bound(const Path& path, std::size_t first, std::size_t end) {
-    const Tube moving = bound(path, first, end, true), still = bound(path, first, end, false);
-    Tube t = moving.r <= still.r ? moving : still;
+// Bounding circle of samples [first, end), centred on their positions' bounding rectangle.
+void bound_circle(const Path& path, std::size_t first, std::size_t end, float& cx, float& cy, float& cr) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (std::size_t i = first; i < end; ++i) {
         const Sample& s = path.samples[i];
         x0 = std::min(x0, s.x), x1 = std::max(x1, s.x);
         y0 = std::min(y0, s.y), y1 = std::max(y1, s.y);
     }
-    t.cx = float(0.5 * (x0 + x1));
-    t.cy = float(0.5 * (y0 + y1));
+    cx = float(0.5 * (x0 + x1));
+    cy = float(0.5 * (y0 + y1));
     double r = 0;
     for (std::size_t i = first; i < end; ++i) {
         const Sample& s = path.samples[i];
-        r = std::max(r, std::hypot(s.x - double(t.cx), s.y - double(t.cy)) + s.r);
+        r = std::max(r, std::hypot(s.x - double(cx), s.y - double(cy)) + s.r);
     }
-    t.cr = round_up(r * (1 + 1e-12));
-    return t;
+    cr = round_up(r * (1 + 1e-12));
 }
 
 }  // namespace
@@ -78,7 +42,7 @@ Tube bound(const Path& path, std::size_t first, std::size_t end) {
 ClipIndex ClipIndex::build(Path path) {
     validate(path);
     if (path.samples.empty()) throw std::invalid_argument("clip index: the path has no samples");
-    // Sample offsets stay exact in float (half-integers below 2^22) in the tube tests.
+    // More than any motion clip needs: refused rather than tested.
     if (path.samples.size() > (std::size_t(1) << 21))
         throw std::invalid_argument("clip index: more than 2^21 samples");
     ClipIndex c;
@@ -98,8 +62,11 @@ ClipIndex ClipIndex::build(Path path) {
         c.r_[i] = float(path.samples[i].r);
     }
     for (std::size_t block = std::size_t(kLeaf);; block *= 2) {
-        std::vector<Tube> level;
-        for (std::size_t f = 0; f < n; f += block) level.push_back(bound(path, f, std::min(n, f + block)));
+        const std::size_t count = (n + block - 1) / block;
+        Columns level{std::vector<float>(count + 8, NAN), std::vector<float>(count + 8, NAN),
+                      std::vector<float>(count + 8, NAN)};
+        for (std::size_t k = 0; k < count; ++k)
+            bound_circle(path, k * block, std::min(n, (k + 1) * block), level.x[k], level.y[k], level.r[k]);
         c.levels_.push_back(std::move(level));
         if (block >= n) break;
     }

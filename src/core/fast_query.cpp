@@ -6,71 +6,74 @@ namespace mobb {
 
 namespace {
 
-// At most this many time-aligned pairs: scanning them beats descending. 200 covers every crowd
-// query (clips of ~60 samples: up to ~180 pairs over the candidate diagonals), where the scan's high
-// IPC ties collide_scan in time (48: 1.26x slower); on the longest clips 200 costs as many
-// instructions as 48, 600 costs 6 % more there and 20 % more on 42 s sequences (callgrind,
-// bench/crowd_callgrind.sh; times: micro_bench Issue5 interleaved).
+// At most this many time-aligned pairs: scanning them beats sweeping. 200 covers nearly every
+// crowd query (clips of ~60 samples: up to ~180 pairs over the candidate diagonals), where the scan
+// runs 3 % fewer instructions than the sweep (table1); on table2 sweeping from 0 pairs on would save
+// 4 % (callgrind, bench/callgrind_workload.sh; times within the noise either way).
 constexpr std::int64_t kScanPairs = 200;
-// A block at this level or below that may collide is scanned rather than split further: blocks
-// of 32 samples (fewer instructions per query than descending to 16 or scanning at 64, callgrind).
-constexpr int kScanLevel = 1;
-// Below this level blocks are tested as tubes (relative motion: tighter, prunes side-by-side
-// walks), above as circles (cheaper; on the CMU sequences about as tight). Chosen by callgrind
-// instruction counts on bench/'s 42 s workload (all tubes, all circles, 2 or 3 tube levels).
-constexpr int kTubeLevels = 2;
+// Sweep blocks: level 1 of the hierarchy (32 samples), in chunks of 16 (one level-5 block, 512
+// samples) whose own circle is tested first. Chosen by callgrind instruction counts on table2,
+// synth42 and synth120 (blocks of 32 beat 16 and 64; the chunk test pays from two chunks on).
+constexpr int kSweepLevel = 1;
+constexpr int kChunkLevel = 5;
+constexpr int kSweepShift = ClipIndex::kLeafShift + kSweepLevel;
+constexpr std::int64_t kChunk = std::int64_t(1) << (kChunkLevel - kSweepLevel);
+// More pairs than this over at most three diagonals: both clips have sweep blocks (level 1).
+static_assert(kScanPairs >= 3 << kSweepShift);
 
-// A's block hierarchy against B's at the same level: an A block is tested against each B block
-// holding its time-aligned partners (at most three), on every candidate diagonal at once; a block
-// that may collide is split, or scanned at kScanLevel. Iterative, depth first, earlier time first.
-// (Starting lower than the top level, where tests nearly always pass, measured worse.)
-bool descend(const detail::PairQuery& q, const detail::Diagonals& diag) {
-    const ClipIndex& a = q.a;
-    const ClipIndex& b = q.b;
-    const auto na = std::int64_t(a.size()), nb = std::int64_t(b.size());
-    std::int64_t ilo = na, ihi = 0;
+// Floor of v / 2^shift for either sign.
+std::int64_t floor_shift(std::int64_t v, int shift) {
+    return v >= 0 ? v >> shift : -((-v + (std::int64_t(1) << shift) - 1) >> shift);
+}
+
+// May A's chunk (block `chunk` of level kChunkLevel) collide with B? Its circle against those of B's
+// blocks at the same level (or B's top) holding its time-aligned partners.
+bool chunk_near(const detail::PairQuery& q, const detail::Diagonals& diag, std::int64_t chunk) {
+    if (q.a.levels() <= kChunkLevel + 1) return true;  // one chunk: the root test already passed
+    const auto na = std::int64_t(q.a.size()), nb = std::int64_t(q.b.size());
+    const int shift = ClipIndex::kLeafShift + kChunkLevel;
+    const std::int64_t f = chunk << shift, e = std::min((chunk + 1) << shift, na);
+    const int kb = std::min(kChunkLevel, q.b.levels() - 1);
+    const int shift_b = ClipIndex::kLeafShift + kb;
+    const std::int64_t g0 = std::max<std::int64_t>(0, f + diag.dmin) >> shift_b;
+    const std::int64_t g1 = (std::min(nb, e + diag.dmax) - 1) >> shift_b;
+    const Circles ca = q.a.level(kChunkLevel), cb = q.b.level(kb);
+    for (std::int64_t g = g0; g <= g1; ++g)
+        if (q.circles_overlap(ca, chunk, cb, g)) return true;
+    return false;
+}
+
+// A's sweep blocks in the time overlap against B's, chunk by chunk in time order. As both clips'
+// blocks start at sample 0, the B blocks holding the partners of A's block k are k + o for a few
+// constant offsets o (dmin and dmax of the diagonals, in blocks), so a chunk's blocks are tested
+// four at a time without branches; then the blocks that may collide are scanned, earlier first,
+// every candidate diagonal at once.
+bool sweep(const detail::PairQuery& q, const detail::Diagonals& diag) {
+    std::int64_t ilo = std::int64_t(q.a.size()), ihi = 0;
     for (int k = 0; k < diag.count; ++k) ilo = std::min(ilo, diag.lo[k]), ihi = std::max(ihi, diag.hi[k]);
-
-    struct Item {
-        int level;
-        std::int64_t block;
-    };
-    Item stack[64];  // depth-first: at most one pending sibling per level (< 22 levels)
-    int top = 0;
-    stack[top++] = {a.levels() - 1, 0};
-    const int b_top = b.levels() - 1;
-    while (top > 0) {
-        const Item it = stack[--top];
-        const int shift = ClipIndex::kLeafShift + it.level;
-        const std::int64_t block_first = it.block << shift;
-        const std::int64_t block_end = std::min((it.block + 1) << shift, na);
-        const std::int64_t f = std::max(block_first, ilo), e = std::min(block_end, ihi);
-        if (f >= e) continue;
-        const Tube& ta = a.level(it.level)[std::size_t(it.block)];
-        const std::int64_t ma2 = block_first + block_end - 1;
-        const int kb = std::min(it.level, b_top);
-        const int shift_b = ClipIndex::kLeafShift + kb;
-        const std::vector<Tube>& lb = b.level(kb);
-        const std::int64_t g0 = std::max<std::int64_t>(0, f + diag.dmin) >> shift_b;
-        const std::int64_t g1 = (std::min(nb, e + diag.dmax) - 1) >> shift_b;
-        bool near = false;
-        if (it.level < kTubeLevels) {
-            for (std::int64_t g = g0; g <= g1 && !near; ++g) {
-                const std::int64_t bf = g << shift_b, be = std::min((g + 1) << shift_b, nb);
-                const std::int64_t lo = std::max(f, bf - diag.dmax), hi = std::min(e, be - diag.dmin);
-                near = lo < hi && q.tubes_overlap(ta, ma2, lb[std::size_t(g)], bf + be - 1, lo, hi, diag.dmin, diag.dmax);
+    const std::int64_t k0 = ilo >> kSweepShift, k1 = ((ihi - 1) >> kSweepShift) + 1;
+    const std::int64_t o0 = floor_shift(diag.dmin, kSweepShift);
+    const std::int64_t o1 = floor_shift(diag.dmax + (std::int64_t(1) << kSweepShift) - 1, kSweepShift);
+    const Circles ca = q.a.level(kSweepLevel), cb = q.b.level(kSweepLevel);
+    const auto nbb = std::int64_t(cb.count);
+    for (std::int64_t c = k0 & ~(kChunk - 1); c < k1; c += kChunk) {
+        if (!chunk_near(q, diag, c / kChunk)) continue;
+        unsigned mask = 0;
+        for (std::int64_t o = o0; o <= o1; ++o) {
+            const std::int64_t lo = std::max({c, k0, -o}), hi = std::min({c + kChunk, k1, nbb - o});
+            for (std::int64_t k = lo; k < hi; k += 4) {
+                unsigned m = q.circles4(ca, k, cb, k + o);
+                if (hi - k < 4) m &= (1u << unsigned(hi - k)) - 1u;
+                mask |= m << unsigned(k - c);
             }
-        } else {
-            for (std::int64_t g = g0; g <= g1 && !near; ++g) near = q.circles_overlap(ta, lb[std::size_t(g)]);
         }
-        if (!near) continue;
-        if (it.level <= kScanLevel) {
-            for (int k = 0; k < diag.count; ++k)
-                if (q.scan_diagonal(diag.d[k], std::max(f, diag.lo[k]), std::min(e, diag.hi[k]))) return true;
-            continue;
+        for (; mask; mask &= mask - 1) {
+            const std::int64_t k = c + __builtin_ctz(mask), f = k << kSweepShift, e = (k + 1) << kSweepShift;
+            for (int j = 0; j < diag.count; ++j) {
+                const std::int64_t lo = std::max(f, diag.lo[j]), hi = std::min(e, diag.hi[j]);
+                if (lo < hi && q.scan_diagonal(diag.d[j], lo, hi)) return true;
+            }
         }
-        stack[top++] = {it.level - 1, 2 * it.block + 1};
-        stack[top++] = {it.level - 1, 2 * it.block};
     }
     return false;
 }
@@ -90,7 +93,7 @@ bool collide_fast(const ClipIndex& a, const Placement& pa, const ClipIndex& b, c
             if (q.scan_diagonal(diag.d[k], diag.lo[k], diag.hi[k])) return true;
         return false;
     }
-    return descend(q, diag);
+    return sweep(q, diag);
 }
 
 }  // namespace mobb

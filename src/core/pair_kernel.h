@@ -66,44 +66,28 @@ struct PairQuery {
         return true;
     }
 
-    // Bounding circles of two blocks (B moved into A's frame) may overlap: never false for blocks
-    // holding a colliding pair.
-    bool circles_overlap(const Tube& x, const Tube& y) const {
-        const float qx = c * y.cx - s * y.cy + tx, qy = s * y.cx + c * y.cy + ty;
-        const float dx = x.cx - qx, dy = x.cy - qy, rr = x.cr + y.cr + margin;
-        return dx * dx + dy * dy < rr * rr;
-    }
-
-    // Could a pair (i, i + d), i in [lo, hi), d in [dmin, dmax], collide, given tube x of A's block
-    // and tube y of B's block holding them? Middle samples are passed doubled (first + last of the
-    // block) so every offset is an integer, exact in float below 2^22. In A's frame the two lines
-    // differ by P + W u at u = i - ma (plus B's speed times |d - d0| for the spread of d); their
-    // closest approach over the range is tested against the sum of the tube radii. Never false for
-    // a colliding pair: the margin covers float rounding.
-    bool tubes_overlap(const Tube& x, std::int64_t ma2, const Tube& y, std::int64_t mb2, std::int64_t lo,
-                       std::int64_t hi, std::int64_t dmin, std::int64_t dmax) const {
-        const float o = 0.5f * float(ma2 - mb2 + dmin + dmax);
-        const float qcx = c * y.x - s * y.y + tx, qcy = s * y.x + c * y.y + ty;
-        const float qvx = c * y.vx - s * y.vy, qvy = s * y.vx + c * y.vy;
-        const float px = x.x - qcx - qvx * o, py = x.y - qcy - qvy * o;
-        const float wx = x.vx - qvx, wy = x.vy - qvy;
-        const float s0 = 0.5f * float(2 * lo - ma2), s1 = 0.5f * float(2 * hi - 2 - ma2);
-        const float ww = wx * wx + wy * wy, pw = px * wx + py * wy;
-        float t = ww > 0 ? -pw / ww : s0;
-        t = t < s0 ? s0 : (t > s1 ? s1 : t);
-        const float dx = px + wx * t, dy = py + wy * t;
-        const float rr = x.r + y.r + y.speed * (0.5f * float(dmax - dmin)) + margin;
+    // Circle i of A and circle j of B (moved into A's frame) may overlap: never false for blocks
+    // holding a colliding pair (the margin covers float rounding).
+    bool circles_overlap(const Circles& ca, std::int64_t i, const Circles& cb, std::int64_t j) const {
+        const float bx = cb.x[j], by = cb.y[j];
+        const float qx = c * bx - s * by + tx, qy = s * bx + c * by + ty;
+        const float dx = ca.x[i] - qx, dy = ca.y[i] - qy, rr = ca.r[i] + cb.r[j] + margin;
         return dx * dx + dy * dy < rr * rr;
     }
 
     // Bit k set when pair (i + k, j + k), k < 4, may collide. Branch-free.
     unsigned filter4(std::int64_t i, std::int64_t j) const {
-        const float* ax = a.xs() + i;
-        const float* ay = a.ys() + i;
-        const float* ar = a.rs() + i;
-        const float* bx = b.xs() + j;
-        const float* by = b.ys() + j;
-        const float* br = b.rs() + j;
+        return discs4(a.xs() + i, a.ys() + i, a.rs() + i, b.xs() + j, b.ys() + j, b.rs() + j);
+    }
+
+    // Bit k set when circles i + k of A and j + k of B may overlap, k < 4. Branch-free.
+    unsigned circles4(const Circles& ca, std::int64_t i, const Circles& cb, std::int64_t j) const {
+        return discs4(ca.x + i, ca.y + i, ca.r + i, cb.x + j, cb.y + j, cb.r + j);
+    }
+
+    // Bit k set when disc k of A (ax, ay, ar) and disc k of B, moved into A's frame, may overlap.
+    unsigned discs4(const float* ax, const float* ay, const float* ar, const float* bx, const float* by,
+                    const float* br) const {
 #if defined(__SSE2__)
         const __m128 vc = _mm_set1_ps(c), vs = _mm_set1_ps(s), vm = _mm_set1_ps(margin);
         const __m128 x = _mm_loadu_ps(bx), y = _mm_loadu_ps(by);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "mobb/core/brute.h"
@@ -110,7 +111,7 @@ TEST(FastQueryTest, DegeneratePaths) {
         }
 }
 
-// The plan's boundaries: time overlaps of exactly kScanPairs-ish pairs (scan / descend switch),
+// The plan's boundaries: time overlaps of exactly kScanPairs-ish pairs (scan / sweep switch),
 // overlaps of one to a few samples at either end, one-sample clips, different spacings, rotations
 // at and near +-pi and beyond the polynomial range (2^19 rad), huge offsets, jumpy paths (large
 // step slack: the neighbour diagonals come from a widened filter), grid-aligned and shifted times.
@@ -158,24 +159,50 @@ TEST(FastQueryTest, BuildValidates) {
     EXPECT_THROW(ClipIndex::build(p), std::invalid_argument);
 }
 
-TEST(FastQueryTest, HierarchyTubesHoldEveryDisk) {
+TEST(FastQueryTest, HierarchyCirclesHoldEveryDisk) {
     std::mt19937_64 rng(34);
     const Path p = test::random_walk(rng, 777);
     const ClipIndex idx = ClipIndex::build(p);
     for (int k = 0; k < idx.levels(); ++k) {
         const std::size_t block = std::size_t(ClipIndex::kLeaf) << k;
-        ASSERT_EQ(idx.level(k).size(), (p.size() + block - 1) / block);
+        const Circles c = idx.level(k);
+        ASSERT_EQ(c.count, (p.size() + block - 1) / block);
         for (std::size_t i = 0; i < p.size(); ++i) {
-            const std::size_t first = i / block * block, last = std::min(p.size(), first + block) - 1;
-            const double m = 0.5 * double(first + last), dk = double(i) - m;
-            const Tube& t = idx.level(k)[i / block];
+            const std::size_t b = i / block;
             const Sample& s = p.samples[i];
-            EXPECT_LE(std::hypot(s.x - t.x - t.vx * dk, s.y - t.y - t.vy * dk) + s.r, double(t.r));
-            EXPECT_GE(double(t.speed), std::hypot(double(t.vx), double(t.vy)));
-            EXPECT_LE(std::hypot(s.x - t.cx, s.y - t.cy) + s.r, double(t.cr));
+            EXPECT_LE(std::hypot(s.x - c.x[b], s.y - c.y[b]) + s.r, double(c.r[b]));
+        }
+        for (std::size_t b = c.count; b < c.count + 8; ++b) EXPECT_TRUE(std::isnan(c.x[b]) && std::isnan(c.r[b]));
+    }
+    EXPECT_EQ(idx.level(idx.levels() - 1).count, 1u);
+}
+
+// Long clips (many sweep chunks) at every time offset, both orders, close placements so most
+// queries reach the sweep; B from shorter than one chunk to longer than A.
+TEST(FastQueryTest, LongClipsAtEveryOffset) {
+    std::mt19937_64 rng(36);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const Path a = test::random_walk(rng, 2600, 1.0 / 30);
+    const ClipIndex ia = ClipIndex::build(a);
+    int positives = 0, total = 0;
+    for (int nb : {90, 511, 513, 1800, 4100}) {
+        const Path b = test::random_walk(rng, nb, 1.0 / 30);
+        const ClipIndex ib = ClipIndex::build(b);
+        for (int q = 0; q < 400; ++q) {
+            Placement pa = random_placement(rng, 3, 0), pb = random_placement(rng, 3, 0);
+            const double shift = q % 2 ? 0.0 : u(rng) - 0.5;
+            pb.t0 = (double(int(u(rng) * (2600 + nb))) - nb + shift) / 30;
+            const bool expected = collide_brute(a, pa, b, pb);
+            SamplePair h;
+            ASSERT_EQ(collide_fast(ia, pa, ib, pb, &h), expected) << nb << " " << q;
+            ASSERT_EQ(collide_fast(ib, pb, ia, pa), expected) << nb << " " << q;
+            if (expected) expect_real_hit(a, pa, b, pb, h);
+            positives += expected;
+            ++total;
         }
     }
-    EXPECT_EQ(idx.level(idx.levels() - 1).size(), 1u);
+    EXPECT_GT(positives, total / 10);
+    EXPECT_LT(positives, total * 9 / 10);
 }
 
 }  // namespace

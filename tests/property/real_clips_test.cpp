@@ -107,7 +107,7 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
 
 // The fast query's plan boundaries on real clips: crowd-like grid-aligned start times (touching
 // neighbour diagonals decided by one ulp) or shifted ones, overlaps of 0 to 160 samples at either end
-// (around the scan / descend switch), rotations at +-pi, huge global offsets.
+// (around the scan / sweep switch), rotations at +-pi, huge global offsets.
 TEST(RealClipsTest, FastQueryPlanBoundariesAgreeWithBruteForce) {
     MOBB_REQUIRE_MOCAP();
     const Clips& c = clips();

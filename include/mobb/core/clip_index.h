@@ -1,5 +1,5 @@
 // A clip prepared once for the fast queries (fast_query.h, scan.h): float SoA samples, a root box and
-// a time-implicit hierarchy of motion tubes. Built once per clip, queried under any placement.
+// a time-implicit hierarchy of bounding circles. Built once per clip, queried under any placement.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -9,20 +9,19 @@
 
 namespace mobb {
 
-/// A block's motion as a straight line in time, with a tube around it (clip's local frame, float):
-/// sample i of the block lies at (x, y) + (i - m) (vx, vy) within distance r - r_i, where m is the
-/// block's middle sample index (first + last) / 2. So every sample disk lies inside the tube, and two
-/// time-aligned blocks can only collide where their lines come closer than the sum of the tubes' r.
-/// Metres and metres per sample; r rounded outward; `speed` = |(vx, vy)| rounded up. The block also
-/// has a bounding circle (cx, cy, cr), centred on its positions' bounding rectangle, rounded outward:
-/// the cheaper test where motion does not help.
-struct Tube {
-    float x = 0, y = 0, vx = 0, vy = 0, r = 0, speed = 0;
-    float cx = 0, cy = 0, cr = 0;
+/// Bounding circles of one level's blocks as float columns (clip's local frame, metres; centre of
+/// the block's positions' bounding rectangle, radius holding every sample disk, rounded outward).
+/// The columns hold count + 8 entries: the padding is NaN, so 4-wide tests past the end stay in
+/// bounds and never pass.
+struct Circles {
+    const float* x = nullptr;
+    const float* y = nullptr;
+    const float* r = nullptr;
+    std::size_t count = 0;
 };
 
 /// Per-clip acceleration structure for collide_fast() and collide_scan().
-/// Level k of the hierarchy holds one tube per block of `kLeaf << k` consecutive samples
+/// Level k of the hierarchy holds one circle per block of `kLeaf << k` consecutive samples
 /// (block b covers samples [b * (kLeaf << k), (b + 1) * (kLeaf << k)) clipped to the path), so a
 /// block's time range is implicit and its children at level k - 1 are blocks 2b and 2b + 1. The top
 /// level has one block. The double samples stay in path() for the exact final test.
@@ -45,16 +44,23 @@ public:
     const float* ys() const { return y_.data(); }
     const float* rs() const { return r_.data(); }
     int levels() const { return int(levels_.size()); }
-    const std::vector<Tube>& level(int k) const { return levels_[std::size_t(k)]; }
+    /// Level k's circles, 0 <= k < levels().
+    Circles level(int k) const {
+        const Columns& c = levels_[std::size_t(k)];
+        return {c.x.data(), c.y.data(), c.r.data(), c.x.size() - 8};
+    }
     /// Largest |x| + |y| of any sample (metres) and largest radius: scale for rounding margins.
     double max_abs() const { return max_abs_; }
     double max_radius() const { return max_r_; }
 
 private:
+    struct Columns {
+        std::vector<float> x, y, r;
+    };
     Path path_;
     Obb2 root_;
     std::vector<float> x_, y_, r_;
-    std::vector<std::vector<Tube>> levels_;
+    std::vector<Columns> levels_;
     double max_abs_ = 0, max_r_ = 0;
 };
 
