@@ -46,8 +46,7 @@ bool chunk_near(const detail::PairQuery& q, const detail::Diagonals& diag, std::
 // A's sweep blocks in the time overlap against B's, chunk by chunk in time order. As both clips'
 // blocks start at sample 0, the B blocks holding the partners of A's block k are k + o for a few
 // constant offsets o (dmin and dmax of the diagonals, in blocks), so a chunk's blocks are tested
-// four at a time without branches; then the blocks that may collide are scanned, earlier first,
-// every candidate diagonal at once.
+// four at a time without branches; then the blocks that may collide are scanned, earlier first.
 bool sweep(const detail::PairQuery& q, const detail::Diagonals& diag) {
     std::int64_t ilo = std::int64_t(q.a.size()), ihi = 0;
     for (int k = 0; k < diag.count; ++k) ilo = std::min(ilo, diag.lo[k]), ihi = std::max(ihi, diag.hi[k]);
@@ -67,12 +66,16 @@ bool sweep(const detail::PairQuery& q, const detail::Diagonals& diag) {
                 mask |= m << unsigned(k - c);
             }
         }
-        for (; mask; mask &= mask - 1) {
-            const std::int64_t k = c + __builtin_ctz(mask), f = k << kSweepShift, e = (k + 1) << kSweepShift;
+        // A run of consecutive blocks is scanned as one range, so where nothing prunes the sweep
+        // costs little more than the scan. (Runs carried across chunks scan later: more instructions.)
+        while (mask) {
+            const int first = __builtin_ctz(mask), len = __builtin_ctz(~(mask >> first));
+            const std::int64_t f = (c + first) << kSweepShift, e = (c + first + len) << kSweepShift;
             for (int j = 0; j < diag.count; ++j) {
                 const std::int64_t lo = std::max(f, diag.lo[j]), hi = std::min(e, diag.hi[j]);
                 if (lo < hi && q.scan_diagonal(diag.d[j], lo, hi)) return true;
             }
+            mask &= ~(((1u << len) - 1u) << first);
         }
     }
     return false;
