@@ -114,8 +114,7 @@ const Placed& Choice::place(const CrowdState& s, int k) {
 const Answer& Choice::ask(const CrowdState& s, int k, std::size_t pos, int id) {
     std::vector<Answer>& asked = asked_[std::size_t(k)];
     if (pos < asked.size() && asked[pos].id == id) return asked[pos];
-    const auto [b, index] = s.handles[std::size_t(id)];
-    const PlacedClip& other = s.agents[std::size_t(b)].clips[std::size_t(index)];
+    const Committed& other = s.committed[std::size_t(id)];
     const Placed& c = placed_[std::size_t(k)];
     Answer a{id, false, {}};
     a.hit = collide(s.trees[std::size_t(c.clip)], c.place, s.trees[std::size_t(other.clip)], other.place, &a.stats);
@@ -133,9 +132,9 @@ int Choice::count_hits(const CrowdState& s, int k, bool stop_at_hit) {
     const std::vector<int>& near = near_[std::size_t(k)];
     for (std::size_t pos = 0; pos < near.size(); ++pos) {
         const Answer& a = ask(s, k, pos, near[pos]);
-        const auto [b, index] = s.handles[std::size_t(a.id)];
+        const Committed& other = s.committed[std::size_t(a.id)];
         ++cand.queries;
-        cand.against.push_back({b, index, a.hit});
+        cand.against.push_back({other.agent, other.index, a.hit});
         ++point_.queries;
         point_.tests2d += a.stats.tests2d;
         point_.tests3d += a.stats.tests3d;

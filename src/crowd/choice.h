@@ -44,6 +44,13 @@ struct Agent {
     std::vector<PlacedClip> clips;
 };
 
+/// A committed clip by broad-phase id: whose it is (agent, index in its clips) and where it plays,
+/// copied from the agent's clip so a query reads one compact entry.
+struct Committed {
+    int agent = 0, index = 0, clip = 0;
+    Placement place;
+};
+
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
 struct CrowdState {
     const MotionGraph& graph;
@@ -52,7 +59,7 @@ struct CrowdState {
     const CrowdOptions& options;
     const BroadPhase& broad;                          ///< committed clips still playing
     const std::vector<Agent>& agents;
-    const std::vector<std::pair<int, int>>& handles;  ///< broad-phase id -> (agent, clip index)
+    const std::vector<Committed>& committed;          ///< by broad-phase id
 };
 
 /// One narrow-phase query as run: the committed clip's broad-phase id and the answer.

@@ -43,7 +43,7 @@ public:
     CrowdRun run(const std::function<void(double)>& progress);
 
 private:
-    CrowdState state() const { return {g_, outlines_, trees_, o_, broad_, agents_, handles_}; }
+    CrowdState state() const { return {g_, outlines_, trees_, o_, broad_, agents_, committed_}; }
     double max_radius() const;
     void place_agents();
     void run_frames(const std::function<void(double)>& progress);
@@ -64,7 +64,7 @@ private:
     std::vector<char> stale_;                      // per position: a clip chosen before may change it
     std::vector<SpaceTimeBox> moved_;             // new boxes of clips chosen differently on re-evaluation
     std::vector<Agent> agents_;
-    std::vector<std::pair<int, int>> handles_;     // broad-phase id -> (agent, clip index)
+    std::vector<Committed> committed_;             // by broad-phase id
     std::vector<std::vector<int>> due_;            // per frame: agents at a choice point
     std::vector<Choice> slots_;                    // one per choice point of a batch, reused
     CrowdRun out_;
@@ -154,8 +154,7 @@ void Simulation::log_queries(const Choice& c) {
     const int choice = int(out_.record.choices.size());
     for (const auto& [k, a] : c.log()) {
         const Placed& cand = c.candidate(k);
-        const auto [b, index] = handles_[std::size_t(a.id)];
-        const PlacedClip& other = agents_[std::size_t(b)].clips[std::size_t(index)];
+        const Committed& other = committed_[std::size_t(a.id)];
         out_.queries.push_back({choice, k, cand.clip, other.clip, cand.place, other.place, a.hit});
     }
 }
@@ -170,9 +169,9 @@ void Simulation::commit(Choice& c) {
     if (o_.log_queries) log_queries(c);
     const Placed& taken = c.taken();
     Agent& a = agents_[std::size_t(c.agent())];
-    const int id = int(handles_.size());
+    const int id = int(committed_.size());
     a.clips.push_back({taken.clip, taken.box.f0, taken.place, cp.fallback, std::int64_t(out_.record.choices.size())});
-    handles_.emplace_back(c.agent(), int(a.clips.size()) - 1);
+    committed_.push_back({c.agent(), int(a.clips.size()) - 1, taken.clip, taken.place});
     pending_.push_back({id, c.agent(), taken.box});
     if (taken.box.f1 < std::int64_t(due_.size())) due_[std::size_t(taken.box.f1)].push_back(c.agent());
     ++s.choice_points;
@@ -200,7 +199,7 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     for (const GraphClip& c : g_.clips) samples += c.path.size();
     const double expected = double(o_.agents) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
     out_.record.choices.reserve(std::size_t(expected * 1.2));
-    handles_.reserve(std::size_t(expected * 1.2));
+    committed_.reserve(std::size_t(expected * 1.2));
     std::int64_t reported = -1;
     for (std::int64_t f = 0; f < frames; ++f) {
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
