@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <algorithm>
 #include <fstream>
-#include <unistd.h>
 #include <sys/wait.h>
 #include <sstream>
 #include <string>
@@ -12,28 +11,21 @@
 #include <nlohmann/json.hpp>
 
 #include "data.h"
+#include "files.h"
 
 namespace {
+
+using mobb::test::slurp;
+using mobb::test::temp_file;
 
 struct Result {
     int code = -1;
     std::string out, err;
 };
 
-std::string slurp(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string temp_path(const std::string& name) {
-    return testing::TempDir() + "mobb_cli_" + std::to_string(::getpid()) + "_" + name;
-}
-
 // Runs `mobb ARGS` with optional stdin text, capturing stdout and stderr.
 Result mobb(const std::string& args, const std::string& input = "") {
-    const std::string in = temp_path("in"), out = temp_path("out"), err = temp_path("err");
+    const std::string in = temp_file("in"), out = temp_file("out"), err = temp_file("err");
     std::ofstream(in) << input;
     const std::string cmd = std::string(MOBB_EXE) + " " + args + " <" + in + " >" + out + " 2>" + err;
     const int status = std::system(cmd.c_str());
@@ -47,7 +39,7 @@ Result mobb(const std::string& args, const std::string& input = "") {
 std::string cmu(const std::string& name) { return mobb::test::data_file("cmu/" + name); }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = temp_path(name);
+    const std::string path = temp_file(name);
     std::ofstream(path) << text;
     return path;
 }

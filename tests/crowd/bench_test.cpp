@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -11,14 +10,14 @@
 #include <nlohmann/json.hpp>
 
 #include "data.h"
+#include "files.h"
 #include "mobb/crowd/bench_tables.h"
 #include "mobb/crowd/record.h"
 
 namespace mobb::crowd {
 namespace {
 
-// A file of this process's own: ctest -j runs this binary's tests as parallel processes.
-std::string temp_file(const std::string& name) { return testing::TempDir() + std::to_string(getpid()) + "_" + name; }
+using test::temp_file;
 
 const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
 // Issue 5's row order: paper rows, brute force, best scan, FCL, mobb (then frame stepping in Table 1).
@@ -179,10 +178,7 @@ Result run(const std::string& args) {
     char buf[4096];
     for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
     const int status = pclose(p);
-    std::ifstream e(err);
-    std::stringstream es;
-    es << e.rdbuf();
-    return {WEXITSTATUS(status), out, es.str()};
+    return {WEXITSTATUS(status), out, test::slurp(err)};
 }
 
 TEST(CrowdCli, BenchCommandsPrintTables) {
@@ -254,10 +250,7 @@ TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
         const Result r = run(args + rec + " --threads " + std::to_string(threads[k]));
         ASSERT_EQ(r.code, 0) << r.err;
         EXPECT_NE(r.out.find(std::to_string(threads[k]) + " threads"), std::string::npos) << r.out;
-        std::ifstream f(rec);
-        std::stringstream ss;
-        ss << f.rdbuf();
-        text[k] = ss.str();
+        text[k] = test::slurp(rec);
         std::remove(rec.c_str());
     }
     EXPECT_FALSE(text[0].empty());

@@ -1,6 +1,4 @@
 // Crowd runs on the committed graph, checked on their records by this test's own frame-by-frame scan.
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "files.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/worker_pool.h"
@@ -17,8 +16,7 @@
 namespace mobb::crowd {
 namespace {
 
-// A file of this process's own: ctest -j runs this binary's tests as parallel processes.
-std::string temp_file(const std::string& name) { return testing::TempDir() + std::to_string(getpid()) + "_" + name; }
+using test::temp_file;
 
 const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
 
