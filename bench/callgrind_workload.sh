@@ -8,8 +8,8 @@
 #   QUERY_SET: the file of `mobb bench WORKLOAD --save-queries FILE`; without it the set is regenerated
 #   with the default options (one timed pass, output discarded). For scale it is the FILE prefix: the
 #   sets FILE.<agents> (a sample of each crowd's queries), on which "MOBB" (the crowd's own query,
-#   src/crowd/choice.cpp) and "mobb" (the default query) are counted.
-# Release build and valgrind needed. Only mobb_workload_queries is measured (loading, preparing the method
+#   src/crowd/choice.cpp) and "circle sweep" (the library's fastest) are counted.
+# Release build and valgrind needed. Only mobb_run_queries is measured (loading, preparing the method
 # excluded): the first N queries of the set, N = 5000 (300 for brute force and FCL, which are slow under
 # callgrind), or all when fewer.
 set -eu
@@ -18,7 +18,7 @@ build=${2:?usage: bench/callgrind_workload.sh WORKLOAD BUILD_DIR [QUERY_SET]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 json="$root/bench/results/$workload.json"
 md="$root/bench/results/$workload.md"
-driver="$build/bench/mobb_workload_driver"
+driver="$build/bench/mobb_query_driver"
 [ -f "$json" ] || { echo "no $json: run mobb bench $workload --json first" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -32,7 +32,7 @@ if [ -z "$set_file" ]; then
 fi
 # count METHOD N SET LABEL: one callgrind run, appended to $tmp/counts as "LABEL<TAB>method<TAB>instr<TAB>queries".
 count() {
-  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" --toggle-collect=mobb_workload_queries \
+  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" --toggle-collect=mobb_run_queries \
     "$driver" "$3" "$1" "$2" >"$tmp/out" 2>"$tmp/log"
   total=$(sed -n 's/.*refs: *//p' "$tmp/log" | tr -d ,)
   done_n=$(sed -n 's/^queries \([0-9]*\) .*/\1/p' "$tmp/out")
@@ -43,7 +43,7 @@ count() {
 if [ "$workload" = scale ]; then
   for n in $(python3 -c 'import json,sys; [print(r["agents"]) for r in json.load(open(sys.argv[1]))["rows"]]' "$json"); do
     count MOBB 5000 "$set_file.$n" "$n"
-    count mobb 5000 "$set_file.$n" "$n"
+    count "circle sweep" 5000 "$set_file.$n" "$n"
   done
   python3 "$root/bench/merge_callgrind.py" "$json" "$md" "$tmp/counts" "$(valgrind --version)"
   exit 0

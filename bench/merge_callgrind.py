@@ -3,14 +3,15 @@
 
 Usage: merge_callgrind.py RESULTS.json RESULTS.md COUNTS VALGRIND_VERSION
 COUNTS: lines "label<TAB>method<TAB>instructions<TAB>queries"; label "-" for the method tables, where
-"instructions_per_query", "callgrind_queries" and "x_mobb_instructions" (method / mobb) go to the rows
-of that method; for scale the label is the row's agent count, and the row gets the crowd's own query
-("MOBB") as "instructions_per_query" and the default query as "instructions_per_query_mobb". Adds a
-"callgrind" note and a Markdown table (replacing any earlier one)."""
+"instructions_per_query", "callgrind_queries" and "x_sweep_instructions" (method / circle sweep) go to
+the rows of that method; for scale the label is the row's agent count, and the row gets the crowd's own
+query ("MOBB") as "instructions_per_query" and the circle sweep as "instructions_per_query_sweep". Adds
+a "callgrind" note and a Markdown table (replacing any earlier one)."""
 import json
 import sys
 
 MARK = "\n#### Instructions per query (callgrind)\n"
+SWEEP = "circle sweep"
 
 
 def append_markdown(md_path, version, lines):
@@ -28,19 +29,19 @@ def write_json(path, data):
 
 
 def merge_scale(data, counts, version):
-    lines = ["| agents | MOBB (the crowd's query) instr / query | mobb instr / query | queries sampled |",
+    lines = ["| agents | MOBB (the crowd's query) instr / query | circle sweep instr / query | queries sampled |",
              "|---:|---:|---:|---:|"]
     for row in data["rows"]:
         label = str(row["agents"])
-        crowd, fast = counts.get((label, "MOBB")), counts.get((label, "mobb"))
+        crowd, fast = counts.get((label, "MOBB")), counts.get((label, SWEEP))
         if not crowd or not fast or crowd[1] == 0:
             continue
         row["instructions_per_query"] = round(crowd[0] / crowd[1], 1)
-        row["instructions_per_query_mobb"] = round(fast[0] / fast[1], 1)
+        row["instructions_per_query_sweep"] = round(fast[0] / fast[1], 1)
         row["callgrind_queries"] = crowd[1]
         lines.append("| %s | %.0f | %.0f | %d |" % (label, crowd[0] / crowd[1], fast[0] / fast[1], crowd[1]))
     data["notes"]["callgrind"] = (version + ", Release build; up to 5,000 queries sampled evenly from a logged "
-                                  "1-thread run of each size, the query loop only (bench/workload_driver.cpp)")
+                                  "1-thread run of each size, the query loop only (bench/query_driver.cpp)")
     return lines
 
 
@@ -58,20 +59,20 @@ def main():
         return
     counts = {m: v for (label, m), v in raw.items()}
     per = {m: t / q for m, (t, q) in counts.items() if q > 0}
-    mobb = per.get("mobb")
+    sweep = per.get(SWEEP)
     for row in data["rows"]:
         if row["method"] in per:
             row["instructions_per_query"] = round(per[row["method"]], 1)
             row["callgrind_queries"] = counts[row["method"]][1]
-            if mobb:
-                row["x_mobb_instructions"] = round(per[row["method"]] / mobb, 3)
+            if sweep:
+                row["x_sweep_instructions"] = round(per[row["method"]] / sweep, 3)
     data["notes"]["callgrind"] = (version + ", Release build; instructions of the query loop only "
-                                  "(bench/workload_driver.cpp), the first callgrind_queries queries of the set")
+                                  "(bench/query_driver.cpp), the first callgrind_queries queries of the set")
     write_json(path, data)
-    lines = ["| Method | instructions / query | x mobb | queries |", "|---|---:|---:|---:|"]
+    lines = ["| Method | instructions / query | x sweep | queries |", "|---|---:|---:|---:|"]
     for row in data["rows"]:
         if row["method"] in per:
-            ratio = "%.2f" % (per[row["method"]] / mobb) if mobb else "-"
+            ratio = "%.2f" % (per[row["method"]] / sweep) if sweep else "-"
             lines.append("| %s | %.0f | %s | %d |" % (row["method"], per[row["method"]], ratio, counts[row["method"]][1]))
     append_markdown(md_path, version, lines)
 

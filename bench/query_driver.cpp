@@ -1,43 +1,51 @@
-// Runs N queries of one method on the ~42 s workload, for instruction counts:
-//   valgrind --tool=callgrind --toggle-collect=mobb_run_queries build/bench/mobb_query_driver fast 30 4096
-// Only mobb_run_queries is measured (setup excluded); divide its instructions by N.
+// Runs N queries of one method on one workload, for instruction counts under callgrind:
+//   valgrind --tool=callgrind --toggle-collect=mobb_run_queries build/bench/mobb_query_driver SET METHOD N
+// SET: a query-set file (`mobb bench WORKLOAD --save-queries FILE`) or a workload name (table1, table2,
+// synth42, synth120, seq42-30, seq42-60: src/bench/tables.h). METHOD: a key or a label of
+// src/bench/method.h ("sweep", "MOBB 1 level", ...). N: the first N queries (all when 0 or more than
+// the set holds).
+// Only mobb_run_queries is measured (loading and preparing the method are excluded): divide its
+// instructions by the count printed.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
-#include "workload.h"
+#include "method.h"
+#include "query_set.h"
+#include "tables.h"
 
-extern "C" __attribute__((noinline)) std::size_t mobb_run_queries(const void* workload, int method, std::size_t n) {
-    const auto& w = *static_cast<const mobb::bench::Workload*>(workload);
+extern "C" __attribute__((noinline)) std::size_t mobb_run_queries(const void* set, const void* method, std::size_t n) {
+    const auto& s = *static_cast<const mobb::bench::QuerySet*>(set);
+    const auto& m = *static_cast<const mobb::bench::QueryMethod*>(method);
     std::size_t hits = 0;
-    for (std::size_t i = 0; i < n; ++i) hits += w.query(mobb::bench::Method(method), i % w.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        const mobb::bench::ClipQuery& q = s.queries[k];
+        hits += m.query(q.a, q.pa, q.b, q.pb, nullptr);
+    }
     return hits;
 }
 
 int main(int argc, char** argv) {
+    using namespace mobb::bench;
     if (argc != 4) {
-        std::fprintf(stderr, "usage: mobb_query_driver METHOD FPS N\n");
+        std::fprintf(stderr, "usage: mobb_query_driver SET METHOD N\n");
         return 2;
     }
     try {
-        const mobb::bench::Method m = mobb::bench::parse_method(argv[1]);
-        const double fps = std::atof(argv[2]);
-        const auto n = std::size_t(std::atoll(argv[3]));
-        const auto w = mobb::bench::Workload::make(fps, m == mobb::bench::Method::Fcl);
-        if (m == mobb::bench::Method::Fcl && w.fcl.empty()) throw std::runtime_error("built without FCL");
-        const std::size_t hits = mobb_run_queries(&w, int(m), n);
-        // Agreement with the exact answer (fast query; the tests hold it to brute force), outside
-        // the measured function: "extra" = this method says yes where the model says no.
-        std::size_t extra = 0, missed = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const bool got = w.query(m, i % w.size()), exact = w.query(mobb::bench::Method::Fast, i % w.size());
-            extra += got && !exact;
-            missed += !got && exact;
-        }
-        std::printf("%s %g Hz (%s): %zu queries, %zu hits, %zu extra, %zu missed vs exact\n", argv[1], fps,
-                    mobb::bench::source().c_str(), n, hits, extra, missed);
+        const std::string name = argv[1];
+        const QuerySet set = std::filesystem::exists(name) ? load_query_set(name) : named_query_set(name, MOBB_GRAPH);
+        if (set.queries.empty()) throw std::runtime_error(name + ": no queries");
+        auto method = make_method(parse_method(argv[2]));
+        if (!method->unavailable().empty()) throw std::runtime_error(method->unavailable());
+        method->prepare(set.clips);
+        const long long asked = std::atoll(argv[3]);
+        const std::size_t n = asked > 0 ? std::min(std::size_t(asked), set.queries.size()) : set.queries.size();
+        const std::size_t hits = mobb_run_queries(&set, method.get(), n);
+        std::printf("queries %zu hits %zu\n", n, hits);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "mobb_query_driver: %s\n", e.what());
         return 1;

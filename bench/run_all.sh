@@ -3,7 +3,7 @@
 #   bench/run_all.sh BUILD_DIR [WORKLOAD...]      (default: table1 table2 synth42 synth120 scale)
 # Writes bench/results/WORKLOAD.{md,json,png}; each .md ends with the load averages before and after
 # its run (the machine is shared) and, for the query workloads, instructions per query.
-# BUILD_DIR: a Release build with mobb and mobb_workload_driver (needs the CMU data and valgrind).
+# BUILD_DIR: a Release build with mobb and mobb_query_driver (needs the CMU data and valgrind).
 set -eu
 build=${1:?usage: bench/run_all.sh BUILD_DIR [WORKLOAD...]}
 shift

@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "mobb/core/angle.h"
+
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -7,58 +9,28 @@
 namespace mobb::app {
 
 void LoadArgs::add_to(CLI::App& cmd) {
-    cmd.add_option("--up", up, "Up axis of BVH data: y or z")->check(CLI::IsMember({"y", "z"}))->capture_default_str();
-    cmd.add_option("--scale", scale, "Metres per file unit, or auto (infer from the skeleton's height)")
+    cmd.add_option("--up", text.up, "Up axis of BVH data: y or z")
+        ->check(CLI::IsMember({"y", "z"}))
         ->capture_default_str();
-    cmd.add_option("--frames", frames, "Keep frames A..B-1, written A:B");
-    cmd.add_option("--fps", fps, "Resample to F samples per second (frame at or just below each time)")
+    cmd.add_option("--scale", text.scale, "Metres per file unit, or auto (infer from the skeleton's height)")
+        ->capture_default_str();
+    cmd.add_option("--frames", text.frames, "Keep frames A..B-1, written A:B");
+    cmd.add_option("--fps", text.fps, "Resample to F samples per second (frame at or just below each time)")
         ->check(CLI::PositiveNumber);
-    cmd.add_option("--skin", skin, "glTF: skin index")->check(CLI::NonNegativeNumber);
-    cmd.add_option("--animation", animation, "glTF: animation name (default: the first)");
-}
-
-static double parse_number(const std::string& text, const std::string& what) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || text.empty() || !std::isfinite(v))
-        throw InputError(what + ": '" + text + "' is not a finite number");
-    return v;
-}
-
-io::LoadOptions LoadArgs::options() const {
-    io::LoadOptions o;
-    o.up = up == "z" ? io::UpAxis::Z : io::UpAxis::Y;
-    if (scale != "auto") {
-        o.scale = parse_number(scale, "--scale");
-        if (*o.scale <= 0) throw InputError("--scale: must be positive");
-    }
-    if (!frames.empty()) {
-        const auto colon = frames.find(':');
-        if (colon == std::string::npos) throw InputError("--frames: expected A:B, got '" + frames + "'");
-        const double a = parse_number(frames.substr(0, colon), "--frames A");
-        const double b = colon + 1 < frames.size() ? parse_number(frames.substr(colon + 1), "--frames B") : -1;
-        if (a < 0 || a != std::floor(a) || (b >= 0 && (b != std::floor(b) || b <= a)) || b > 2e9)
-            throw InputError("--frames: expected whole numbers 0 <= A < B, got '" + frames + "'");
-        o.frame_begin = int(a);
-        o.frame_end = int(b);
-    }
-    if (fps > 0) o.fps = fps;
-    o.skin = skin;
-    o.animation = animation;
-    return o;
+    cmd.add_option("--skin", text.skin, "glTF: skin index")->check(CLI::NonNegativeNumber);
+    cmd.add_option("--animation", text.animation, "glTF: animation name (default: the first)");
 }
 
 void TreeArgs::add_to(CLI::App& cmd, bool allow_brute) {
-    std::vector<std::string> types = {"mobb", "umobb", "hybrid1", "hybrid2", "mobb1", "umobb1"};
+    std::vector<std::string> types;
+    for (const TreeTypeName& t : kTreeTypes) types.push_back(t.name);
     if (allow_brute) types.push_back("brute");
     cmd.add_option("--tree", type, "Tree type")->check(CLI::IsMember(types))->capture_default_str();
-    cmd.add_option("--nmin", n_min, "Most samples in a leaf (n_min)")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    cmd.add_option("--fit", fit, "MOBB axis fit: chord (paper) or pca")->check(CLI::IsMember({"chord", "pca"}))
+    cmd.add_option("--nmin", n_min, "Most samples in a leaf (n_min)")
+        ->check(CLI::Range(1, 1 << 20))
+        ->capture_default_str();
+    cmd.add_option("--fit", fit, "MOBB axis fit: chord (paper) or pca")
+        ->check(CLI::IsMember({"chord", "pca"}))
         ->capture_default_str();
 }
 
@@ -95,12 +67,13 @@ Placement parse_placement(const std::string& text, const std::string& what) {
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = text.find(',', start);
-        v.push_back(parse_number(text.substr(start, comma - start), what));
+        v.push_back(io::parse_number(text.substr(start, comma - start), what));
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
-    if (v.size() != 4) throw InputError(what + ": expected x,y,theta,t0 (metres, degrees, seconds), got '" + text + "'");
-    return {v[0], v[1], v[2] * 3.14159265358979323846 / 180.0, v[3]};
+    if (v.size() != 4)
+        throw InputError(what + ": expected x,y,theta,t0 (metres, degrees, seconds), got '" + text + "'");
+    return {v[0], v[1], radians(v[2]), v[3]};
 }
 
 int guarded(const std::function<void(std::ostream& out)>& body) {
@@ -145,8 +118,9 @@ std::function<void(double)> progress_bar(const std::string& label) {
         if (pct == *last) return;
         *last = pct;
         const int w = 30, filled = pct * w / 100;
-        std::cerr << "\r" << label << " [" << std::string(std::size_t(filled), '#') << std::string(std::size_t(w - filled), ' ')
-                  << "] " << pct << " %" << (pct >= 100 ? "\n" : "") << std::flush;
+        std::cerr << "\r" << label << " [" << std::string(std::size_t(filled), '#')
+                  << std::string(std::size_t(w - filled), ' ') << "] " << pct << " %" << (pct >= 100 ? "\n" : "")
+                  << std::flush;
     };
 }
 

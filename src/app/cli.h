@@ -26,15 +26,10 @@ public:
 
 /// The loader options of every subcommand: --up, --scale, --frames, --fps, --skin, --animation.
 struct LoadArgs {
-    std::string up = "y";
-    std::string scale = "auto";
-    std::string frames;
-    double fps = 0;
-    int skin = 0;
-    std::string animation;
+    io::LoadOptionText text;
 
     void add_to(CLI::App& cmd);
-    io::LoadOptions options() const;  ///< throws CLI::ValidationError on malformed values
+    io::LoadOptions options() const { return io::parse_load_options(text); }  ///< throws std::invalid_argument
 };
 
 /// Tree settings: --tree, --nmin, --fit.
@@ -80,6 +75,7 @@ void add_query(CLI::App& app, int& exit_code);
 void add_batch(CLI::App& app, int& exit_code);
 void add_crowd_commands(CLI::App& app, int& exit_code);  // graph, crowd (cmd_crowd.cpp)
 void add_bench_commands(CLI::App& app, int& exit_code);  // bench ... (cmd_bench.cpp)
+void add_view_commands(CLI::App& app, int& exit_code);   // view, render, export-gltf (cmd_view.cpp, with the viewer)
 
 /// "WxH" in metres -> w, h. Throws InputError.
 void parse_world(const std::string& text, double& w, double& h);

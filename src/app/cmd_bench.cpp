@@ -1,11 +1,11 @@
-// mobb bench ...: the paper's experiments and the performance workloads (src/crowd/bench_tables.h).
+// mobb bench ...: the paper's experiments and the performance workloads (src/bench).
 #include <algorithm>
 #include <fstream>
 #include <iostream>
 
 #include "cli.h"
-#include "mobb/crowd/bench_tables.h"
 #include "mobb/crowd/motion_graph.h"
+#include "report.h"
 
 namespace mobb::app {
 
@@ -21,14 +21,14 @@ struct TableOutputs {
         cmd.add_option("--png", png, "Also write a bar chart of time per query (PNG)");
         cmd.add_flag("--quiet", quiet, "No progress bar");
     }
-    void write(const crowd::BenchTable& t, std::ostream& out) const {
+    void write(const bench::BenchTable& t, std::ostream& out) const {
         if (!json.empty()) {
             std::ofstream f(json);
-            f << crowd::table_json(t);
+            f << bench::table_json(t);
             if (!f) throw InputError(json + ": cannot write");
         }
-        if (!png.empty()) crowd::write_table_png(t, png);
-        out << crowd::table_markdown(t);
+        if (!png.empty()) bench::write_table_png(t, png);
+        out << bench::table_markdown(t);
     }
     std::function<void(double)> progress(const std::string& label) const {
         return quiet ? std::function<void(double)>() : progress_bar(label);
@@ -36,8 +36,9 @@ struct TableOutputs {
 };
 
 void add_table1(CLI::App& bench, int& exit_code) {
-    auto* cmd = bench.add_subcommand("table1", "Paper Table 1: the crowd's queries replayed by every method, plus frame stepping");
-    auto o = std::make_shared<crowd::Table1Options>();
+    auto* cmd = bench.add_subcommand(
+        "table1", "Paper Table 1: the crowd's queries replayed by every method, plus frame stepping");
+    auto o = std::make_shared<bench::Table1Options>();
     auto world = std::make_shared<std::string>("30x40");
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
@@ -46,16 +47,20 @@ void add_table1(CLI::App& bench, int& exit_code) {
     cmd->add_option("--world", *world, "World WxH (metres)")->capture_default_str();
     cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--passes", o->passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd->add_option("--passes", o->passes, "Timed passes per method (median)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     cmd->add_option("--nmin", o->n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     cmd->add_option("--slow-queries", o->slow_queries, "Brute force and FCL are timed on this many queries")
-        ->check(CLI::Range(1, 100000000))->capture_default_str();
-    cmd->add_option("--save-queries", o->save_queries, "Write the replayed queries there (for bench/callgrind_workload.sh)");
+        ->check(CLI::Range(1, 100000000))
+        ->capture_default_str();
+    cmd->add_option("--save-queries", o->save_queries,
+                    "Write the replayed queries there (for bench/callgrind_workload.sh)");
     cmd->add_flag("--quick", *quick, "Smoke run: 20 agents, 10 s, 1 pass");
     outputs->add_to(*cmd);
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
-            crowd::Table1Options opt = *o;
+            bench::Table1Options opt = *o;
             parse_world(*world, opt.width, opt.height);
             if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
             if (*quick) {
@@ -63,29 +68,36 @@ void add_table1(CLI::App& bench, int& exit_code) {
                 opt.seconds = std::min(opt.seconds, 10.0);
                 opt.passes = 1;
             }
-            outputs->write(crowd::run_table1(opt, {}, outputs->progress("table1")), out);
+            outputs->write(bench::run_table1(opt, outputs->progress("table1")), out);
         });
     });
 }
 
 // Options shared by table2, synth42 and synth120.
-void add_random_test_options(CLI::App& cmd, crowd::Table2Options& o) {
-    cmd.add_option("--graph", o.graph, "Motion graph JSON (for motion-graph sequences and the crowd's root-overlap share)");
+void add_random_test_options(CLI::App& cmd, bench::Table2Options& o) {
+    cmd.add_option("--graph", o.graph,
+                   "Motion graph JSON (for motion-graph sequences and the crowd's root-overlap share)");
     cmd.add_option("--motions", o.motions, "Number of motions")->check(CLI::Range(1, 10000))->capture_default_str();
-    cmd.add_option("--tests", o.tests, "Random tests (the same for every method)")->check(CLI::Range(1, 100000000))
+    cmd.add_option("--tests", o.tests, "Random tests (the same for every method)")
+        ->check(CLI::Range(1, 100000000))
         ->capture_default_str();
-    cmd.add_option("--fps", o.fps, "Resample the clips to this rate")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd.add_option("--fps", o.fps, "Resample the clips to this rate")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd.add_option("--root-share", o.root_share, "Target share of root overlaps (default: measured on a crowd run)");
     cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
-    cmd.add_option("--passes", o.passes, "Timed passes per method (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd.add_option("--passes", o.passes, "Timed passes per method (median)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     cmd.add_option("--nmin", o.n_min, "Samples per leaf")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     cmd.add_option("--slow-queries", o.slow_queries, "Brute force and FCL are timed on this many tests")
-        ->check(CLI::Range(1, 100000000))->capture_default_str();
+        ->check(CLI::Range(1, 100000000))
+        ->capture_default_str();
     cmd.add_option("--save-queries", o.save_queries, "Write the tests there (for bench/callgrind_workload.sh)");
 }
 
 // The run of table2 / synth42 / synth120 with the parsed options.
-void run_random_tests(crowd::Table2Options opt, bool quick, const TableOutputs& outputs, const std::string& label,
+void run_random_tests(bench::Table2Options opt, bool quick, const TableOutputs& outputs, const std::string& label,
                       std::ostream& out) {
     if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
     if (opt.root_share > 1) throw InputError("--root-share: must be at most 1");
@@ -96,17 +108,18 @@ void run_random_tests(crowd::Table2Options opt, bool quick, const TableOutputs& 
         opt.passes = 1;
         opt.slow_queries = std::min<std::size_t>(opt.slow_queries, 200);
     }
-    outputs.write(crowd::run_table2(opt, {}, outputs.progress(label)), out);
+    outputs.write(bench::run_table2(opt, outputs.progress(label)), out);
 }
 
 void add_table2(CLI::App& bench, int& exit_code) {
     auto* cmd = bench.add_subcommand("table2", "Paper Table 2: identical random tests on long motions, every method");
-    auto o = std::make_shared<crowd::Table2Options>();
+    auto o = std::make_shared<bench::Table2Options>();
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
     add_random_test_options(*cmd, *o);
     cmd->add_flag("--synth", o->synth, "Motion-graph sequences instead of the longest clips of the data");
-    cmd->add_option("--synth-seconds", o->synth_seconds, "Length of each --synth sequence (s)")->check(CLI::PositiveNumber)
+    cmd->add_option("--synth-seconds", o->synth_seconds, "Length of each --synth sequence (s)")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->add_flag("--quick", *quick, "Smoke run: 2,000 tests, a 20-agent 10 s crowd for the target share, 1 pass");
     outputs->add_to(*cmd);
@@ -118,9 +131,9 @@ void add_table2(CLI::App& bench, int& exit_code) {
 // synth42 / synth120: Table 2's protocol on motion-graph sequences of `seconds` each.
 void add_synth(CLI::App& bench, int& exit_code, int seconds, int tests) {
     const std::string name = "synth" + std::to_string(seconds);
-    auto* cmd = bench.add_subcommand(name, "Table 2's random tests on " + std::to_string(seconds) +
-                                               " s motion-graph sequences, every method");
-    auto o = std::make_shared<crowd::Table2Options>();
+    auto* cmd = bench.add_subcommand(
+        name, "Table 2's random tests on " + std::to_string(seconds) + " s motion-graph sequences, every method");
+    auto o = std::make_shared<bench::Table2Options>();
     o->synth = true;
     o->synth_seconds = seconds;
     o->tests = tests;
@@ -136,26 +149,34 @@ void add_synth(CLI::App& bench, int& exit_code, int seconds, int tests) {
 }
 
 void add_scale(CLI::App& bench, int& exit_code) {
-    auto* cmd = bench.add_subcommand("scale", "The avoiding crowd at the paper's density for growing agent counts, 1 and all threads");
-    auto o = std::make_shared<crowd::ScaleOptions>();
+    auto* cmd = bench.add_subcommand(
+        "scale", "The avoiding crowd at the paper's density for growing agent counts, 1 and all threads");
+    auto o = std::make_shared<bench::ScaleOptions>();
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
     cmd->add_option("--graph", o->graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
-    cmd->add_option("--agents", o->agents, "Crowd sizes (the first is the reference)")->delimiter(',')->capture_default_str();
+    cmd->add_option("--agents", o->agents, "Crowd sizes (the first is the reference)")
+        ->delimiter(',')
+        ->capture_default_str();
     cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--area", o->area_per_agent, "Square metres per agent")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--area", o->area_per_agent, "Square metres per agent")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_option("--threads", o->threads, "Threads of the parallel runs (0: all hardware threads)")
-        ->check(CLI::Range(0, 1024))->capture_default_str();
-    cmd->add_option("--repeats", o->repeats, "Runs per size and thread count (medians)")->check(CLI::Range(1, 100))
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+    cmd->add_option("--repeats", o->repeats, "Runs per size and thread count (medians)")
+        ->check(CLI::Range(1, 100))
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--save-queries", o->save_queries,
-                    "Write up to 5,000 queries of each size's crowd to FILE.<agents> (for bench/callgrind_workload.sh)");
+    cmd->add_option(
+        "--save-queries", o->save_queries,
+        "Write up to 5,000 queries of each size's crowd to FILE.<agents> (for bench/callgrind_workload.sh)");
     cmd->add_flag("--quick", *quick, "Smoke run: 10 and 40 agents, 5 s, 1 repeat");
     outputs->add_to(*cmd);
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
-            crowd::ScaleOptions opt = *o;
+            bench::ScaleOptions opt = *o;
             if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
             for (int n : opt.agents)
                 if (n < 1) throw InputError("--agents: every size must be at least 1");
@@ -164,14 +185,14 @@ void add_scale(CLI::App& bench, int& exit_code) {
                 opt.seconds = std::min(opt.seconds, 5.0);
                 opt.repeats = 1;
             }
-            const crowd::ScaleTable t = crowd::run_scale(opt, outputs->progress("scale"));
+            const bench::ScaleTable t = bench::run_scale(opt, outputs->progress("scale"));
             if (!outputs->json.empty()) {
                 std::ofstream f(outputs->json);
-                f << crowd::scale_json(t);
+                f << bench::scale_json(t);
                 if (!f) throw InputError(outputs->json + ": cannot write");
             }
-            if (!outputs->png.empty()) crowd::write_scale_png(t, outputs->png);
-            out << crowd::scale_markdown(t);
+            if (!outputs->png.empty()) bench::write_scale_png(t, outputs->png);
+            out << bench::scale_markdown(t);
         });
     });
 }

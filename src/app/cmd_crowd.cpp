@@ -8,7 +8,7 @@
 #include "cli.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/worker_pool.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::app {
 
@@ -24,14 +24,22 @@ void add_graph(CLI::App& app, int& exit_code) {
     cmd->add_option("FILES", *files, "Input clips")->required();
     cmd->add_option("--out", *out_file, "Graph JSON to write")->required();
     cmd->add_option("--threshold", o->threshold, "Pose distance for transitions and edges (metres, RMS)")
-        ->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--hubs", o->hubs, "Hub poses whose matches become transition points")->check(CLI::Range(1, 100))
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--fps", o->fps, "Resample every input to this rate")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--window", o->window, "Frames in a pose-distance window")->check(CLI::Range(1, 61))->capture_default_str();
+    cmd->add_option("--hubs", o->hubs, "Hub poses whose matches become transition points")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    cmd->add_option("--fps", o->fps, "Resample every input to this rate")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--window", o->window, "Frames in a pose-distance window")
+        ->check(CLI::Range(1, 61))
+        ->capture_default_str();
     cmd->add_option("--min-clip", o->min_clip, "Shortest clip (s)")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--max-clip", o->max_clip, "Longest clip (s)")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--target-clip", o->target_clip, "Preferred clip length (s)")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_option("--target-clip", o->target_clip, "Preferred clip length (s)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
             const auto start = std::chrono::steady_clock::now();
@@ -58,13 +66,14 @@ void add_graph(CLI::App& app, int& exit_code) {
 }
 
 void add_crowd(CLI::App& app, int& exit_code) {
-    auto* cmd = app.add_subcommand("crowd", "Simulate a graph-driven crowd with collision-free clip choice (paper section 5)");
+    auto* cmd =
+        app.add_subcommand("crowd", "Simulate a graph-driven crowd with collision-free clip choice (paper section 5)");
     auto graph = std::make_shared<std::string>();
     auto world = std::make_shared<std::string>("30x40");
     auto select = std::make_shared<std::string>("avoid");
     auto record = std::make_shared<std::string>();
     auto o = std::make_shared<crowd::CrowdOptions>();
-    o->threads = crowd::WorkerPool::hardware_threads();
+    o->threads = util::WorkerPool::hardware_threads();
     auto tree = std::make_shared<TreeArgs>();
     auto quiet = std::make_shared<bool>(false);
     cmd->add_option("--graph", *graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
@@ -72,11 +81,16 @@ void add_crowd(CLI::App& app, int& exit_code) {
     cmd->add_option("--world", *world, "World rectangle WxH (metres)")->capture_default_str();
     cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--select", *select, "Clip choice: avoid or random")->check(CLI::IsMember({"avoid", "random"}))
+    cmd->add_option("--select", *select, "Clip choice: avoid or random")
+        ->check(CLI::IsMember({"avoid", "random"}))
         ->capture_default_str();
-    cmd->add_option("--cell", o->cell, "Broad-phase grid cell (metres)")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Worker threads for the choice points (the record is the same for any count)")
-        ->check(CLI::Range(1, 1024))->capture_default_str();
+    cmd->add_option("--cell", o->cell, "Broad-phase grid cell (metres)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--threads", o->threads,
+                    "Worker threads for the choice points (the record is the same for any count)")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
     cmd->add_option("--record", *record, "Write the record (JSON) to this file");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
@@ -88,7 +102,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);
             const std::vector<Tree> trees = crowd::build_trees(g, tree->options());
-            crowd::CrowdRun run = crowd::run_crowd(g, trees, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
+            crowd::CrowdRun run =
+                crowd::run_crowd(g, trees, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
             run.record.graph = file;
             run.record.tree = tree->type;
             if (!record->empty()) {

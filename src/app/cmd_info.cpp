@@ -28,8 +28,8 @@ void print_info(std::ostream& out, const io::Clip& clip) {
         << sk.names[std::size_t(sk.root)] << "\n";
     out << "frames: " << clip.path.size() << " samples (file: " << clip.source_frames << " frames at "
         << std::setprecision(2) << 1.0 / clip.source_dt << " Hz)\n";
-    out << std::setprecision(3) << "rate: " << 1.0 / clip.path.dt << " Hz (dt " << std::setprecision(6)
-        << clip.path.dt << " s)\n";
+    out << std::setprecision(3) << "rate: " << 1.0 / clip.path.dt << " Hz (dt " << std::setprecision(6) << clip.path.dt
+        << " s)\n";
     out << std::setprecision(3) << "duration: " << clip.path.duration() << " s\n";
     out << "scale: " << std::setprecision(6) << clip.scale << " m per unit (" << clip.scale_reason << ")\n";
     out << "up: " << (clip.up == io::UpAxis::Y ? "y" : "z") << "\n";

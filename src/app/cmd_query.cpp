@@ -9,9 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.h"
+#include "mobb/core/angle.h"
 #include "mobb/core/brute.h"
 #include "mobb/core/query.h"
-#include "mobb/crowd/worker_pool.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::app {
 
@@ -65,11 +66,12 @@ Placement placement_of(const nlohmann::json& v, const std::string& where) {
         x[k] = v[std::size_t(k)].get<double>();
         if (!std::isfinite(x[k])) throw InputError(where + ": not finite");
     }
-    return {x[0], x[1], x[2] * 3.14159265358979323846 / 180.0, x[3]};
+    return {x[0], x[1], radians(x[2]), x[3]};
 }
 
 std::string file_of(const nlohmann::json& line, const char* key, const std::string& where) {
-    if (!line.contains(key) || !line[key].is_string()) throw InputError(where + ": \"" + key + "\" must be a file name");
+    if (!line.contains(key) || !line[key].is_string())
+        throw InputError(where + ": \"" + key + "\" must be a file name");
     return line[key].get<std::string>();
 }
 
@@ -87,13 +89,14 @@ std::optional<Job> parse_line(const std::string& text, int n, ClipCache& cache, 
 
 // Lines are read, checked and their clips loaded in order on this thread (so the first bad line is
 // the one reported); the queries of a chunk of lines then run on the pool and print in input order.
-void run_batch(std::istream& in, std::ostream& out, ClipCache& cache, bool brute, crowd::WorkerPool& pool) {
+void run_batch(std::istream& in, std::ostream& out, ClipCache& cache, bool brute, util::WorkerPool& pool) {
     constexpr std::size_t kChunk = 1 << 14;  // lines held at once
     std::vector<Job> jobs;
     std::vector<std::string> answers;
     auto flush = [&] {
         answers.resize(jobs.size());
-        pool.for_each(jobs.size(), [&](std::size_t k, int) { answers[k] = answer(jobs[k]).dump(); }, 16);
+        pool.for_each(
+            jobs.size(), [&](std::size_t k, int) { answers[k] = answer(jobs[k]).dump(); }, 16);
         for (const std::string& a : answers) out << a << "\n";
         jobs.clear();
     };
@@ -133,15 +136,16 @@ void add_batch(CLI::App& app, int& exit_code) {
         "batch", "Answer JSON lines {\"a\": FILE, \"b\": FILE, \"ta\": [x,y,theta,t0], \"tb\": [...]} from stdin");
     auto load = std::make_shared<LoadArgs>();
     auto tree = std::make_shared<TreeArgs>();
-    auto threads = std::make_shared<int>(crowd::WorkerPool::hardware_threads());
+    auto threads = std::make_shared<int>(util::WorkerPool::hardware_threads());
     load->add_to(*cmd);
     tree->add_to(*cmd, true);
     cmd->add_option("--threads", *threads, "Worker threads (the output is the same for any count)")
-        ->check(CLI::Range(1, 1024))->capture_default_str();
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
             ClipCache cache(load->options(), tree->options());
-            crowd::WorkerPool pool(*threads);
+            util::WorkerPool pool(*threads);
             run_batch(std::cin, out, cache, tree->brute(), pool);
         });
     });

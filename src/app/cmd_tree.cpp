@@ -34,9 +34,14 @@ nlohmann::json to_json(const Tree& tree, const std::vector<LevelStats>& levels, 
     j["depth"] = tree.depth();
     j["contained"] = contained;
     for (const LevelStats& l : levels)
-        j["levels"].push_back({{"level", l.level}, {"nodes", l.nodes}, {"box2d", l.box2}, {"box3d", l.box3},
-                               {"mean_area", l.mean_area}, {"area_ratio", l.area_ratio},
-                               {"mean_volume", l.mean_volume}, {"volume_ratio", l.volume_ratio}});
+        j["levels"].push_back({{"level", l.level},
+                               {"nodes", l.nodes},
+                               {"box2d", l.box2},
+                               {"box3d", l.box3},
+                               {"mean_area", l.mean_area},
+                               {"area_ratio", l.area_ratio},
+                               {"mean_volume", l.mean_volume},
+                               {"volume_ratio", l.volume_ratio}});
     return j;
 }
 

@@ -2,9 +2,6 @@
 #include <iostream>
 
 #include "cli.h"
-#ifdef MOBB_WITH_VIEWER
-#include "viewer_commands.h"
-#endif
 
 int main(int argc, char** argv) {
     using namespace mobb::app;
@@ -19,7 +16,7 @@ int main(int argc, char** argv) {
     add_crowd_commands(app, exit_code);
     add_bench_commands(app, exit_code);
 #ifdef MOBB_WITH_VIEWER
-    add_viewer_commands(app, exit_code);
+    add_view_commands(app, exit_code);
 #endif
     try {
         app.parse(argc, argv);

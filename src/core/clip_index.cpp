@@ -43,8 +43,7 @@ ClipIndex ClipIndex::build(Path path) {
     validate(path);
     if (path.samples.empty()) throw std::invalid_argument("clip index: the path has no samples");
     // More than any motion clip needs: refused rather than tested.
-    if (path.samples.size() > (std::size_t(1) << 21))
-        throw std::invalid_argument("clip index: more than 2^21 samples");
+    if (path.samples.size() > (std::size_t(1) << 21)) throw std::invalid_argument("clip index: more than 2^21 samples");
     ClipIndex c;
     for (const Sample& s : path.samples) {
         if (std::abs(s.x) > kMaxCoordinate || std::abs(s.y) > kMaxCoordinate || s.r > kMaxCoordinate)

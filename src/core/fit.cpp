@@ -14,7 +14,10 @@ constexpr double kCoincident = 1e-6;
 
 struct Interval {
     double lo = INFINITY, hi = -INFINITY;
-    void add(double a, double b) { lo = std::min(lo, a); hi = std::max(hi, b); }
+    void add(double a, double b) {
+        lo = std::min(lo, a);
+        hi = std::max(hi, b);
+    }
     double mid() const { return 0.5 * (lo + hi); }
     double half() const { return 0.5 * (hi - lo); }
 };

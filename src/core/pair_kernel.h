@@ -1,4 +1,4 @@
-// Private to the core: the pieces shared by collide_scan() and collide_fast(). One query's setup
+// Private to the core: the pieces shared by collide_scan() and collide_sweep(). One query's setup
 // (relative frame, rounding margin, time diagonals), a 4-wide float filter of sample pairs that may
 // only err towards "candidate", and the exact confirmation of a candidate.
 #pragma once
@@ -25,7 +25,7 @@ struct PairQuery {
     const Placement& pb;
     SamplePair* hit;
     Rigid2 ta, tb;
-    SpaceTimeRigid rel;    // double, for the root box test
+    SpaceTimeRigid rel;  // double, for the root box test
     float c = 1, s = 0, tx = 0, ty = 0, margin = 0;
 
     PairQuery(const ClipIndex& ia, const Placement& qa, const ClipIndex& ib, const Placement& qb, SamplePair* h)
@@ -38,7 +38,7 @@ struct PairQuery {
     }
 
     // Temporal pruning, then the 1-level root box test. Fills the float frame when both pass.
-    bool roots_overlap() {
+    bool passes_root_test() {
         const double dta = a.path().dt, dtb = b.path().dt;
         const auto na = std::int64_t(a.size()), nb = std::int64_t(b.size());
         if (!times_overlap(sample_time(pa, dta, 0), sample_time(pa, dta, na), sample_time(pb, dtb, 0),
@@ -47,8 +47,8 @@ struct PairQuery {
         if (!overlap(a.root_box(), transformed(b.root_box(), rel))) return false;
         // Float rounding of inputs, frame and arithmetic is below 2^-20 of this scale; the double
         // rounding of the exact world-frame test below 2^-50 of the world coordinates.
-        const double scale = a.max_abs() + b.max_abs() + std::abs(rel.shift.x) + std::abs(rel.shift.y) +
-                             a.max_radius() + b.max_radius();
+        const double scale =
+            a.max_abs() + b.max_abs() + std::abs(rel.shift.x) + std::abs(rel.shift.y) + a.max_radius() + b.max_radius();
         const double world = std::abs(pa.x) + std::abs(pa.y) + std::abs(pb.x) + std::abs(pb.y);
         margin = float(scale * 0x1p-18 + (world + scale) * 0x1p-40);
         c = float(rel.c), s = float(rel.s), tx = float(rel.shift.x), ty = float(rel.shift.y);

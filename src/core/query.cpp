@@ -40,8 +40,7 @@ template <class Observer>
 class Query {
 public:
     Query(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, Observer& obs)
-        : a_(a), b_(b), pa_(pa), pb_(pb), ta_(Rigid2::of(pa)), tb_(Rigid2::of(pb)), rel_(relative(pa, pb)),
-          obs_(obs) {}
+        : a_(a), b_(b), pa_(pa), pb_(pb), ta_(Rigid2::of(pa)), tb_(Rigid2::of(pb)), rel_(relative(pa, pb)), obs_(obs) {}
 
     bool run() { return pair(0, 0); }
     SamplePair hit() const { return hit_; }
@@ -116,8 +115,8 @@ private:
         const Node& x = na(ia);
         const Node& y = nb(ib);
         std::uint64_t tested = 0;
-        const bool found = leaf_test(a_.path(), pa_, ta_, x.first, x.end, b_.path(), pb_, tb_, y.first, y.end,
-                                     tested, hit_);
+        const bool found =
+            leaf_test(a_.path(), pa_, ta_, x.first, x.end, b_.path(), pb_, tb_, y.first, y.end, tested, hit_);
         obs_.samples(tested);
         TraceEvent e{ia, ib, TraceTest::Samples, found ? TraceOutcome::Hit : TraceOutcome::Miss};
         if (found) e.sample_a = std::int32_t(hit_.a), e.sample_b = std::int32_t(hit_.b);
@@ -137,8 +136,7 @@ private:
 };
 
 template <class Observer>
-bool run(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, Observer& obs,
-         SamplePair* hit) {
+bool run(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, Observer& obs, SamplePair* hit) {
     Query<Observer> q(a, pa, b, pb, obs);
     const bool found = q.run();
     if (hit) *hit = found ? q.hit() : SamplePair{};
@@ -159,9 +157,9 @@ std::int64_t first_ending_after(const Placement& p, double dt, std::int64_t lo, 
 
 }  // namespace
 
-bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_t fa, std::int64_t ea,
-               const Path& b, const Placement& pb, const Rigid2& tb, std::int64_t fb, std::int64_t eb,
-               std::uint64_t& tested, SamplePair& hit) {
+bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_t fa, std::int64_t ea, const Path& b,
+               const Placement& pb, const Rigid2& tb, std::int64_t fb, std::int64_t eb, std::uint64_t& tested,
+               SamplePair& hit) {
     const double b_end = sample_time(pb, b.dt, eb);
     std::int64_t i = first_ending_after(pa, a.dt, fa, ea, sample_time(pb, b.dt, fb));
     if (i >= ea) return false;
@@ -181,8 +179,8 @@ bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_
     return false;
 }
 
-bool collide(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, QueryStats* stats,
-             Trace* trace, SamplePair* hit) {
+bool collide(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, QueryStats* stats, Trace* trace,
+             SamplePair* hit) {
     if (trace) {
         trace->clear();
         QueryStats local;

@@ -7,7 +7,7 @@ namespace mobb {
 bool collide_scan(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb, SamplePair* hit) {
     if (hit) *hit = {};
     detail::PairQuery q(a, pa, b, pb, hit);
-    if (!q.roots_overlap()) return false;
+    if (!q.passes_root_test()) return false;
     detail::Diagonals diag;
     if (!detail::diagonals(q, diag)) return detail::general_scan(q);
     for (int k = 0; k < diag.count; ++k)

@@ -10,15 +10,6 @@ namespace mobb {
 
 namespace {
 
-struct TypeName {
-    TreeType type;
-    const char* name;
-};
-constexpr TypeName kTypeNames[] = {
-    {TreeType::Mobb, "mobb"},       {TreeType::Umobb, "umobb"},   {TreeType::Hybrid1, "hybrid1"},
-    {TreeType::Hybrid2, "hybrid2"}, {TreeType::Mobb1, "mobb1"},   {TreeType::Umobb1, "umobb1"},
-};
-
 bool one_level(TreeType t) { return t == TreeType::Mobb1 || t == TreeType::Umobb1; }
 
 // Which box a node at this level wants (the fit may still fall back from 3D to 2D).
@@ -36,16 +27,28 @@ BoxKind wanted_kind(TreeType t, int level) {
 
 }  // namespace
 
-const char* to_string(TreeType type) {
-    for (const TypeName& t : kTypeNames)
-        if (t.type == type) return t.name;
-    return "?";
+static_assert(
+    [] {
+        for (int i = 0; i < kTreeTypeCount; ++i)
+            if (int(kTreeTypes[i].type) != i) return false;
+        return true;
+    }(),
+    "kTreeTypes lists the types in TreeType order");
+
+const char* to_string(TreeType type) { return kTreeTypes[int(type)].name; }
+
+const char* label(TreeType type) { return kTreeTypes[int(type)].label; }
+
+std::string tree_type_names() {
+    std::string out;
+    for (const TreeTypeName& t : kTreeTypes) out += (out.empty() ? "" : ", ") + std::string(t.name);
+    return out;
 }
 
 TreeType parse_tree_type(const std::string& name) {
-    for (const TypeName& t : kTypeNames)
+    for (const TreeTypeName& t : kTreeTypes)
         if (name == t.name) return t.type;
-    throw std::invalid_argument("unknown tree type '" + name + "' (mobb, umobb, hybrid1, hybrid2, mobb1, umobb1)");
+    throw std::invalid_argument("unknown tree type '" + name + "' (" + tree_type_names() + ")");
 }
 
 Tree Tree::build(Path path, const TreeOptions& options) {

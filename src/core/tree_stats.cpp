@@ -2,13 +2,12 @@
 #include <cmath>
 #include <vector>
 
+#include "mobb/core/angle.h"
 #include "mobb/core/tree.h"
 
 namespace mobb {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Area of the union of the disks of samples [first, end), rasterised on a grid fine enough for
 // ~0.1% error on typical paths (cell at most 1/32 of the smallest positive radius).

@@ -29,8 +29,8 @@ private:
     double cell_ = 1;
     int nx_ = 1, ny_ = 1;
     std::vector<std::vector<int>> cells_;
-    std::vector<std::size_t> used_;          // cells holding something
-    std::vector<SpaceTimeBox> boxes_;        // by index
+    std::vector<std::size_t> used_;    // cells holding something
+    std::vector<SpaceTimeBox> boxes_;  // by index
 };
 
 }  // namespace mobb::crowd

@@ -1,6 +1,6 @@
 #include "mobb/crowd/broad_phase.h"
 
-#include "mobb/crowd/worker_pool.h"
+#include "mobb/util/worker_pool.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +65,7 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), {box, id, owner}); });
 }
 
-void BroadPhase::insert_all(const std::vector<Insertion>& items, WorkerPool& pool) {
+void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) {
     if (items.empty()) return;  // no need to wake the pool
     std::vector<char> kept(items.size());
     for (std::size_t k = 0; k < items.size(); ++k) {
@@ -84,9 +84,11 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, WorkerPool& poo
             const Insertion& it = items[k];
             if (!kept[k]) continue;
             const std::int64_t ix0 = std::max(lo, index(it.box.x0)), ix1 = std::min(hi - 1, index(it.box.x1));
-            const std::int64_t iy0 = std::max<std::int64_t>(0, index(it.box.y0)), iy1 = std::min(ny_ - 1, index(it.box.y1));
+            const std::int64_t iy0 = std::max<std::int64_t>(0, index(it.box.y0)),
+                               iy1 = std::min(ny_ - 1, index(it.box.y1));
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], {it.box, it.id, it.owner});
+                for (std::int64_t iy = iy0; iy <= iy1; ++iy)
+                    put(flat_[std::size_t(ix * ny_ + iy)], {it.box, it.id, it.owner});
         }
     });
 }

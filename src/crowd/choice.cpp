@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "random.h"
+#include "mobb/util/random.h"
 
 namespace mobb::crowd {
 
@@ -79,7 +79,7 @@ Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, con
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
     agent_ = agent;
     frame_ = frame;
-    Random rng = Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
+    util::Random rng = util::Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
     const Agent& a = s.agents[std::size_t(agent)];
     const MotionGraph& g = s.graph;
     std::vector<int>& order = order_;
@@ -106,7 +106,8 @@ const Placed& Choice::place(const CrowdState& s, int k) {
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
         placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
-                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, frame_, s.options));
+                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, frame_,
+                                     s.options));
     }
     return placed_[std::size_t(k)];
 }

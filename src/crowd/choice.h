@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "batch_grid.h"
 #include "mobb/core/query.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
-#include "batch_grid.h"
 
 namespace mobb::crowd {
 
@@ -54,12 +54,12 @@ struct Committed {
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
 struct CrowdState {
     const MotionGraph& graph;
-    const std::vector<ClipOutline>& outlines;         ///< one per graph clip
+    const std::vector<ClipOutline>& outlines;  ///< one per graph clip
     const std::vector<Tree>& trees;
     const CrowdOptions& options;
-    const BroadPhase& broad;                          ///< committed clips still playing
+    const BroadPhase& broad;  ///< committed clips still playing
     const std::vector<Agent>& agents;
-    const std::vector<Committed>& committed;          ///< by broad-phase id
+    const std::vector<Committed>& committed;  ///< by broad-phase id
 };
 
 /// One narrow-phase query as run: the committed clip's broad-phase id and the answer.

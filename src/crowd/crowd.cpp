@@ -10,15 +10,14 @@
 #include <nlohmann/json.hpp>
 
 #include "choice.h"
+#include "mobb/core/angle.h"
 #include "mobb/crowd/broad_phase.h"
-#include "mobb/crowd/worker_pool.h"
-#include "random.h"
+#include "mobb/util/random.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::crowd {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using Clock = std::chrono::steady_clock;
 
@@ -38,7 +37,13 @@ void check(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOpti
 class Simulation {
 public:
     Simulation(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o)
-        : g_(g), outlines_(outlines_of(g)), trees_(trees), o_(o), pool_(o.threads), broad_(o.cell, o.width, o.height), chosen_(o.cell, o.width, o.height) {}
+        : g_(g),
+          outlines_(outlines_of(g)),
+          trees_(trees),
+          o_(o),
+          pool_(o.threads),
+          broad_(o.cell, o.width, o.height),
+          chosen_(o.cell, o.width, o.height) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
 
@@ -57,16 +62,16 @@ private:
     const std::vector<ClipOutline> outlines_;
     const std::vector<Tree>& trees_;
     const CrowdOptions& o_;
-    WorkerPool pool_;
-    BroadPhase broad_;                             // committed clips still playing
-    std::vector<BroadPhase::Insertion> pending_;   // committed in this frame, not yet in broad_
-    BatchGrid chosen_;                             // the clips chosen by the current batch, by position
-    std::vector<char> stale_;                      // per position: a clip chosen before may change it
+    util::WorkerPool pool_;
+    BroadPhase broad_;                            // committed clips still playing
+    std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
+    BatchGrid chosen_;                            // the clips chosen by the current batch, by position
+    std::vector<char> stale_;                     // per position: a clip chosen before may change it
     std::vector<SpaceTimeBox> moved_;             // new boxes of clips chosen differently on re-evaluation
     std::vector<Agent> agents_;
-    std::vector<Committed> committed_;             // by broad-phase id
-    std::vector<std::vector<int>> due_;            // per frame: agents at a choice point
-    std::vector<Choice> slots_;                    // one per choice point of a batch, reused
+    std::vector<Committed> committed_;   // by broad-phase id
+    std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
+    std::vector<Choice> slots_;          // one per choice point of a batch, reused
     CrowdRun out_;
 };
 
@@ -96,7 +101,7 @@ void Simulation::place_agents() {
                 }
         return true;
     };
-    Random rng(o_.seed);
+    util::Random rng(o_.seed);
     for (int a = 0; a < o_.agents; ++a) {
         Placement p;
         bool ok = false;
@@ -104,8 +109,9 @@ void Simulation::place_agents() {
             p = {rng.uniform(rmax, o_.width - rmax), rng.uniform(rmax, o_.height - rmax), rng.uniform(-kPi, kPi), 0.0};
             ok = free_at(p);
         }
-        if (!ok) throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
-                                             std::to_string(gap) + " m apart in the world");
+        if (!ok)
+            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
+                                        std::to_string(gap) + " m apart in the world");
         grid[std::size_t(cell_of(p.x, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y, ny))].push_back(a);
         agents_.push_back({p, {}});
     }
@@ -127,7 +133,8 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     chosen_.clear();
     for (std::size_t i = 0; i < n; ++i) chosen_.add(int(i), slots_[i].taken().box);
     stale_.assign(n, 0);
-    pool_.for_each(n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
+    pool_.for_each(
+        n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
     moved_.clear();  // clips chosen again differently: the grid holds their old boxes
     for (std::size_t i = 0; i < n; ++i) {
         Choice& c = slots_[i];
@@ -197,7 +204,8 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     // About agents x frames / mean clip length choice points: reserving saves moving them while committing.
     std::size_t samples = 0;
     for (const GraphClip& c : g_.clips) samples += c.path.size();
-    const double expected = double(o_.agents) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
+    const double expected =
+        double(o_.agents) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
     out_.record.choices.reserve(std::size_t(expected * 1.2));
     committed_.reserve(std::size_t(expected * 1.2));
     std::int64_t reported = -1;

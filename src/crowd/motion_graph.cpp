@@ -11,32 +11,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "json_text.h"
+#include "mobb/core/angle.h"
 #include "mobb/crowd/pose_distance.h"
 #include "mobb/io/load.h"
+#include "mobb/util/json_text.h"
 
 namespace mobb::crowd {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double wrap_angle(double a) { return std::remainder(a, 2.0 * kPi); }
-
-std::string relative_to_data(const std::string& file) {
-    namespace fs = std::filesystem;
-    const std::string dir = io::data_dir();
-    std::error_code ec;
-    if (dir.empty()) return file;
-    // Both sides canonical: the data folder may be reached through a symbolic link.
-    const fs::path abs = fs::weakly_canonical(fs::absolute(file), ec);
-    if (ec) return file;
-    const fs::path base = fs::weakly_canonical(dir, ec);
-    if (ec) return file;
-    const fs::path rel = abs.lexically_relative(base);
-    if (rel.empty() || *rel.begin() == "..") return file;
-    return rel.generic_string();
-}
 
 // Loads at the graph's rate, dropping a stray first frame far from the rest (CMU 007_03..007_12).
 io::Clip load_source(const std::string& file, const GraphBuildOptions& o, int& frame_begin) {
@@ -209,8 +193,8 @@ void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
     const double cs = std::cos(h), sn = std::sin(h);
     auto local = [&](double x, double y, double& lx, double& ly) {
         const double dx = x - o.x, dy = y - o.y;
-        lx = rounded(cs * dx + sn * dy);
-        ly = rounded(-sn * dx + cs * dy);
+        lx = util::rounded(cs * dx + sn * dy);
+        ly = util::rounded(-sn * dx + cs * dy);
     };
     c.path.dt = clip.path.dt;
     c.path.samples.clear();
@@ -218,12 +202,12 @@ void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
         const Sample& s = clip.path.samples[std::size_t(i)];
         Sample l;
         local(s.x, s.y, l.x, l.y);
-        l.r = rounded(s.r);
+        l.r = util::rounded(s.r);
         c.path.samples.push_back(l);
     }
     const Sample& e = clip.path.samples[std::size_t(c.exit)];
     local(e.x, e.y, c.exit_x, c.exit_y);
-    c.exit_heading = rounded(wrap_angle(track.heading[std::size_t(c.exit)] - h), 9);
+    c.exit_heading = util::rounded(wrap_angle(track.heading[std::size_t(c.exit)] - h), 9);
 }
 
 }  // namespace
@@ -239,12 +223,6 @@ std::string default_graph_file() {
     const std::string local = "assets/graphs/cmu_locomotion.json";
     if (std::filesystem::exists(local)) return local;
     return std::string(MOBB_SOURCE_DIR) + "/" + local;
-}
-
-std::string resolve_data_file(const std::string& file) {
-    if (std::filesystem::path(file).is_absolute()) return file;
-    const std::string dir = io::data_dir();
-    return dir.empty() ? file : dir + "/" + file;
 }
 
 MotionGraph build_motion_graph(const std::vector<std::string>& files, const GraphBuildOptions& o, std::ostream* log) {
@@ -266,15 +244,16 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
         if (tracks.back().joints != tracks.front().joints)
             throw GraphError(f + ": its skeleton gives " + std::to_string(tracks.back().joints) + " compared joints, " +
                              files.front() + " gives " + std::to_string(tracks.front().joints));
-        src.file = relative_to_data(f);
+        src.file = io::data_relative(f);
         src.samples = tracks.back().frames;
         g.sources.push_back(src);
     }
     const int n = int(files.size());
     const AllPairs m = all_pairs(tracks, o.window);
     const std::vector<bool> cand = hub_candidates(m, o.hubs, o, g.transitions);
-    if (log) *log << "graph: " << n << " files, " << m.total() << " frames, " << g.transitions
-                  << " transition points under " << o.threshold << " m to " << o.hubs << " hub poses\n";
+    if (log)
+        *log << "graph: " << n << " files, " << m.total() << " frames, " << g.transitions << " transition points under "
+             << o.threshold << " m to " << o.hubs << " hub poses\n";
     std::vector<std::vector<bool>> candidate;
     for (int s = 0; s < n; ++s)
         candidate.emplace_back(cand.begin() + m.offset[std::size_t(s)], cand.begin() + m.offset[std::size_t(s) + 1]);
@@ -299,8 +278,9 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
     for (std::size_t u = 0; u < all.size(); ++u)
         for (std::size_t v = 0; v < all.size(); ++v) {
             const GraphClip &cu = all[u], &cv = all[v];
-            const double d = pose_distance(tracks[std::size_t(cu.source)], cu.exit, tracks[std::size_t(cv.source)], cv.first,
-                                           o.window).distance;
+            const double d = pose_distance(tracks[std::size_t(cu.source)], cu.exit, tracks[std::size_t(cv.source)],
+                                           cv.first, o.window)
+                                 .distance;
             if (d < o.threshold) {
                 succ[u].push_back(int(v));
                 dist[u].push_back(d);
@@ -323,12 +303,14 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
         for (std::size_t k = 0; k < succ[u].size(); ++k)
             if (id[std::size_t(succ[u][k])] >= 0) {
                 c.successors.push_back(id[std::size_t(succ[u][k])]);
-                c.distances.push_back(rounded(dist[u][k], 9));
+                c.distances.push_back(util::rounded(dist[u][k], 9));
             }
         localise(c, clips[std::size_t(c.source)], tracks[std::size_t(c.source)]);
     }
     if (g.clips.size() < 2) throw GraphError("graph build: no two clips connect; raise --threshold");
-    if (log) *log << "graph: " << all.size() << " clips cut, " << g.clips.size() << " in the largest strongly connected part\n";
+    if (log)
+        *log << "graph: " << all.size() << " clips cut, " << g.clips.size()
+             << " in the largest strongly connected part\n";
     return g;
 }
 
@@ -337,10 +319,11 @@ std::string graph_to_text(const MotionGraph& g) {
     J j;
     j["format"] = "mobb motion graph";
     j["version"] = 1;
-    j["comment"] = "Clips of real mocap joined where poses match (Kovar et al. 2002). Units: metres, seconds, "
-                   "radians. A clip is samples [first, exit) of its source at fps; its path is in its own frame "
-                   "(root of sample first at the origin, facing +x); exit = [x, y, heading change] of sample exit, "
-                   "where a successor starts.";
+    j["comment"] =
+        "Clips of real mocap joined where poses match (Kovar et al. 2002). Units: metres, seconds, "
+        "radians. A clip is samples [first, exit) of its source at fps; its path is in its own frame "
+        "(root of sample first at the origin, facing +x); exit = [x, y, heading change] of sample exit, "
+        "where a successor starts.";
     j["command"] = g.command;
     j["fps"] = g.fps;
     j["dt"] = g.dt();
@@ -349,7 +332,8 @@ std::string graph_to_text(const MotionGraph& g) {
     j["heading"] = "facing direction: perpendicular to left-minus-right of thighs and upper arms, mean over +-2 frames";
     j["joints"] = g.joints;
     J sources = J::array();
-    for (const GraphSource& s : g.sources) sources.push_back({{"file", s.file}, {"frame_begin", s.frame_begin}, {"samples", s.samples}});
+    for (const GraphSource& s : g.sources)
+        sources.push_back({{"file", s.file}, {"frame_begin", s.frame_begin}, {"samples", s.samples}});
     j["sources"] = sources;
     double total = 0, lo = 1e300, hi = 0;
     std::size_t edges = 0;
@@ -360,9 +344,13 @@ std::string graph_to_text(const MotionGraph& g) {
         edges += c.successors.size();
     }
     const double count = double(std::max<std::size_t>(1, g.clips.size()));
-    j["stats"] = {{"clips", g.clips.size()}, {"edges", edges}, {"mean_duration", rounded(total / count, 4)},
-                  {"min_duration", rounded(lo, 4)}, {"max_duration", rounded(hi, 4)},
-                  {"mean_successors", rounded(double(edges) / count, 3)}, {"transition_points", g.transitions},
+    j["stats"] = {{"clips", g.clips.size()},
+                  {"edges", edges},
+                  {"mean_duration", util::rounded(total / count, 4)},
+                  {"min_duration", util::rounded(lo, 4)},
+                  {"max_duration", util::rounded(hi, 4)},
+                  {"mean_successors", util::rounded(double(edges) / count, 3)},
+                  {"transition_points", g.transitions},
                   {"clips_cut", g.clips_cut}};
     J clips = J::array();
     for (std::size_t k = 0; k < g.clips.size(); ++k) {
@@ -374,14 +362,14 @@ std::string graph_to_text(const MotionGraph& g) {
                          {"source", c.source},
                          {"samples", {c.first, c.exit}},
                          {"frames", {c.frame_first, c.frame_exit}},
-                         {"duration", rounded(c.path.duration(), 6)},
+                         {"duration", util::rounded(c.path.duration(), 6)},
                          {"exit", {c.exit_x, c.exit_y, c.exit_heading}},
                          {"successors", c.successors},
                          {"distances", c.distances},
                          {"path", path}});
     }
     j["clips"] = clips;
-    return readable_json(j);
+    return util::readable_json(j);
 }
 
 namespace {
@@ -393,7 +381,8 @@ const nlohmann::json& field(const nlohmann::json& j, const char* key, const std:
 
 double number(const nlohmann::json& j, const char* key, const std::string& where) {
     const nlohmann::json& v = field(j, key, where);
-    if (!v.is_number() || !std::isfinite(v.get<double>())) throw GraphError(where + "." + key + ": expected a finite number");
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+        throw GraphError(where + "." + key + ": expected a finite number");
     return v.get<double>();
 }
 
@@ -423,7 +412,8 @@ GraphClip clip_from_json(const nlohmann::json& c, const MotionGraph& g, const st
     out.exit_heading = exit[2].get<double>();
     const auto& succ = field(c, "successors", where);
     if (!succ.is_array() || succ.empty()) throw GraphError(where + ".successors: every clip needs a successor");
-    for (std::size_t k = 0; k < succ.size(); ++k) out.successors.push_back(integer(succ[k], where + ".successors[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < succ.size(); ++k)
+        out.successors.push_back(integer(succ[k], where + ".successors[" + std::to_string(k) + "]"));
     if (c.contains("distances") && c["distances"].is_array())
         for (const auto& d : c["distances"])
             if (d.is_number()) out.distances.push_back(d.get<double>());
@@ -462,7 +452,8 @@ MotionGraph graph_from_json(const nlohmann::json& j, const std::string& where) {
         const std::string w = where + ".sources[" + std::to_string(k) + "]";
         const auto& f = field(sources[k], "file", w);
         if (!f.is_string()) throw GraphError(w + ".file: expected a string");
-        g.sources.push_back({f.get<std::string>(), int(number(sources[k], "frame_begin", w)), int(number(sources[k], "samples", w))});
+        g.sources.push_back(
+            {f.get<std::string>(), int(number(sources[k], "frame_begin", w)), int(number(sources[k], "samples", w))});
     }
     const auto& clips = field(j, "clips", where);
     if (!clips.is_array() || clips.empty()) throw GraphError(where + ".clips: expected a non-empty array");
@@ -471,7 +462,8 @@ MotionGraph graph_from_json(const nlohmann::json& j, const std::string& where) {
     for (std::size_t k = 0; k < g.clips.size(); ++k)
         for (int s : g.clips[k].successors)
             if (s < 0 || s >= int(g.clips.size()))
-                throw GraphError(where + ".clips[" + std::to_string(k) + "].successors: clip " + std::to_string(s) + " does not exist");
+                throw GraphError(where + ".clips[" + std::to_string(k) + "].successors: clip " + std::to_string(s) +
+                                 " does not exist");
     return g;
 }
 

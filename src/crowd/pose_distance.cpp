@@ -15,10 +15,9 @@ struct NamedJoint {
     double weight;
 };
 constexpr NamedJoint kMajor[] = {
-    {"Pelvis", 1.0},    {"L_Thigh", 1.0},   {"R_Thigh", 1.0},   {"L_Calf", 1.0},    {"R_Calf", 1.0},
-    {"L_Foot", 1.0},    {"R_Foot", 1.0},    {"L_ToeBase", 0.5}, {"R_ToeBase", 0.5}, {"Spine02", 1.0},
-    {"Head", 1.0},      {"L_Upperarm", 0.5}, {"R_Upperarm", 0.5}, {"L_Forearm", 0.5}, {"R_Forearm", 0.5},
-    {"L_Hand", 0.5},    {"R_Hand", 0.5},
+    {"Pelvis", 1.0},     {"L_Thigh", 1.0},   {"R_Thigh", 1.0},   {"L_Calf", 1.0},  {"R_Calf", 1.0}, {"L_Foot", 1.0},
+    {"R_Foot", 1.0},     {"L_ToeBase", 0.5}, {"R_ToeBase", 0.5}, {"Spine02", 1.0}, {"Head", 1.0},   {"L_Upperarm", 0.5},
+    {"R_Upperarm", 0.5}, {"L_Forearm", 0.5}, {"R_Forearm", 0.5}, {"L_Hand", 0.5},  {"R_Hand", 0.5},
 };
 
 bool ends_with_joint(const std::string& name, const std::string& suffix) {
@@ -37,10 +36,10 @@ int window_start(int f, int frames, int w) { return std::clamp(f - w / 2, 0, fra
 
 // Weighted sums of one frame (or window) needed by the closed-form alignment.
 struct FrameSums {
-    double w = 0;          // total weight
-    glm::dvec2 s{0.0};     // sum w p
-    double ss = 0;         // sum w |p|^2 (ground)
-    double hh = 0;         // sum w h^2
+    double w = 0;       // total weight
+    glm::dvec2 s{0.0};  // sum w p
+    double ss = 0;      // sum w |p|^2 (ground)
+    double hh = 0;      // sum w h^2
 };
 
 // Cross sums of a frame pair: sum w a.b, sum w (b x a), sum w ha hb.
@@ -176,7 +175,8 @@ PoseTrack pose_track(const io::Clip& clip, const PoseJoints& joints) {
         return t;
     }
     for (int f = 0; f < t.frames; ++f) {
-        const glm::dvec2 d = t.root[std::size_t(std::min(t.frames - 1, f + 2))] - t.root[std::size_t(std::max(0, f - 2))];
+        const glm::dvec2 d =
+            t.root[std::size_t(std::min(t.frames - 1, f + 2))] - t.root[std::size_t(std::max(0, f - 2))];
         t.heading.push_back(glm::dot(d, d) > 0 ? std::atan2(d.y, d.x) : 0.0);
     }
     return t;
@@ -202,7 +202,8 @@ std::vector<float> distance_matrix(const PoseTrack& a, const PoseTrack& b, int w
     for (int f = 0; f < b.frames; ++f) sb.push_back(frame_sums(b, f));
     std::vector<PairSums> pairs(std::size_t(a.frames) * std::size_t(b.frames));
     for (int i = 0; i < a.frames; ++i)
-        for (int j = 0; j < b.frames; ++j) pairs[std::size_t(i) * std::size_t(b.frames) + std::size_t(j)] = pair_sums(a, i, b, j);
+        for (int j = 0; j < b.frames; ++j)
+            pairs[std::size_t(i) * std::size_t(b.frames) + std::size_t(j)] = pair_sums(a, i, b, j);
     std::vector<float> out(pairs.size());
     for (int i = 0; i < a.frames; ++i) {
         const int si = window_start(i, a.frames, w);

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "json_text.h"
+#include "mobb/util/json_text.h"
 
 namespace mobb::crowd {
 
@@ -15,7 +15,8 @@ namespace {
 
 // Whether agent a plays a fallback clip at frame f (clips are in time order).
 bool fallback_at(const AgentTrack& t, std::int64_t f) {
-    auto it = std::upper_bound(t.clips.begin(), t.clips.end(), f, [](std::int64_t x, const PlacedClip& c) { return x < c.start; });
+    auto it = std::upper_bound(t.clips.begin(), t.clips.end(), f,
+                               [](std::int64_t x, const PlacedClip& c) { return x < c.start; });
     return it != t.clips.begin() && std::prev(it)->fallback;
 }
 
@@ -35,7 +36,8 @@ public:
         x0_ = y0_ = 1e300;
         double x1 = -1e300, y1 = -1e300;
         for (std::size_t a = 0; a < n; ++a)
-            x0_ = std::min(x0_, frame[a].x), y0_ = std::min(y0_, frame[a].y), x1 = std::max(x1, frame[a].x), y1 = std::max(y1, frame[a].y);
+            x0_ = std::min(x0_, frame[a].x), y0_ = std::min(y0_, frame[a].y), x1 = std::max(x1, frame[a].x),
+            y1 = std::max(y1, frame[a].y);
         const double w = x1 - x0_, h = y1 - y0_, count = double(n);
         // The margin keeps rounding of (x - x0) / cell from putting two agents closer than `reach` two
         // cells apart.
@@ -60,10 +62,11 @@ public:
             for (int iy = 0; iy < ny_; ++iy) {
                 const std::size_t c = cell(ix, iy);
                 for (std::size_t i = first_[c]; i < first_[c + 1]; ++i) {
-                    test(i, i + 1, first_[c + 1], f);                  // the rest of its cell
+                    test(i, i + 1, first_[c + 1], f);                            // the rest of its cell
                     if (iy + 1 < ny_) test(i, first_[c + 1], first_[c + 2], f);  // the cell above
-                    if (ix + 1 < nx_) {                                  // the three cells to the right
-                        const std::size_t lo = cell(ix + 1, std::max(0, iy - 1)), hi = cell(ix + 1, std::min(ny_ - 1, iy + 1));
+                    if (ix + 1 < nx_) {                                          // the three cells to the right
+                        const std::size_t lo = cell(ix + 1, std::max(0, iy - 1)),
+                                          hi = cell(ix + 1, std::min(ny_ - 1, iy + 1));
                         test(i, first_[lo], first_[hi + 1], f);
                     }
                 }
@@ -143,8 +146,11 @@ std::string record_to_text(const Record& r, const std::string& summary_json) {
     for (const AgentTrack& t : r.tracks) {
         J clips = J::array();
         for (const PlacedClip& c : t.clips)
-            clips.push_back({{"clip", c.clip}, {"start", c.start}, {"place", {c.place.x, c.place.y, c.place.theta, c.place.t0}},
-                             {"fallback", c.fallback}, {"commit", c.commit}});
+            clips.push_back({{"clip", c.clip},
+                             {"start", c.start},
+                             {"place", {c.place.x, c.place.y, c.place.theta, c.place.t0}},
+                             {"fallback", c.fallback},
+                             {"commit", c.commit}});
         J samples = J::array();
         for (const auto& s : t.samples) samples.push_back({s[0], s[1], s[2], s[3]});
         tracks.push_back({{"clips", clips}, {"samples", samples}});
@@ -156,15 +162,26 @@ std::string record_to_text(const Record& r, const std::string& summary_json) {
         for (const Candidate& k : c.candidates) {
             J against = J::array();
             for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.index, int(q.hit)});
-            cands.push_back({{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits},
+            cands.push_back({{"clip", k.clip},
+                             {"outside", k.outside},
+                             {"queries", k.queries},
+                             {"hits", k.hits},
                              {"against", against}});
         }
-        choices.push_back({{"agent", c.agent}, {"frame", c.frame}, {"t", rounded(double(c.frame) * r.dt, 9)},
-                           {"taken", c.taken}, {"fallback", c.fallback}, {"queries", c.queries}, {"tests2d", c.tests2d},
-                           {"tests3d", c.tests3d}, {"samples", c.samples}, {"pruned", c.pruned}, {"candidates", cands}});
+        choices.push_back({{"agent", c.agent},
+                           {"frame", c.frame},
+                           {"t", util::rounded(double(c.frame) * r.dt, 9)},
+                           {"taken", c.taken},
+                           {"fallback", c.fallback},
+                           {"queries", c.queries},
+                           {"tests2d", c.tests2d},
+                           {"tests3d", c.tests3d},
+                           {"samples", c.samples},
+                           {"pruned", c.pruned},
+                           {"candidates", cands}});
     }
     j["choices"] = choices;
-    return readable_json(j);
+    return util::readable_json(j);
 }
 
 Record load_record(const std::string& file) {
@@ -186,14 +203,19 @@ Record load_record(const std::string& file) {
             AgentTrack track;
             for (const auto& c : t.at("clips")) {
                 const auto& p = c.at("place");
-                track.clips.push_back({c.at("clip").get<int>(), c.at("start").get<std::int64_t>(),
-                                       {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>(), p.at(3).get<double>()},
-                                       c.at("fallback").get<bool>(), c.at("commit").get<std::int64_t>()});
+                track.clips.push_back(
+                    {c.at("clip").get<int>(),
+                     c.at("start").get<std::int64_t>(),
+                     {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>(), p.at(3).get<double>()},
+                     c.at("fallback").get<bool>(),
+                     c.at("commit").get<std::int64_t>()});
             }
             for (const auto& s : t.at("samples"))
-                track.samples.push_back({s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
+                track.samples.push_back(
+                    {s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
             if (std::int64_t(track.samples.size()) != r.frames)
-                throw std::runtime_error("a track has " + std::to_string(track.samples.size()) + " samples, expected " + std::to_string(r.frames));
+                throw std::runtime_error("a track has " + std::to_string(track.samples.size()) + " samples, expected " +
+                                         std::to_string(r.frames));
             r.tracks.push_back(std::move(track));
         }
         for (const auto& c : j.at("choices")) {
@@ -208,8 +230,11 @@ Record load_record(const std::string& file) {
             cp.samples = c.at("samples").get<std::uint64_t>();
             cp.pruned = c.at("pruned").get<std::uint64_t>();
             for (const auto& k : c.at("candidates")) {
-                Candidate cand{k.at("clip").get<int>(), k.at("outside").get<bool>(), k.at("queries").get<int>(),
-                               k.at("hits").get<int>(), {}};
+                Candidate cand{k.at("clip").get<int>(),
+                               k.at("outside").get<bool>(),
+                               k.at("queries").get<int>(),
+                               k.at("hits").get<int>(),
+                               {}};
                 for (const auto& q : k.at("against")) {
                     const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>() != 0};
                     if (cq.agent < 0 || std::size_t(cq.agent) >= r.tracks.size() || cq.index < 0 ||

@@ -165,17 +165,6 @@ void resample(Clip& clip, double fps) {
     clip.source_index = std::move(source);
 }
 
-bool usable_folder(const fs::path& path) {
-    std::error_code ec;
-    return !path.empty() && fs::is_directory(path, ec);
-}
-
-std::string absolute_string(const fs::path& path) {
-    std::error_code ec;
-    const fs::path abs = fs::absolute(path, ec);
-    return (ec ? path : abs).lexically_normal().string();
-}
-
 }  // namespace
 
 ScaleGuess guess_scale(double height) {
@@ -242,15 +231,6 @@ Clip load_clip(const std::string& file, const LoadOptions& options) {
     const std::vector<std::string> jumps = root_jumps(clip);
     clip.warnings.insert(clip.warnings.end(), jumps.begin(), jumps.end());
     return clip;
-}
-
-std::string data_dir() {
-    if (const char* env = std::getenv("MOBB_DATA"); env != nullptr && usable_folder(env)) return absolute_string(env);
-    if (usable_folder("../shared/mocap")) return absolute_string("../shared/mocap");
-#ifdef MOBB_DEFAULT_DATA_DIR
-    if (usable_folder(MOBB_DEFAULT_DATA_DIR)) return absolute_string(MOBB_DEFAULT_DATA_DIR);
-#endif
-    return {};
 }
 
 }  // namespace mobb::io

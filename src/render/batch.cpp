@@ -10,9 +10,11 @@ Batch::Batch(GLenum mode) : mode_(mode) {
     glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ColorVertex), reinterpret_cast<void*>(offsetof(ColorVertex, pos)));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ColorVertex),
+                          reinterpret_cast<void*>(offsetof(ColorVertex, pos)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ColorVertex), reinterpret_cast<void*>(offsetof(ColorVertex, color)));
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ColorVertex),
+                          reinterpret_cast<void*>(offsetof(ColorVertex, color)));
     glBindVertexArray(0);
 }
 
@@ -34,7 +36,8 @@ void Batch::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
     dirty_ = true;
 }
 
-void Batch::quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d, const glm::vec4& color) {
+void Batch::quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                 const glm::vec4& color) {
     triangle(a, b, c, color);
     triangle(a, c, d, color);
 }
@@ -44,7 +47,8 @@ void Batch::draw() {
     glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     if (dirty_) {
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(ColorVertex)), vertices_.data(), GL_DYNAMIC_DRAW);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(ColorVertex)), vertices_.data(),
+                     GL_DYNAMIC_DRAW);
         dirty_ = false;
     }
     glDrawArrays(mode_, 0, GLsizei(vertices_.size()));

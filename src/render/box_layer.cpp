@@ -21,7 +21,7 @@ void BoxLayer::rebuild(const Frame& frame) {
     const float face_alpha = frame.layers.all_levels ? 0.06f : 0.14f;
     for (const ClipView& clip : frame.clips) {
         if (!clip.visible) continue;
-        const SpaceTimeRigid m = rigid_of(clip.place);
+        const SpaceTimeRigid m = SpaceTimeRigid::of(clip.place);
         for (const Node& node : clip.tree->nodes()) {
             if (!frame.layers.all_levels && !shown_at_level(node, frame.layers.level, frame.layers.levels)) continue;
             const glm::vec3 color = level_color(node.level);
@@ -38,13 +38,15 @@ void BoxLayer::rebuild(const Frame& frame) {
 
 void BoxLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.boxes) return;
-    if (frame.revision != revision_ || frame.layers.level != level_ || frame.layers.levels != levels_ || frame.layers.all_levels != all_levels_ ||
-        frame.time_scale != time_scale_)
+    if (frame.revision != revision_ || frame.layers.level != level_ || frame.layers.levels != levels_ ||
+        frame.layers.all_levels != all_levels_ || frame.time_scale != time_scale_)
         rebuild(frame);
     ctx.color->use();
     ctx.color->set("u_mvp", ctx.view_proj);
-    if (!translucent_pass) edges_.draw();
-    else if (frame.layers.box_faces) faces_.draw();
+    if (!translucent_pass)
+        edges_.draw();
+    else if (frame.layers.box_faces)
+        faces_.draw();
 }
 
 }  // namespace mobb::render

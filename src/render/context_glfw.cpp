@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "gl.h"
 #include <GLFW/glfw3.h>
+#include "gl.h"
 
 namespace mobb::render {
 

@@ -30,8 +30,17 @@ struct OsMesaContext::Impl {
 
 OsMesaContext::OsMesaContext(int width, int height) : impl_(std::make_unique<Impl>()) {
     pin_software_rasterizer();
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           3,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           3,
+                           0};
     impl_->context = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!impl_->context) throw std::runtime_error("OSMesa: cannot create an OpenGL 3.3 core context");
     impl_->buffer.resize(std::size_t(width) * std::size_t(height) * 4);

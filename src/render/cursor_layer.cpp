@@ -21,7 +21,8 @@ void CursorLayer::skeletons(const Frame& frame) {
             const io::Animation* anim = frame.clips[c].animation;
             if (!anim || anim->positions.empty()) continue;
             double lowest = 1e300;
-            for (const glm::dvec3& p : anim->positions) lowest = std::min(lowest, io::to_ground(p, frame.clips[c].up).z);
+            for (const glm::dvec3& p : anim->positions)
+                lowest = std::min(lowest, io::to_ground(p, frame.clips[c].up).z);
             floor_[c] = lowest;
         }
         revision_ = frame.revision;

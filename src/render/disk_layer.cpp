@@ -31,10 +31,10 @@ Mesh unit_cylinder(int segments) {
     for (int k = 0; k < segments; ++k) {
         const float a = two_pi * float(k) / float(segments);
         const glm::vec3 p(std::cos(a), 0, -std::sin(a));
-        m.vertices.push_back({p, p});            // 4k: side, bottom
-        m.vertices.push_back({p + up, p});       // 4k + 1: side, top
-        m.vertices.push_back({p + up, up});      // 4k + 2: top cap rim
-        m.vertices.push_back({p + up, up});      // 4k + 3: unused twin keeps the stride simple
+        m.vertices.push_back({p, p});        // 4k: side, bottom
+        m.vertices.push_back({p + up, p});   // 4k + 1: side, top
+        m.vertices.push_back({p + up, up});  // 4k + 2: top cap rim
+        m.vertices.push_back({p + up, up});  // 4k + 3: unused twin keeps the stride simple
     }
     const auto centre = std::uint16_t(m.vertices.size());
     m.vertices.push_back({up, up});
@@ -59,10 +59,12 @@ void DiskLayer::set_segments(int segments) {
     // Stacks' vertex arrays keep referring to the same buffers: only the contents change.
     const Mesh mesh = unit_cylinder(segments);
     glBindBuffer(GL_ARRAY_BUFFER, mesh_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(MeshVertex)), mesh.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(MeshVertex)), mesh.vertices.data(),
+                 GL_STATIC_DRAW);
     glBindVertexArray(0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint16_t)), mesh.indices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint16_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
     mesh_indices_ = GLsizei(mesh.indices.size());
     segments_ = segments;
 }
@@ -144,8 +146,10 @@ DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
     if (s.built) return s;
     if (!s.vao) s = make_stack(level > 0);
     const std::vector<DiskInstance> disks = disk_instances(clip.tree->path(), clip.place);
-    if (level == 0) upload(s, disks);
-    else upload(s, group_disks(disks, 1 << level));
+    if (level == 0)
+        upload(s, disks);
+    else
+        upload(s, group_disks(disks, 1 << level));
     s.built = true;
     return s;
 }

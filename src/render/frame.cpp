@@ -13,8 +13,12 @@ glm::vec3 clip_color(int index) {
     // Many clips (the benchmark crowd): walk the hue circle by the golden angle.
     const float h = std::fmod(float(index) * 0.618034f, 1.0f) * 6.0f;
     const float x = 1.0f - std::fabs(std::fmod(h, 2.0f) - 1.0f);
-    glm::vec3 c = h < 1 ? glm::vec3(1, x, 0) : h < 2 ? glm::vec3(x, 1, 0) : h < 3 ? glm::vec3(0, 1, x)
-                : h < 4 ? glm::vec3(0, x, 1) : h < 5 ? glm::vec3(x, 0, 1) : glm::vec3(1, 0, x);
+    glm::vec3 c = h < 1   ? glm::vec3(1, x, 0)
+                  : h < 2 ? glm::vec3(x, 1, 0)
+                  : h < 3 ? glm::vec3(0, 1, x)
+                  : h < 4 ? glm::vec3(0, x, 1)
+                  : h < 5 ? glm::vec3(x, 0, 1)
+                          : glm::vec3(1, 0, x);
     return 0.25f + 0.6f * c;
 }
 

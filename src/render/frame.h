@@ -16,8 +16,8 @@
 namespace mobb::render {
 
 struct ClipView {
-    const Tree* tree = nullptr;                 ///< the path and its boxes, in the clip's own frame
-    const io::Animation* animation = nullptr;   ///< joints per frame for the skeleton; null for synthetic paths
+    const Tree* tree = nullptr;                ///< the path and its boxes, in the clip's own frame
+    const io::Animation* animation = nullptr;  ///< joints per frame for the skeleton; null for synthetic paths
     io::UpAxis up = io::UpAxis::Y;
     Placement place;
     glm::vec3 color{0.5f};
@@ -32,11 +32,11 @@ struct Layers {
     bool boxes = false;
     bool box_faces = true;
     bool all_levels = false;
-    int level = 0;                ///< 0 = root; levels below a leaf show the leaf
-    int levels = 1;               ///< how many levels from `level` down are drawn
-    bool cursor = true;           ///< the time-cursor plane
-    bool skeletons = true;        ///< skeletons at the cursor time
-    bool trace = true;            ///< the current trace step
+    int level = 0;          ///< 0 = root; levels below a leaf show the leaf
+    int levels = 1;         ///< how many levels from `level` down are drawn
+    bool cursor = true;     ///< the time-cursor plane
+    bool skeletons = true;  ///< skeletons at the cursor time
+    bool trace = true;      ///< the current trace step
 };
 
 /// A skeleton posed by the caller rather than played from a clip (a crowd agent: the viewer picks the

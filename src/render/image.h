@@ -11,7 +11,9 @@ struct Image {
     std::vector<std::uint8_t> rgba;  ///< width * height * 4, top row first
 
     std::uint8_t* at(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
-    const std::uint8_t* at(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+    const std::uint8_t* at(int x, int y) const {
+        return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+    }
 };
 
 /// Writes a PNG through a temporary file renamed into place, so a failure leaves no partial file.

@@ -61,8 +61,10 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
         revision_ = frame.revision;
     }
     // Multisampling costs llvmpipe about 5x in fill: crowds are drawn single-sampled.
-    if (disks_ > kMultisampleUpTo) glDisable(GL_MULTISAMPLE);
-    else glEnable(GL_MULTISAMPLE);
+    if (disks_ > kMultisampleUpTo)
+        glDisable(GL_MULTISAMPLE);
+    else
+        glEnable(GL_MULTISAMPLE);
     DrawContext ctx;
     ctx.view_proj = camera.projection(float(width) / float(std::max(height, 1))) * camera.view();
     ctx.width = width;

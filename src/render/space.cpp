@@ -5,10 +5,6 @@
 
 namespace mobb::render {
 
-SpaceTimeRigid rigid_of(const Placement& place) {
-    return {std::cos(place.theta), std::sin(place.theta), {place.x, place.y, place.t0}};
-}
-
 std::array<glm::vec3, 8> corners(const Obb3& box, double time_scale) {
     std::array<glm::vec3, 8> out;
     for (int k = 0; k < 8; ++k) {

@@ -14,9 +14,6 @@ inline glm::vec3 to_gl(double x, double y, double t, double time_scale) {
     return {float(x), float(t * time_scale), float(-y)};
 }
 
-/// The placement as a rigid motion of space-time: rotation theta about t, then shift (x, y, t0).
-SpaceTimeRigid rigid_of(const Placement& place);
-
 /// Corners of a space-time box in the GL world; corner k has bit i set for +half[i].
 std::array<glm::vec3, 8> corners(const Obb3& box, double time_scale);
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <stb_easy_font.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace mobb::render {
 
@@ -23,8 +23,9 @@ void TextLayer::draw(const DrawContext& ctx) {
         const float sx = (clip.x / clip.w * 0.5f + 0.5f) * float(ctx.width);
         const float sy = (0.5f - clip.y / clip.w * 0.5f) * float(ctx.height);
         const float w = float(stb_easy_font_width(label.text.data())) * scale;
-        const float x0 = label.anchor == Anchor::Left ? sx + 3.0f * scale
-                       : label.anchor == Anchor::Right ? sx - w - 3.0f * scale : sx - 0.5f * w;
+        const float x0 = label.anchor == Anchor::Left    ? sx + 3.0f * scale
+                         : label.anchor == Anchor::Right ? sx - w - 3.0f * scale
+                                                         : sx - 0.5f * w;
         const float y0 = sy - 3.5f * scale;
         const int n = stb_easy_font_print(0.0f, 0.0f, label.text.data(), nullptr, quads.data(), int(quads.size()));
         for (int q = 0; q < n; ++q) {

@@ -24,7 +24,8 @@ void TraceLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
     faces_.clear();
     auto add = [&](const ClipView& clip, std::int32_t node) {
         if (node < 0 || node >= std::int32_t(clip.tree->nodes().size())) return;
-        const Obb3 box = transformed(clip.tree->box3(clip.tree->nodes()[std::size_t(node)]), rigid_of(clip.place));
+        const Obb3 box =
+            transformed(clip.tree->box3(clip.tree->nodes()[std::size_t(node)]), SpaceTimeRigid::of(clip.place));
         add_box(box, frame.time_scale, glm::vec4(color, 1.0f), edges_, glm::vec4(color, 0.12f), &faces_);
     };
     add(frame.clips[std::size_t(frame.trace.a)], ev->node_a);

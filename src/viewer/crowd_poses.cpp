@@ -14,11 +14,12 @@ io::Clip load_graph_source(const crowd::MotionGraph& g, int source) {
     io::LoadOptions lo;
     lo.fps = g.fps;
     lo.frame_begin = src.frame_begin;
-    const std::string file = crowd::resolve_data_file(src.file);
+    const std::string file = io::resolve_data_file(src.file);
     io::Clip clip = io::load_clip(file, lo);
     if (int(clip.path.size()) != src.samples)
-        throw std::runtime_error(file + ": " + std::to_string(clip.path.size()) + " samples at " + std::to_string(g.fps) +
-                                 " fps, the graph expects " + std::to_string(src.samples) + " (a different file?)");
+        throw std::runtime_error(file + ": " + std::to_string(clip.path.size()) + " samples at " +
+                                 std::to_string(g.fps) + " fps, the graph expects " + std::to_string(src.samples) +
+                                 " (a different file?)");
     return clip;
 }
 

@@ -22,7 +22,7 @@ io::Clip load_graph_source(const crowd::MotionGraph& graph, int source);
 /// One source as the skeletons need it: the animation, and per sample the root and heading the graph
 /// used to localise clips (crowd::pose_track), plus the lowest joint height (the skeleton's feet).
 struct PoseSource {
-    std::shared_ptr<const io::Clip> clip;   ///< null when it could not be loaded (see error)
+    std::shared_ptr<const io::Clip> clip;  ///< null when it could not be loaded (see error)
     std::vector<double> root_x, root_y, heading;
     double floor = 0.0;
     std::string error;
@@ -35,7 +35,7 @@ Placement source_to_world(const PoseSource& source, const crowd::GraphClip& clip
 /// The clip agent `agent` plays at time t and the source sample showing it. False outside its clips.
 struct AgentClipAt {
     const crowd::PlacedClip* placed = nullptr;
-    int sample = 0;   ///< sample index in the source (graph fps)
+    int sample = 0;  ///< sample index in the source (graph fps)
 };
 bool agent_clip_at(const crowd::Record& record, const crowd::MotionGraph& graph, int agent, double t, AgentClipAt& out);
 

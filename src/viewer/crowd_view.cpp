@@ -73,7 +73,8 @@ State load_crowd_state(const std::string& record_file, float aspect) {
         Path path;
         path.dt = r.dt;
         for (const auto& q : r.tracks[a].samples) path.samples.push_back({q[1], q[2], q[3]});
-        if (path.samples.empty()) throw std::runtime_error(record_file + ": agent " + std::to_string(a) + " has no samples");
+        if (path.samples.empty())
+            throw std::runtime_error(record_file + ": agent " + std::to_string(a) + " has no samples");
         // Frame k of the record starts at t = k * dt: the path starts at the record's first sample time.
         add_clip(s, "agent " + std::to_string(a), path, {0, 0, 0, r.tracks[a].samples.front()[0]},
                  render::clip_color(int(a)));
@@ -87,8 +88,9 @@ std::vector<int> agent_choices(const CrowdView& v, int agent) {
     std::vector<int> out;
     for (std::size_t k = 0; k < v.record.choices.size(); ++k)
         if (v.record.choices[k].agent == agent) out.push_back(int(k));
-    std::stable_sort(out.begin(), out.end(),
-                     [&](int a, int b) { return v.record.choices[std::size_t(a)].frame < v.record.choices[std::size_t(b)].frame; });
+    std::stable_sort(out.begin(), out.end(), [&](int a, int b) {
+        return v.record.choices[std::size_t(a)].frame < v.record.choices[std::size_t(b)].frame;
+    });
     return out;
 }
 
@@ -151,7 +153,8 @@ bool open_candidate_query(State& s, int k, int j, std::string* message) {
         return fail("query " + std::to_string(j) + " names no committed clip of the record");
     const crowd::PlacedClip& other = v.record.tracks[std::size_t(q.agent)].clips[std::size_t(q.index)];
     if (other.clip < 0 || std::size_t(other.clip) >= v.graph->clips.size())
-        return fail("agent " + std::to_string(q.agent) + "'s clip " + std::to_string(other.clip) + " is not in the graph");
+        return fail("agent " + std::to_string(q.agent) + "'s clip " + std::to_string(other.clip) +
+                    " is not in the graph");
     drop_opened(s);
     const int b = add_clip(s, "agent " + std::to_string(q.agent) + " clip " + std::to_string(other.clip),
                            v.graph->clips[std::size_t(other.clip)].path, other.place, render::clip_color(q.agent));

@@ -18,15 +18,15 @@ struct CrowdView {
     crowd::Record record;
     std::shared_ptr<crowd::MotionGraph> graph;  ///< null when the record's graph cannot be read
     std::string graph_error;
-    std::shared_ptr<PoseSources> poses;         ///< the graph's mocap sources for the skeletons (null without graph)
-    int agents = 0;                             ///< clips 0..agents-1 of the state are the agents
-    int agent = 0;                              ///< agent whose choice points the panel lists
-    int choice = -1;                            ///< index into record.choices, -1 for none
-    std::vector<int> candidate_clips;           ///< state clip of each candidate of the choice (-1: unknown clip id)
+    std::shared_ptr<PoseSources> poses;            ///< the graph's mocap sources for the skeletons (null without graph)
+    int agents = 0;                                ///< clips 0..agents-1 of the state are the agents
+    int agent = 0;                                 ///< agent whose choice points the panel lists
+    int choice = -1;                               ///< index into record.choices, -1 for none
+    std::vector<int> candidate_clips;              ///< state clip of each candidate of the choice (-1: unknown clip id)
     int opened_candidate = -1, opened_query = -1;  ///< the query shown in the trace debugger, -1 for none
-    std::vector<bool> accepted;                 ///< per candidate: no hit, inside the world
+    std::vector<bool> accepted;                    ///< per candidate: no hit, inside the world
     bool playing = false;
-    float rate = 1.0f;                          ///< seconds of crowd per second while playing
+    float rate = 1.0f;  ///< seconds of crowd per second while playing
 };
 
 /// Loads a record and its graph (when readable) into a state: agents as clips, no query.

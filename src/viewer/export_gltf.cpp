@@ -178,16 +178,19 @@ GltfSummary export_gltf(const State& s, const std::string& file) {
             for (int level = 0; level < depth; ++level) {
                 MeshData faces, edges;
                 for (const Node& n : clip.tree->nodes()) {
-                    if (n.level != level || (!frame.layers.all_levels && !render::shown_at_level(n, frame.layers.level, frame.layers.levels)))
+                    if (n.level != level || (!frame.layers.all_levels &&
+                                             !render::shown_at_level(n, frame.layers.level, frame.layers.levels)))
                         continue;
-                    add_box(faces, edges, transformed(clip.tree->box3(n), render::rigid_of(clip.place)), ts);
+                    add_box(faces, edges, transformed(clip.tree->box3(n), SpaceTimeRigid::of(clip.place)), ts);
                 }
                 if (faces.positions.empty()) continue;
                 const glm::vec3 color = render::level_color(level);
                 const std::string lv = " level " + std::to_string(level);
                 if (frame.layers.box_faces)
-                    prims.push_back(out.primitive(faces, out.material(name + lv + " faces", color, 0.15f), TINYGLTF_MODE_TRIANGLES));
-                prims.push_back(out.primitive(edges, out.material(name + lv + " edges", color, 1.0f), TINYGLTF_MODE_LINE));
+                    prims.push_back(out.primitive(faces, out.material(name + lv + " faces", color, 0.15f),
+                                                  TINYGLTF_MODE_TRIANGLES));
+                prims.push_back(
+                    out.primitive(edges, out.material(name + lv + " edges", color, 1.0f), TINYGLTF_MODE_LINE));
             }
             out.mesh(name + " boxes", std::move(prims));
         }
@@ -196,7 +199,9 @@ GltfSummary export_gltf(const State& s, const std::string& file) {
         MeshData faces, edges;
         auto add = [&](const render::ClipView& clip, std::int32_t node) {
             if (node < 0 || node >= std::int32_t(clip.tree->nodes().size())) return;
-            add_box(faces, edges, transformed(clip.tree->box3(clip.tree->nodes()[std::size_t(node)]), render::rigid_of(clip.place)), ts);
+            add_box(faces, edges,
+                    transformed(clip.tree->box3(clip.tree->nodes()[std::size_t(node)]), SpaceTimeRigid::of(clip.place)),
+                    ts);
         };
         add(frame.clips[std::size_t(frame.trace.a)], ev->node_a);
         add(frame.clips[std::size_t(frame.trace.b)], ev->node_b);

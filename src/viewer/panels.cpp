@@ -6,14 +6,12 @@
 
 #include <imgui.h>
 
-#include "cli.h"
 #include "crowd_view.h"
+#include "mobb/core/angle.h"
 
 namespace mobb::viewer {
 
 namespace {
-
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
 ImVec4 imvec(const glm::vec3& c) { return {c.r, c.g, c.b, 1.0f}; }
 
@@ -100,7 +98,7 @@ bool clip_combo(const char* label, int* index, const State& s) {
 
 bool placement_fields(const char* id, Placement& p) {
     ImGui::PushID(id);
-    double xy[2] = {p.x, p.y}, turn[2] = {p.theta * kDegrees, p.t0};
+    double xy[2] = {p.x, p.y}, turn[2] = {degrees(p.theta), p.t0};
     const double lo = -1e4, hi = 1e4;
     bool changed = false;
     if (ImGui::DragScalarN("x y (m)", ImGuiDataType_Double, xy, 2, 0.01f, &lo, &hi, "%.2f")) {
@@ -108,7 +106,7 @@ bool placement_fields(const char* id, Placement& p) {
         changed = true;
     }
     if (ImGui::DragScalarN("deg t0 (s)", ImGuiDataType_Double, turn, 2, 0.05f, &lo, &hi, "%.2f")) {
-        p.theta = turn[0] / kDegrees, p.t0 = turn[1];
+        p.theta = radians(turn[0]), p.t0 = turn[1];
         changed = true;
     }
     ImGui::PopID();
@@ -130,9 +128,12 @@ void query_panel(State& s, Ui& ui) {
         ImGui::TextColored(imvec(render::clip_color(b)), "B: %s", s.clips[std::size_t(b)].name.c_str());
         rerun |= placement_fields("pb", s.places[std::size_t(b)]);
     }
-    static const char* kTypes[] = {"MOBB", "UMOBB", "Hybrid 1", "Hybrid 2", "1-level MOBB", "1-level UMOBB"};
+    const auto type_label = [](void*, int k, const char** out) {
+        *out = kTreeTypes[k].label;
+        return true;
+    };
     int type = int(s.scene.tree.type);
-    bool rebuild = ImGui::Combo("tree", &type, kTypes, 6);
+    bool rebuild = ImGui::Combo("tree", &type, type_label, nullptr, kTreeTypeCount);
     rebuild |= ImGui::SliderInt("n_min", &s.scene.tree.n_min, 1, 64);
     if (rebuild) {
         s.scene.tree.type = TreeType(type);
@@ -223,8 +224,8 @@ void fit_panel(State& s, Ui& ui) {
     if (clip_combo("clip", &ui.fit.clip, s)) ui.fit.mobb.clear();
     update_fit(s, ui.fit);
     ImGui::TextDisabled("tight = box / covered (area, volume); 1 is perfect");
-    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                                  ImGuiTableFlags_SizingFixedFit;
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTable("fit", 7, flags)) {
         for (const char* h : {"lvl", "nodes", "MOBB m2", "tight", "UMOBB m2s", "tight", "PCA tight"})
             ImGui::TableSetupColumn(h);
@@ -264,14 +265,15 @@ void pick_panel(const State& s, const Ui& ui) {
     const Rigid2 m = Rigid2::of(place);
     ImGui::SetNextWindowPos(ImVec2(266, 8), ImGuiCond_FirstUseEver);
     ImGui::Begin("Picked disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::TextColored(imvec(render::clip_color(p.clip)), "clip %d: %s", p.clip, s.clips[std::size_t(p.clip)].name.c_str());
+    ImGui::TextColored(imvec(render::clip_color(p.clip)), "clip %d: %s", p.clip,
+                       s.clips[std::size_t(p.clip)].name.c_str());
     ImGui::Text("sample %d", p.sample);
-    ImGui::Text("time %.3f .. %.3f s", sample_time(place, path.dt, p.sample), sample_time(place, path.dt, p.sample + 1));
+    ImGui::Text("time %.3f .. %.3f s", sample_time(place, path.dt, p.sample),
+                sample_time(place, path.dt, p.sample + 1));
     ImGui::Text("position %.3f, %.3f m", m.apply_x(smp.x, smp.y), m.apply_y(smp.x, smp.y));
     ImGui::Text("radius %.3f m", smp.r);
     ImGui::End();
 }
-
 
 /// The graph clip id of a query's other clip, -1 when the record does not have it.
 int committed_clip(const crowd::Record& r, const crowd::CandidateQuery& q) {
@@ -288,11 +290,15 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     const crowd::Candidate& cand = c.candidates[std::size_t(k)];
     const bool taken = cand.clip == c.taken;
     const bool ok = !cand.outside && cand.hits == 0;
-    const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f) : ok ? glm::vec3(0.25f, 0.8f, 0.3f) : glm::vec3(0.9f, 0.2f, 0.2f);
+    const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f)
+                          : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
+                                : glm::vec3(0.9f, 0.2f, 0.2f);
     char label[128];
     std::snprintf(label, sizeof label, "clip %d: %s%s, %d queries, %d hits###cand%d", cand.clip,
-                  taken ? "taken" : ok ? "clear" : "rejected", cand.outside ? " (leaves the world)" : "", cand.queries,
-                  cand.hits, k);
+                  taken ? "taken"
+                  : ok  ? "clear"
+                        : "rejected",
+                  cand.outside ? " (leaves the world)" : "", cand.queries, cand.hits, k);
     ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
     // The candidate whose query is open stays unfolded.
     if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
@@ -332,8 +338,10 @@ void crowd_panel(State& s, Ui& ui) {
     if (ImGui::Button("space-time")) ui.request_view = 2;
     int agent = v.agent;
     if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select_choice(s, agent, -1);
-    if (!v.graph) ImGui::TextWrapped("graph not loaded (%s): no skeletons, candidates listed only", v.graph_error.c_str());
-    else if (!skeleton_problem(v).empty()) ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
+    if (!v.graph)
+        ImGui::TextWrapped("graph not loaded (%s): no skeletons, candidates listed only", v.graph_error.c_str());
+    else if (!skeleton_problem(v).empty())
+        ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
     ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
     const std::vector<int> choices = agent_choices(v, v.agent);
     ImGui::BeginChild("choices", ImVec2(0, 110), true);

@@ -29,16 +29,16 @@ struct FitTable {
 struct Ui {
     glm::ivec2 window_size{960, 540};
     bool playing = false;
-    float rate = 8.0f;             ///< trace steps per second while playing
+    float rate = 8.0f;  ///< trace steps per second while playing
     double play_clock = 0.0;
-    bool follow = true;            ///< move the time cursor to each trace step
+    bool follow = true;  ///< move the time cursor to each trace step
     bool scroll_to_step = true;
     Pick pick;
     FitTable fit;
     std::string save_path = "scene.json";
-    std::string status;            ///< last message (saved, errors)
+    std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
-    int request_view = 0;          ///< 1 top, 2 side
+    int request_view = 0;  ///< 1 top, 2 side
 };
 
 /// The viewer's compact dark style (call once after ImGui::CreateContext).

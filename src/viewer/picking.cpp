@@ -44,8 +44,8 @@ Pick pick_disk(const State& s, const render::Ray& ray) {
         for (std::size_t i = 0; i < path.size(); ++i) {
             const Sample& smp = path.samples[i];
             const double t0 = sample_time(s.places[k], path.dt, std::int64_t(i));
-            const double d = enter_cylinder(ray, m.apply_x(smp.x, smp.y), -m.apply_y(smp.x, smp.y), smp.r, t0 * ts,
-                                            path.dt * ts);
+            const double d =
+                enter_cylinder(ray, m.apply_x(smp.x, smp.y), -m.apply_y(smp.x, smp.y), smp.r, t0 * ts, path.dt * ts);
             if (d < nearest) {
                 nearest = d;
                 best = {int(k), int(i)};

@@ -6,14 +6,14 @@
 #include <set>
 #include <sstream>
 
-#include "cli.h"
+#include "mobb/core/angle.h"
 #include "space.h"
+#include "viewer_error.h"
 
 namespace mobb::viewer {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using nlohmann::json;
 
 /// Typed access to one JSON object with the place named in every error, and unknown keys rejected.
@@ -26,7 +26,7 @@ public:
     }
 
     [[noreturn]] static void fail(const std::string& where, const std::string& message) {
-        throw app::InputError(where + ": " + message);
+        throw ViewerError(where + ": " + message);
     }
     std::string at(const std::string& key) const { return where_ + "." + key; }
     bool has(const char* key) const { return j_.contains(key); }
@@ -62,7 +62,8 @@ public:
     }
     std::vector<double> numbers(const char* key, std::size_t count) const {
         const json& v = j_.at(key);
-        if (!v.is_array() || v.size() != count) fail(at(key), "expected an array of " + std::to_string(count) + " numbers");
+        if (!v.is_array() || v.size() != count)
+            fail(at(key), "expected an array of " + std::to_string(count) + " numbers");
         std::vector<double> out;
         for (const json& x : v) {
             if (!x.is_number() || !std::isfinite(x.get<double>())) fail(at(key), "expected finite numbers");
@@ -89,40 +90,38 @@ RandomWalk walk_of(const json& j, const std::string& where) {
 SceneClip clip_of(const json& j, const std::string& where) {
     Reader r(j, where, {"file", "random_walk", "up", "scale", "frames", "fps", "place", "visible"});
     SceneClip c;
-    if (r.has("file") == r.has("random_walk")) Reader::fail(where, "expected exactly one of \"file\" and \"random_walk\"");
+    if (r.has("file") == r.has("random_walk"))
+        Reader::fail(where, "expected exactly one of \"file\" and \"random_walk\"");
     c.file = r.string("file", "");
     if (r.has("random_walk")) {
         if (j.at("random_walk").contains("random_walks") || j.at("random_walk").contains("spacing"))
             Reader::fail(r.at("random_walk"), "unknown key");
         c.walk = walk_of(j.at("random_walk"), r.at("random_walk"));
     }
-    c.up = r.string("up", c.up);
-    if (c.up != "y" && c.up != "z") Reader::fail(r.at("up"), "expected \"y\" or \"z\"");
+    c.load.up = r.string("up", c.load.up);
+    if (c.load.up != "y" && c.load.up != "z") Reader::fail(r.at("up"), "expected \"y\" or \"z\"");
     if (r.has("scale")) {
         const json& s = j.at("scale");
         if (s.is_number()) {
             char text[64];
             std::snprintf(text, sizeof text, "%.17g", s.get<double>());
-            c.scale = text;
+            c.load.scale = text;
         } else if (s.is_string() && s.get<std::string>() == "auto") {
-            c.scale = "auto";
+            c.load.scale = "auto";
         } else {
             Reader::fail(r.at("scale"), "expected a number or \"auto\"");
         }
     }
-    c.frames = r.string("frames", "");
-    c.fps = r.has("fps") ? r.positive("fps", 0) : 0;
+    c.load.frames = r.string("frames", "");
+    c.load.fps = r.has("fps") ? r.positive("fps", 0) : 0;
     if (r.has("place")) {
         const auto p = r.numbers("place", 4);
-        c.place = {p[0], p[1], p[2] * kPi / 180.0, p[3]};
+        c.place = {p[0], p[1], radians(p[2]), p[3]};
     }
     c.visible = r.boolean("visible", true);
     // Loader options are checked here too, so a bad one names the scene file and the key.
     try {
-        app::LoadArgs args;
-        args.scale = c.scale;
-        args.frames = c.frames;
-        (void)args.options();
+        (void)io::parse_load_options(c.load);
     } catch (const std::exception& e) {
         Reader::fail(where, e.what());
     }
@@ -130,8 +129,9 @@ SceneClip clip_of(const json& j, const std::string& where) {
 }
 
 void layers_of(const json& j, const std::string& where, render::Layers& l) {
-    Reader r(j, where, {"grid", "labels", "disks", "disks_translucent", "boxes", "box_faces", "all_levels", "level", "levels",
-                        "cursor", "skeletons", "trace"});
+    Reader r(j, where,
+             {"grid", "labels", "disks", "disks_translucent", "boxes", "box_faces", "all_levels", "level", "levels",
+              "cursor", "skeletons", "trace"});
     l.grid = r.boolean("grid", l.grid);
     l.labels = r.boolean("labels", l.labels);
     l.disks = r.boolean("disks", l.disks);
@@ -184,7 +184,7 @@ Scene parse_scene(const json& j, const std::string& file) {
         try {
             s.tree.type = parse_tree_type(t.string("type", "mobb"));
         } catch (const std::exception&) {
-            Reader::fail(t.at("type"), "expected mobb, umobb, hybrid1, hybrid2, mobb1 or umobb1");
+            Reader::fail(t.at("type"), "expected one of " + tree_type_names());
         }
         s.tree.n_min = t.integer("n_min", s.tree.n_min, 1, 1 << 20);
         const std::string fit = t.string("fit", "chord");
@@ -219,7 +219,7 @@ Scene parse_scene(const json& j, const std::string& file) {
 
 Scene load_scene(const std::string& file) {
     std::ifstream in(file);
-    if (!in) throw app::InputError(file + ": cannot open scene file");
+    if (!in) throw ViewerError(file + ": cannot open scene file");
     std::stringstream text;
     text << in.rdbuf();
     json j;
@@ -228,7 +228,7 @@ Scene load_scene(const std::string& file) {
     } catch (const json::parse_error& e) {
         std::string what = e.what();
         const auto pos = what.find("] ");
-        throw app::InputError(file + ": " + (pos == std::string::npos ? what : what.substr(pos + 2)));
+        throw ViewerError(file + ": " + (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     return parse_scene(j, file);
 }
@@ -237,34 +237,54 @@ json scene_json(const Scene& s) {
     json clips = json::array();
     for (const SceneClip& c : s.clips) {
         json o;
-        if (c.walk) o["random_walk"] = {{"seconds", c.walk->seconds}, {"hz", c.walk->hz}, {"seed", c.walk->seed}};
-        else o["file"] = c.file;
-        if (c.up != "y") o["up"] = c.up;
-        if (c.scale != "auto") o["scale"] = std::stod(c.scale);
-        if (!c.frames.empty()) o["frames"] = c.frames;
-        if (c.fps > 0) o["fps"] = c.fps;
-        o["place"] = {c.place.x, c.place.y, c.place.theta * 180.0 / kPi, c.place.t0};
+        if (c.walk)
+            o["random_walk"] = {{"seconds", c.walk->seconds}, {"hz", c.walk->hz}, {"seed", c.walk->seed}};
+        else
+            o["file"] = c.file;
+        if (c.load.up != "y") o["up"] = c.load.up;
+        if (c.load.scale != "auto") o["scale"] = std::stod(c.load.scale);
+        if (!c.load.frames.empty()) o["frames"] = c.load.frames;
+        if (c.load.fps > 0) o["fps"] = c.load.fps;
+        o["place"] = {c.place.x, c.place.y, degrees(c.place.theta), c.place.t0};
         if (!c.visible) o["visible"] = false;
         clips.push_back(o);
     }
     const render::Layers& l = s.layers;
-    json j = {
-        {"clips", clips},
-        {"tree", {{"type", to_string(s.tree.type)}, {"n_min", s.tree.n_min}, {"fit", s.tree.fit == AxisFit::Pca ? "pca" : "chord"}}},
-        {"query", {{"a", s.query_a}, {"b", s.query_b}, {"step", s.step}}},
-        {"layers", {{"grid", l.grid}, {"labels", l.labels}, {"disks", l.disks}, {"disks_translucent", l.disks_translucent},
-                    {"boxes", l.boxes}, {"box_faces", l.box_faces}, {"all_levels", l.all_levels}, {"level", l.level}, {"levels", l.levels},
-                    {"cursor", l.cursor}, {"skeletons", l.skeletons}, {"trace", l.trace}}},
-        {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}}},
-        {"skeleton_scale", s.skeleton_scale},
-        {"image", {{"width", s.width}, {"height", s.height}}}};
+    json j = {{"clips", clips},
+              {"tree",
+               {{"type", to_string(s.tree.type)},
+                {"n_min", s.tree.n_min},
+                {"fit", s.tree.fit == AxisFit::Pca ? "pca" : "chord"}}},
+              {"query", {{"a", s.query_a}, {"b", s.query_b}, {"step", s.step}}},
+              {"layers",
+               {{"grid", l.grid},
+                {"labels", l.labels},
+                {"disks", l.disks},
+                {"disks_translucent", l.disks_translucent},
+                {"boxes", l.boxes},
+                {"box_faces", l.box_faces},
+                {"all_levels", l.all_levels},
+                {"level", l.level},
+                {"levels", l.levels},
+                {"cursor", l.cursor},
+                {"skeletons", l.skeletons},
+                {"trace", l.trace}}},
+              {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}}},
+              {"skeleton_scale", s.skeleton_scale},
+              {"image", {{"width", s.width}, {"height", s.height}}}};
     if (s.generate.count > 0)
-        j["generate"] = {{"random_walks", s.generate.count}, {"seconds", s.generate.walk.seconds},
-                         {"hz", s.generate.walk.hz}, {"seed", s.generate.walk.seed}, {"spacing", s.generate.spacing}};
+        j["generate"] = {{"random_walks", s.generate.count},
+                         {"seconds", s.generate.walk.seconds},
+                         {"hz", s.generate.walk.hz},
+                         {"seed", s.generate.walk.seed},
+                         {"spacing", s.generate.spacing}};
     if (s.camera) {
         const render::Camera& c = *s.camera;
         j["camera"] = {{"target", {c.target.x, -c.target.z, c.target.y / s.time_scale}},
-                       {"yaw", c.yaw}, {"pitch", c.pitch}, {"distance", c.distance}, {"fov", c.fov}};
+                       {"yaw", c.yaw},
+                       {"pitch", c.pitch},
+                       {"distance", c.distance},
+                       {"fov", c.fov}};
     }
     return j;
 }
@@ -276,12 +296,12 @@ void save_scene(const Scene& scene, const std::string& file) {
         out << scene_json(scene).dump(2) << "\n";
         if (!out) {
             std::remove(tmp.c_str());
-            throw app::InputError(file + ": cannot write scene file");
+            throw ViewerError(file + ": cannot write scene file");
         }
     }
     if (std::rename(tmp.c_str(), file.c_str()) != 0) {
         std::remove(tmp.c_str());
-        throw app::InputError(file + ": cannot write scene file");
+        throw ViewerError(file + ": cannot write scene file");
     }
 }
 

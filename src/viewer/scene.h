@@ -11,6 +11,7 @@
 #include "frame.h"
 #include "mobb/core/path.h"
 #include "mobb/core/tree.h"
+#include "mobb/io/load.h"
 
 namespace mobb::viewer {
 
@@ -22,13 +23,10 @@ struct RandomWalk {
 };
 
 struct SceneClip {
-    std::string file;                    ///< relative to the data folder (io::data_dir()) or absolute
-    std::optional<RandomWalk> walk;      ///< instead of a file
-    std::string up = "y";                ///< loader options, as on the command line
-    std::string scale = "auto";
-    std::string frames;
-    double fps = 0;
-    Placement place;                     ///< theta in radians (degrees in the file)
+    std::string file;                ///< relative to the data folder (io::data_dir()) or absolute
+    std::optional<RandomWalk> walk;  ///< instead of a file
+    io::LoadOptionText load;         ///< loader options, as on the command line (up, scale, frames, fps)
+    Placement place;                 ///< theta in radians (degrees in the file)
     bool visible = true;
 };
 
@@ -43,8 +41,8 @@ struct Scene {
     std::vector<SceneClip> clips;
     Generate generate;
     TreeOptions tree;
-    int query_a = 0, query_b = 1;        ///< clip indices of the query; -1 for none
-    int step = -1;                       ///< trace step shown (clamped to the last event); -1 for none
+    int query_a = 0, query_b = 1;  ///< clip indices of the query; -1 for none
+    int step = -1;                 ///< trace step shown (clamped to the last event); -1 for none
     render::Layers layers;
     double time_scale = 1.0;
     double cursor = 0.0;
@@ -53,12 +51,12 @@ struct Scene {
     int width = 960, height = 540;
 };
 
-/// Parses a scene. Throws app::InputError with one line "FILE: KEY.PATH: message" (or the JSON
+/// Parses a scene. Throws ViewerError with one line "FILE: KEY.PATH: message" (or the JSON
 /// parser's line and column) for a missing file, malformed JSON, unknown keys or wrong types.
 Scene load_scene(const std::string& file);
 Scene parse_scene(const nlohmann::json& json, const std::string& file);
 nlohmann::json scene_json(const Scene& scene);
-/// Writes through a temporary file renamed into place. Throws app::InputError.
+/// Writes through a temporary file renamed into place. Throws ViewerError.
 void save_scene(const Scene& scene, const std::string& file);
 
 /// A scene of the given clip files, placed so that their paths cross at the origin.

@@ -4,20 +4,11 @@
 #include <cmath>
 #include <filesystem>
 
-#include "cli.h"
 #include "crowd_view.h"
 #include "random_walk.h"
 #include "renderer.h"
 
 namespace mobb::viewer {
-
-std::string resolve_clip_file(const std::string& file) {
-    const std::filesystem::path p(file);
-    if (p.is_absolute()) return file;
-    const std::string data = io::data_dir();
-    if (data.empty()) throw app::InputError(file + ": no data folder (set MOBB_DATA or run next to ../shared/mocap)");
-    return (std::filesystem::path(data) / p).string();
-}
 
 static LoadedClip load_clip(const SceneClip& c, std::size_t index) {
     LoadedClip out;
@@ -25,13 +16,8 @@ static LoadedClip load_clip(const SceneClip& c, std::size_t index) {
         out.name = "walk " + std::to_string(c.walk->seed);
         return out;
     }
-    app::LoadArgs args;
-    args.up = c.up;
-    args.scale = c.scale;
-    args.frames = c.frames;
-    args.fps = c.fps;
-    const std::string file = resolve_clip_file(c.file);
-    out.clip = std::make_shared<io::Clip>(io::load_clip(file, args.options()));
+    const std::string file = io::resolve_data_file(c.file);
+    out.clip = std::make_shared<io::Clip>(io::load_clip(file, io::parse_load_options(c.load)));
     if (out.clip->path.samples.empty()) throw io::LoadError(file + ": no samples left after frames / fps");
     out.name = std::filesystem::path(c.file).filename().string();
     (void)index;
@@ -59,11 +45,14 @@ State load_state(const Scene& scene, float aspect) {
         LoadedClip c;
         c.name = "walk " + std::to_string(scene.generate.walk.seed + unsigned(k));
         s.clips.push_back(std::move(c));
-        s.places.push_back({double(k % side) * scene.generate.spacing, double(k / side) * scene.generate.spacing, 0, 0});
+        s.places.push_back(
+            {double(k % side) * scene.generate.spacing, double(k / side) * scene.generate.spacing, 0, 0});
     }
     rebuild_trees(s);
-    if (scene.camera) s.camera = *scene.camera;
-    else frame_all(s, aspect);
+    if (scene.camera)
+        s.camera = *scene.camera;
+    else
+        frame_all(s, aspect);
     return s;
 }
 

@@ -19,22 +19,22 @@ namespace mobb::viewer {
 struct CrowdView;  // crowd_view.h
 
 struct LoadedClip {
-    std::string name;                   ///< file name, or "walk N"
-    std::shared_ptr<io::Clip> clip;     ///< null for synthetic paths (no skeleton)
-    std::unique_ptr<Tree> tree;         ///< built with the scene's tree options
+    std::string name;                ///< file name, or "walk N"
+    std::shared_ptr<io::Clip> clip;  ///< null for synthetic paths (no skeleton)
+    std::unique_ptr<Tree> tree;      ///< built with the scene's tree options
 };
 
 struct State {
     Scene scene;
-    std::vector<LoadedClip> clips;      ///< scene.clips, then the generated walks
-    std::vector<Placement> places;      ///< one per clip (generated ones too)
+    std::vector<LoadedClip> clips;  ///< scene.clips, then the generated walks
+    std::vector<Placement> places;  ///< one per clip (generated ones too)
     Trace trace;
     QueryStats stats;
     SamplePair hit;
     bool answer = false;
     bool queried = false;
     render::Camera camera;
-    std::uint64_t revision = 1;         ///< bumped on any change of clips, placements or trees
+    std::uint64_t revision = 1;  ///< bumped on any change of clips, placements or trees
     /// A recorded crowd (mobb view --crowd): clip k's path is fixed_paths[k] when k < its size, and
     /// its colour colors[k] when k < that size. Empty for scenes.
     std::shared_ptr<CrowdView> crowd;
@@ -42,17 +42,14 @@ struct State {
     std::vector<glm::vec3> colors;
 };
 
-/// The absolute path of a scene clip's file (relative names are under io::data_dir()).
-std::string resolve_clip_file(const std::string& file);
-
 /// Loads every clip and builds the trees, runs the query, sets the camera. Throws io::LoadError or
-/// app::InputError naming the file.
+/// ViewerError naming the file.
 State load_state(const Scene& scene, float aspect);
 
-void rebuild_trees(State& state);   ///< after tree options change; also re-runs the query
-void run_query(State& state);       ///< after placements or the query's clips change
+void rebuild_trees(State& state);  ///< after tree options change; also re-runs the query
+void run_query(State& state);      ///< after placements or the query's clips change
 void frame_all(State& state, float aspect);
-void sync_scene(State& state);      ///< copies placements and camera back into state.scene (to save)
+void sync_scene(State& state);  ///< copies placements and camera back into state.scene (to save)
 
 /// The step actually shown: scene.step clamped to the trace (-1 when none).
 int shown_step(const State& state);

@@ -21,10 +21,10 @@ enum class Drag { None, Orbit, Pan, Move };
 /// Mouse gestures over the 3D view: orbit, pan, zoom, click to pick, ctrl+drag to move a clip.
 struct Input {
     Drag drag = Drag::None;
-    float travel = 0;           ///< pixels moved since the press (a click moves less than 4)
-    int clip = -1;              ///< clip being moved
-    double height = 0;          ///< GL height of the plane a clip is dragged on
-    glm::dvec2 anchor{0.0};     ///< ground point under the mouse at the last move
+    float travel = 0;        ///< pixels moved since the press (a click moves less than 4)
+    int clip = -1;           ///< clip being moved
+    double height = 0;       ///< GL height of the plane a clip is dragged on
+    glm::dvec2 anchor{0.0};  ///< ground point under the mouse at the last move
 };
 
 render::Ray mouse_ray(const State& s, const ImGuiIO& io) {

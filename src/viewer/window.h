@@ -8,9 +8,9 @@ namespace mobb::viewer {
 
 struct WindowOptions {
     int width = 1280, height = 800;
-    int frames = 0;              ///< > 0: close after this many frames (smoke tests)
-    std::string screenshot;      ///< when set: save the last frame's framebuffer here
-    std::string scene_file;      ///< the default path of "save"
+    int frames = 0;          ///< > 0: close after this many frames (smoke tests)
+    std::string screenshot;  ///< when set: save the last frame's framebuffer here
+    std::string scene_file;  ///< the default path of "save"
 };
 
 /// Runs until the window closes. Throws std::runtime_error when no window can be opened.

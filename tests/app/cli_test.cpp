@@ -1,10 +1,9 @@
 // The command line as a user meets it: exit codes 0 / 1 / 2, data on stdout only on success.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
-#include <sys/wait.h>
 #include <sstream>
 #include <string>
 
@@ -12,29 +11,15 @@
 
 #include "data.h"
 #include "files.h"
+#include "run.h"
 
 namespace {
 
+using mobb::test::Result;
 using mobb::test::slurp;
 using mobb::test::temp_file;
 
-struct Result {
-    int code = -1;
-    std::string out, err;
-};
-
-// Runs `mobb ARGS` with optional stdin text, capturing stdout and stderr.
-Result mobb(const std::string& args, const std::string& input = "") {
-    const std::string in = temp_file("in"), out = temp_file("out"), err = temp_file("err");
-    std::ofstream(in) << input;
-    const std::string cmd = std::string(MOBB_EXE) + " " + args + " <" + in + " >" + out + " 2>" + err;
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
+Result mobb(const std::string& args, const std::string& input = "") { return mobb::test::run_mobb(args, input); }
 
 std::string cmu(const std::string& name) { return mobb::test::data_file("cmu/" + name); }
 
@@ -71,8 +56,8 @@ TEST(CliTest, MissingFileIsBadInputNamingTheFile) {
 }
 
 TEST(CliTest, MalformedBvhNamesFileAndLine) {
-    const std::string bad = write_temp("bad.bvh",
-                                       "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 7 Xposition\n}\n");
+    const std::string bad =
+        write_temp("bad.bvh", "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 7 Xposition\n}\n");
     const Result r = mobb("path " + bad);
     EXPECT_EQ(r.code, 1);
     EXPECT_TRUE(r.out.empty());
@@ -141,11 +126,14 @@ TEST(CliTest, QueryAnswersJsonAndAgreesWithBrute) {
 
 TEST(CliTest, BadPlacementIsBadInput) {
     MOBB_REQUIRE_MOCAP();
-    const Result r = mobb("query " + cmu("007_01.bvh") + " " + cmu("002_01.bvh") + " --place-a 0,0,0 --place-b 0,0,0,0");
+    const Result r =
+        mobb("query " + cmu("007_01.bvh") + " " + cmu("002_01.bvh") + " --place-a 0,0,0 --place-b 0,0,0,0");
     EXPECT_EQ(r.code, 1);
     EXPECT_TRUE(r.out.empty());
     EXPECT_NE(r.err.find("--place-a"), std::string::npos) << r.err;
-    EXPECT_EQ(mobb("query " + cmu("007_01.bvh") + " " + cmu("002_01.bvh") + " --place-a 0,0,nan,0 --place-b 0,0,0,0").code, 1);
+    EXPECT_EQ(
+        mobb("query " + cmu("007_01.bvh") + " " + cmu("002_01.bvh") + " --place-a 0,0,nan,0 --place-b 0,0,0,0").code,
+        1);
 }
 
 TEST(CliTest, BatchAnswersEveryLineInOrder) {
@@ -177,8 +165,9 @@ TEST(CliTest, BatchOutputDoesNotDependOnThreads) {
     std::string input;
     for (int k = 0; k < 120; ++k) {  // near and far placements, so answers and work differ per line
         const double x = 0.25 * double(k % 13) - 1.5, y = 0.2 * double(k % 7) - 0.6, t = 0.1 * double(k % 11);
-        input += "{\"a\": \"" + (k % 2 ? a : b) + "\", \"b\": \"" + b + "\", \"ta\": [0,0," + std::to_string(k * 17 % 360) +
-                 ",0], \"tb\": [" + std::to_string(x) + "," + std::to_string(y) + ",90," + std::to_string(t) + "]}\n";
+        input += "{\"a\": \"" + (k % 2 ? a : b) + "\", \"b\": \"" + b + "\", \"ta\": [0,0," +
+                 std::to_string(k * 17 % 360) + ",0], \"tb\": [" + std::to_string(x) + "," + std::to_string(y) +
+                 ",90," + std::to_string(t) + "]}\n";
         if (k % 40 == 0) input += "\n";  // blank lines are skipped
     }
     const Result one = mobb("batch --threads 1", input), three = mobb("batch --threads 3", input);

@@ -18,8 +18,8 @@ void expect_contains_all(const Path& p, std::size_t first, std::size_t end) {
     for (std::size_t i = first; i < end; ++i) {
         EXPECT_TRUE(contains(box2, p.samples[i])) << i;
         EXPECT_TRUE(contains(pca, p.samples[i])) << i;
-        EXPECT_TRUE(contains(extrude(box2, double(first) * p.dt, double(end) * p.dt), p.samples[i],
-                             double(i) * p.dt, p.dt, 1e-12));
+        EXPECT_TRUE(contains(extrude(box2, double(first) * p.dt, double(end) * p.dt), p.samples[i], double(i) * p.dt,
+                             p.dt, 1e-12));
         if (is3) {
             EXPECT_TRUE(contains(box3, p.samples[i], double(i) * p.dt, p.dt)) << i;
         }

@@ -61,7 +61,8 @@ TEST(QueryTest, HitIsARealCollidingPair) {
         const auto i = hit.a, j = hit.b;
         EXPECT_TRUE(times_overlap(sample_time(pa, a.dt, i), sample_time(pa, a.dt, i + 1), sample_time(pb, b.dt, j),
                                   sample_time(pb, b.dt, j + 1)));
-        EXPECT_TRUE(samples_overlap(Rigid2::of(pa), a.samples[std::size_t(i)], Rigid2::of(pb), b.samples[std::size_t(j)]));
+        EXPECT_TRUE(
+            samples_overlap(Rigid2::of(pa), a.samples[std::size_t(i)], Rigid2::of(pb), b.samples[std::size_t(j)]));
     }
     EXPECT_GT(hits, 50);
 }

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "mobb/crowd/broad_phase.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::crowd {
 namespace {
@@ -9,8 +13,8 @@ TEST(BroadPhase, FindsOverlapsOfOtherOwnersOnly) {
     BroadPhase bp(2.0);
     bp.insert(0, 0, {0, 0, 1, 1, 0, 10});
     bp.insert(1, 1, {0.5, 0.5, 3, 3, 5, 20});
-    bp.insert(2, 2, {10, 10, 11, 11, 0, 100});   // far away
-    bp.insert(3, 3, {0, 0, 1, 1, 20, 30});       // later in time
+    bp.insert(2, 2, {10, 10, 11, 11, 0, 100});  // far away
+    bp.insert(3, 3, {0, 0, 1, 1, 20, 30});      // later in time
     std::vector<int> out;
     bp.query({0, 0, 2, 2, 0, 20}, 0, out);
     EXPECT_EQ(out, std::vector<int>({1}));
@@ -33,6 +37,70 @@ TEST(BroadPhase, NegativeCoordinatesAndBigBoxes) {
 }
 
 TEST(BroadPhase, RejectsBadCell) { EXPECT_THROW(BroadPhase(0.0), std::invalid_argument); }
+
+// Queries from several threads at once (the crowd's parallel choice points) agree with a scan of all
+// boxes; expired items are neither reported nor counted.
+TEST(BroadPhase, ConcurrentQueriesAndExpiry) {
+    BroadPhase bp(2.0, 20, 20);
+    std::vector<SpaceTimeBox> boxes;
+    for (int i = 0; i < 400; ++i) {
+        const double x = double((i * 37) % 26) - 3, y = double((i * 53) % 26) - 3;  // some beyond the flat cells
+        boxes.push_back({x, y, x + 0.5 + (i % 5), y + 0.5 + (i % 3), i % 7, 8 + i % 11});
+        bp.insert(i, i % 9, boxes.back());
+    }
+    bp.expire(10);
+    std::size_t live = 0;
+    for (const SpaceTimeBox& b : boxes) live += b.f1 > 10;
+    EXPECT_EQ(bp.size(), live);
+    util::WorkerPool pool(4);
+    std::vector<int> wrong(boxes.size(), 0);
+    pool.for_each(boxes.size(), [&](std::size_t q, int) {
+        SpaceTimeBox box = boxes[q];
+        box.f0 = 10;
+        std::vector<int> got, want;
+        bp.query(box, int(q % 9), got);
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (int(i % 9) != int(q % 9) && boxes[i].f1 > 10 && boxes[i].overlaps(box)) want.push_back(int(i));
+        wrong[q] = got != want;
+    });
+    EXPECT_EQ(std::count(wrong.begin(), wrong.end(), 1), 0);
+    bp.insert(1000, 0, {0, 0, 1, 1, 0, 9});  // ends before the expiry frame: dropped
+    std::vector<int> out;
+    bp.query({0, 0, 1, 1, 10, 20}, 1, out);
+    EXPECT_EQ(std::count(out.begin(), out.end(), 1000), 0);
+}
+
+// A frame's commits inserted at once by several workers give the grid that inserting them one by one
+// gives: same answers to every query, same size, expired items still dropped.
+TEST(BroadPhase, InsertAllMatchesInsertingOneByOne) {
+    BroadPhase one(2.0, 20, 20), all(2.0, 20, 20);
+    for (BroadPhase* bp : {&one, &all}) {
+        bp->insert(0, 1, {1, 1, 3, 3, 0, 5});  // expires before the batch: its cells get compacted
+        bp->expire(6);
+    }
+    std::vector<BroadPhase::Insertion> batch;
+    for (int i = 1; i < 300; ++i) {
+        const double x = double((i * 41) % 30) - 5, y = double((i * 29) % 30) - 5;  // some beyond the flat cells
+        batch.push_back({i, i % 7, {x, y, x + 0.3 + (i % 6), y + 0.4 + (i % 4), 6, 7 + i % 13}});
+    }
+    batch.push_back({300, 2, {0, 0, 1, 1, 0, 6}});  // ends by the expiry frame: dropped by both
+    for (const auto& it : batch) one.insert(it.id, it.owner, it.box);
+    util::WorkerPool pool(3);
+    all.insert_all(batch, pool);
+    EXPECT_EQ(all.size(), one.size());
+    EXPECT_EQ(all.size(), batch.size() - 1);
+    int differing = 0;
+    for (const auto& it : batch) {
+        std::vector<int> a, b;
+        one.query(it.box, it.owner, a);
+        all.query(it.box, it.owner, b);
+        differing += a != b;
+    }
+    EXPECT_EQ(differing, 0);
+    std::vector<int> out;
+    all.query({-10, -10, 40, 40, 0, 100}, -1, out);
+    EXPECT_EQ(out.size(), batch.size() - 1);
+}
 
 }  // namespace
 }  // namespace mobb::crowd

@@ -2,16 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <stdexcept>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "files.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
-#include "mobb/crowd/worker_pool.h"
 
 namespace mobb::crowd {
 namespace {
@@ -60,8 +58,9 @@ SpaceTimeBox box_of(int clip, const Placement& p, std::int64_t start) {
 
 // Every counter of a summary but the times.
 std::vector<std::uint64_t> counters(const CrowdSummary& s) {
-    return {s.choice_points, s.candidates, s.queries, s.hits, s.tests2d, s.tests3d, s.samples, s.root_rejected,
-            s.time_pairs, s.pruned, s.fallbacks, s.outside, s.contacts, s.contacts_unexcused, s.reevaluated};
+    return {s.choice_points, s.candidates,         s.queries,    s.hits,   s.tests2d,   s.tests3d,
+            s.samples,       s.root_rejected,      s.time_pairs, s.pruned, s.fallbacks, s.outside,
+            s.contacts,      s.contacts_unexcused, s.reevaluated};
 }
 
 std::string logged_text(const std::vector<LoggedQuery>& log) {
@@ -149,7 +148,8 @@ TEST(Crowd, EveryTreeTypeGivesTheSameCrowd) {
     auto decisions = [](const Record& r) {
         std::string s;
         for (const ChoicePoint& c : r.choices) {
-            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + (c.fallback ? "F" : "") + ":" + std::to_string(c.queries) + " ";
+            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + (c.fallback ? "F" : "") + ":" +
+                 std::to_string(c.queries) + " ";
             for (const Candidate& k : c.candidates) s += std::to_string(k.hits) + ",";
         }
         return s;
@@ -176,7 +176,8 @@ TEST(Crowd, RandomModeRunsEveryQuery) {
     // Logged queries replay to the same answers.
     for (std::size_t k = 0; k < c.queries.size(); k += 7) {
         const LoggedQuery& q = c.queries[k];
-        EXPECT_EQ(collide(fixture().trees[std::size_t(q.clip_a)], q.pa, fixture().trees[std::size_t(q.clip_b)], q.pb), q.hit);
+        EXPECT_EQ(collide(fixture().trees[std::size_t(q.clip_a)], q.pa, fixture().trees[std::size_t(q.clip_b)], q.pb),
+                  q.hit);
     }
 }
 
@@ -225,7 +226,8 @@ TEST(Crowd, RecordedQueriesReplayToTheirAnswers) {
                                          fixture().trees[std::size_t(other.clip)], other.place);
                 EXPECT_EQ(hit, q.hit);
                 EXPECT_TRUE(times_overlap(at->place.t0, at->place.t0 + g.clips[std::size_t(k.clip)].path.duration(),
-                                          other.place.t0, other.place.t0 + g.clips[std::size_t(other.clip)].path.duration()));
+                                          other.place.t0,
+                                          other.place.t0 + g.clips[std::size_t(other.clip)].path.duration()));
                 hits += q.hit;
                 ++replayed;
             }
@@ -251,7 +253,8 @@ TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
         for (int threads : {2, 3, 8}) {
             const CrowdRun r = run(60, 15, 21, select, true, threads);
             EXPECT_EQ(r.summary.threads, threads);
-            EXPECT_TRUE(record_to_text(r.record, summary_json(r.summary)) == text) << to_string(select) << ", " << threads << " threads";
+            EXPECT_TRUE(record_to_text(r.record, summary_json(r.summary)) == text)
+                << to_string(select) << ", " << threads << " threads";
             EXPECT_TRUE(logged_text(r.queries) == log) << to_string(select) << ", " << threads << " threads";
             EXPECT_EQ(counters(r.summary), counters(ref.summary)) << to_string(select) << ", " << threads << " threads";
         }
@@ -275,7 +278,8 @@ TEST(Crowd, EachChoiceSeesEveryEarlierCommit) {
         for (std::size_t n = 0; n < r.choices.size(); ++n) {
             const ChoicePoint& cp = r.choices[n];
             const auto& own = r.tracks[std::size_t(cp.agent)].clips;
-            const auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
+            const auto at =
+                std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
             ASSERT_NE(at, own.end());
             ASSERT_EQ(at->start, cp.frame);
             for (const Candidate& k : cp.candidates) {
@@ -292,7 +296,8 @@ TEST(Crowd, EachChoiceSeesEveryEarlierCommit) {
                     EXPECT_EQ(k.against[q].agent, expected[q].first) << "choice " << n;
                     EXPECT_EQ(k.against[q].index, expected[q].second) << "choice " << n;
                 }
-                const bool stopped = !k.against.empty() && k.against.back().hit && select == Selection::Avoid && !cp.fallback;
+                const bool stopped =
+                    !k.against.empty() && k.against.back().hit && select == Selection::Avoid && !cp.fallback;
                 const bool skipped = k.outside && select == Selection::Avoid && !cp.fallback;
                 if (!stopped && !skipped) {
                     EXPECT_EQ(k.against.size(), expected.size()) << "choice " << n;
@@ -311,99 +316,6 @@ TEST(Crowd, RejectsImpossibleWorlds) {
     CrowdOptions none;
     none.threads = 0;
     EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, none), std::invalid_argument);
-}
-
-TEST(WorkerPool, RunsEveryIndexOnceAndRethrowsTheLowestError) {
-    for (int threads : {1, 2, 5}) {
-        WorkerPool pool(threads);
-        EXPECT_EQ(pool.size(), threads);
-        for (std::size_t grain : {1u, 3u, 64u}) {
-            std::vector<std::atomic<int>> seen(1000);
-            std::vector<int> worker(seen.size(), -1);
-            pool.for_each(seen.size(), [&](std::size_t i, int w) {
-                ++seen[i];
-                worker[i] = w;
-            }, grain);
-            for (std::size_t i = 0; i < seen.size(); ++i) {
-                ASSERT_EQ(seen[i].load(), 1) << i;
-                ASSERT_TRUE(worker[i] >= 0 && worker[i] < threads);
-            }
-        }
-        try {
-            pool.for_each(100, [](std::size_t i, int) {
-                if (i % 10 == 7) throw std::runtime_error(std::to_string(i));
-            });
-            ADD_FAILURE() << "no exception";
-        } catch (const std::runtime_error& e) {
-            EXPECT_STREQ(e.what(), "7");
-        }
-        pool.for_each(0, [](std::size_t, int) { ADD_FAILURE(); });
-    }
-    EXPECT_THROW(WorkerPool(0), std::invalid_argument);
-}
-
-// Queries from several threads at once (the crowd's parallel choice points) agree with a scan of all
-// boxes; expired items are neither reported nor counted.
-TEST(BroadPhase, ConcurrentQueriesAndExpiry) {
-    BroadPhase bp(2.0, 20, 20);
-    std::vector<SpaceTimeBox> boxes;
-    for (int i = 0; i < 400; ++i) {
-        const double x = double((i * 37) % 26) - 3, y = double((i * 53) % 26) - 3;  // some beyond the flat cells
-        boxes.push_back({x, y, x + 0.5 + (i % 5), y + 0.5 + (i % 3), i % 7, 8 + i % 11});
-        bp.insert(i, i % 9, boxes.back());
-    }
-    bp.expire(10);
-    std::size_t live = 0;
-    for (const SpaceTimeBox& b : boxes) live += b.f1 > 10;
-    EXPECT_EQ(bp.size(), live);
-    WorkerPool pool(4);
-    std::vector<int> wrong(boxes.size(), 0);
-    pool.for_each(boxes.size(), [&](std::size_t q, int) {
-        SpaceTimeBox box = boxes[q];
-        box.f0 = 10;
-        std::vector<int> got, want;
-        bp.query(box, int(q % 9), got);
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-            if (int(i % 9) != int(q % 9) && boxes[i].f1 > 10 && boxes[i].overlaps(box)) want.push_back(int(i));
-        wrong[q] = got != want;
-    });
-    EXPECT_EQ(std::count(wrong.begin(), wrong.end(), 1), 0);
-    bp.insert(1000, 0, {0, 0, 1, 1, 0, 9});  // ends before the expiry frame: dropped
-    std::vector<int> out;
-    bp.query({0, 0, 1, 1, 10, 20}, 1, out);
-    EXPECT_EQ(std::count(out.begin(), out.end(), 1000), 0);
-}
-
-// A frame's commits inserted at once by several workers give the grid that inserting them one by one
-// gives: same answers to every query, same size, expired items still dropped.
-TEST(BroadPhase, InsertAllMatchesInsertingOneByOne) {
-    BroadPhase one(2.0, 20, 20), all(2.0, 20, 20);
-    for (BroadPhase* bp : {&one, &all}) {
-        bp->insert(0, 1, {1, 1, 3, 3, 0, 5});  // expires before the batch: its cells get compacted
-        bp->expire(6);
-    }
-    std::vector<BroadPhase::Insertion> batch;
-    for (int i = 1; i < 300; ++i) {
-        const double x = double((i * 41) % 30) - 5, y = double((i * 29) % 30) - 5;  // some beyond the flat cells
-        batch.push_back({i, i % 7, {x, y, x + 0.3 + (i % 6), y + 0.4 + (i % 4), 6, 7 + i % 13}});
-    }
-    batch.push_back({300, 2, {0, 0, 1, 1, 0, 6}});  // ends by the expiry frame: dropped by both
-    for (const auto& it : batch) one.insert(it.id, it.owner, it.box);
-    WorkerPool pool(3);
-    all.insert_all(batch, pool);
-    EXPECT_EQ(all.size(), one.size());
-    EXPECT_EQ(all.size(), batch.size() - 1);
-    int differing = 0;
-    for (const auto& it : batch) {
-        std::vector<int> a, b;
-        one.query(it.box, it.owner, a);
-        all.query(it.box, it.owner, b);
-        differing += a != b;
-    }
-    EXPECT_EQ(differing, 0);
-    std::vector<int> out;
-    all.query({-10, -10, 40, 40, 0, 100}, -1, out);
-    EXPECT_EQ(out.size(), batch.size() - 1);
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ TEST(MotionGraph, CommittedGraphIsWellFormed) {
         EXPECT_LE(c.path.duration(), 4.0 + 1e-9);
         EXPECT_EQ(c.path.samples.front().x, 0.0);  // root of the first sample at the origin
         EXPECT_EQ(c.path.samples.front().y, 0.0);
-        EXPECT_EQ(g.sources[std::size_t(c.source)].file.rfind("cmu/", 0), 0u) << "data files are named relative to the data folder";
+        EXPECT_EQ(g.sources[std::size_t(c.source)].file.rfind("cmu/", 0), 0u)
+            << "data files are named relative to the data folder";
         total += c.path.duration();
     }
     const double mean = total / double(g.clips.size());
@@ -69,7 +70,7 @@ TEST(MotionGraph, EdgesJoinMatchingPosesRecomputedFromMocap) {
         io::LoadOptions lo;
         lo.fps = g.fps;
         lo.frame_begin = src.frame_begin;
-        const io::Clip clip = io::load_clip(resolve_data_file(src.file), lo);
+        const io::Clip clip = io::load_clip(io::resolve_data_file(src.file), lo);
         ASSERT_EQ(clip.path.size(), std::size_t(src.samples)) << src.file;
         tracks[c.source] = pose_track(clip, select_joints(clip.animation.skeleton));
     }
@@ -94,7 +95,7 @@ TEST(MotionGraph, PathsMatchTheMocapInTheClipFrame) {
     io::LoadOptions lo;
     lo.fps = g.fps;
     lo.frame_begin = src.frame_begin;
-    const io::Clip clip = io::load_clip(resolve_data_file(src.file), lo);
+    const io::Clip clip = io::load_clip(io::resolve_data_file(src.file), lo);
     // Distances between samples survive the rigid change of frame (up to the 1e-6 m rounding).
     const Sample& a0 = clip.path.samples[std::size_t(c.first)];
     for (std::size_t i = 0; i < c.path.size(); ++i) {
@@ -130,7 +131,9 @@ TEST(MotionGraph, RoundTripsThroughText) {
 
 TEST(MotionGraph, BadFilesNameThePlace) {
     try {
-        graph_from_json(nlohmann::json::parse(R"({"fps": 30, "threshold": 0.1, "window": 5, "sources": [], "clips": [{}]})"), "g.json: graph");
+        graph_from_json(
+            nlohmann::json::parse(R"({"fps": 30, "threshold": 0.1, "window": 5, "sources": [], "clips": [{}]})"),
+            "g.json: graph");
         FAIL();
     } catch (const GraphError& e) {
         EXPECT_NE(std::string(e.what()).find("g.json: graph.clips[0]"), std::string::npos) << e.what();
@@ -141,7 +144,8 @@ TEST(MotionGraph, BadFilesNameThePlace) {
 TEST(MotionGraph, BuildsFromWalksTrimsTheStrayFrameAndConnects) {
     MOBB_REQUIRE_MOCAP();
     std::vector<std::string> files;
-    for (const char* f : {"cmu/007_01.bvh", "cmu/007_02.bvh", "cmu/007_03.bvh", "cmu/007_04.bvh"}) files.push_back(test::data_file(f));
+    for (const char* f : {"cmu/007_01.bvh", "cmu/007_02.bvh", "cmu/007_03.bvh", "cmu/007_04.bvh"})
+        files.push_back(test::data_file(f));
     GraphBuildOptions o;
     o.threshold = 0.15;
     const MotionGraph g = build_motion_graph(files, o);
@@ -176,11 +180,13 @@ TEST(PoseDistance, MatrixAgreesWithPairwiseAndIsRigidInvariant) {
     const std::vector<float> m = distance_matrix(ta, tb, 5);
     for (int fa : {0, 10, ta.frames - 1})
         for (int fb : {0, 7, tb.frames - 1})
-            EXPECT_NEAR(m[std::size_t(fa) * std::size_t(tb.frames) + std::size_t(fb)], pose_distance(ta, fa, tb, fb).distance, 1e-4);
+            EXPECT_NEAR(m[std::size_t(fa) * std::size_t(tb.frames) + std::size_t(fb)],
+                        pose_distance(ta, fa, tb, fb).distance, 1e-4);
     EXPECT_NEAR(pose_distance(ta, 20, ta, 20).distance, 0.0, 1e-6);
     // Moving and turning the whole clip changes nothing.
     PoseTrack moved = tb;
-    for (glm::dvec3& p : moved.points) p = {std::cos(1.0) * p.x - std::sin(1.0) * p.y + 3, std::sin(1.0) * p.x + std::cos(1.0) * p.y - 2, p.z};
+    for (glm::dvec3& p : moved.points)
+        p = {std::cos(1.0) * p.x - std::sin(1.0) * p.y + 3, std::sin(1.0) * p.x + std::cos(1.0) * p.y - 2, p.z};
     EXPECT_NEAR(pose_distance(ta, 12, moved, 30).distance, pose_distance(ta, 12, tb, 30).distance, 1e-9);
     // Walking: heading agrees with the direction of travel.
     const glm::dvec2 d = ta.root.back() - ta.root.front();

@@ -215,5 +215,52 @@ TEST(DataDir, PrefersAnExistingMobbData) {
         ::unsetenv("MOBB_DATA");
 }
 
+// Data files named relative to the data folder resolve under it, and back.
+TEST(DataDir, ResolvesAndRelativisesDataFiles) {
+    const char* old = std::getenv("MOBB_DATA");
+    const std::string saved = old ? old : "";
+    const test::TempDir dir;
+    ::setenv("MOBB_DATA", dir.path().c_str(), 1);
+    const std::string file = resolve_data_file("cmu/x.bvh");
+    EXPECT_EQ(file, (dir.path() / "cmu/x.bvh").string());
+    EXPECT_EQ(data_relative(file), "cmu/x.bvh");
+    EXPECT_EQ(resolve_data_file("/abs/y.bvh"), "/abs/y.bvh");
+    EXPECT_EQ(data_relative("/elsewhere/y.bvh"), "/elsewhere/y.bvh");
+    if (old)
+        ::setenv("MOBB_DATA", saved.c_str(), 1);
+    else
+        ::unsetenv("MOBB_DATA");
+}
+
+// Loader options as written on the command line and in scene files; errors name the option.
+TEST(LoadOptionText, ParsesOrNamesTheOption) {
+    LoadOptionText t;
+    t.up = "z";
+    t.scale = "0.01";
+    t.frames = "5:20";
+    t.fps = 30;
+    const LoadOptions o = parse_load_options(t);
+    EXPECT_EQ(o.up, UpAxis::Z);
+    EXPECT_EQ(*o.scale, 0.01);
+    EXPECT_EQ(o.frame_begin, 5);
+    EXPECT_EQ(o.frame_end, 20);
+    EXPECT_EQ(*o.fps, 30.0);
+    EXPECT_FALSE(parse_load_options({}).scale.has_value());
+    EXPECT_EQ(parse_load_options({"y", "auto", "7:", 0, 0, ""}).frame_end, -1);
+    const auto error = [](LoadOptionText x) {
+        try {
+            parse_load_options(x);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error({"w", "auto", "", 0, 0, ""}).rfind("--up:", 0), 0u);
+    EXPECT_EQ(error({"y", "-1", "", 0, 0, ""}), "--scale: must be positive");
+    EXPECT_EQ(error({"y", "1cm", "", 0, 0, ""}), "--scale: '1cm' is not a finite number");
+    EXPECT_EQ(error({"y", "auto", "5:2", 0, 0, ""}), "--frames: expected whole numbers 0 <= A < B, got '5:2'");
+    EXPECT_EQ(error({"y", "auto", "5", 0, 0, ""}), "--frames: expected A:B, got '5'");
+}
+
 }  // namespace
 }  // namespace mobb::io

@@ -5,9 +5,9 @@
 
 #include "data.h"
 #include "mobb/core/brute.h"
-#include "mobb/core/fast_query.h"
 #include "mobb/core/query.h"
 #include "mobb/core/scan.h"
+#include "mobb/core/sweep.h"
 
 namespace mobb {
 namespace {
@@ -22,14 +22,14 @@ struct ClipSpec {
     double fps;  // 0 = as recorded
 };
 constexpr ClipSpec kClips[] = {
-    {"002_01.bvh", 0},  {"002_03.bvh", 0},  {"007_01.bvh", 0},  {"005_01.bvh", 30}, {"006_10.bvh", 0},
-    {"005_02.bvh", 0},  {"005_17.bvh", 30}, {"002_05.bvh", 0},  {"001_01.bvh", 0},  {"001_14.bvh", 30},
+    {"002_01.bvh", 0}, {"002_03.bvh", 0},  {"007_01.bvh", 0}, {"005_01.bvh", 30}, {"006_10.bvh", 0},
+    {"005_02.bvh", 0}, {"005_17.bvh", 30}, {"002_05.bvh", 0}, {"001_01.bvh", 0},  {"001_14.bvh", 30},
 };
 
 struct Clips {
     std::vector<Path> paths;
     std::vector<std::vector<Tree>> trees;  // [type][clip]
-    std::vector<ClipIndex> indexes;        // [clip], for collide_fast and collide_scan
+    std::vector<ClipIndex> indexes;        // [clip], for collide_sweep and collide_scan
 };
 
 const Clips& clips() {
@@ -76,7 +76,7 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
     constexpr int kQueries = 200000;
     int positives = 0;
     std::vector<int> wrong(std::size(kTypes), 0);
-    int wrong_fast = 0, wrong_scan = 0;
+    int wrong_sweep = 0, wrong_scan = 0;
     for (int q = 0; q < kQueries; ++q) {
         const std::size_t ia = rng() % c.paths.size(), ib = rng() % c.paths.size();
         Placement pa, pb;
@@ -89,15 +89,15 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
                 ADD_FAILURE() << to_string(kTypes[t]) << " query " << q << ": clips " << kClips[ia].file << " "
                               << kClips[ib].file << " expected " << expected;
         }
-        if (collide_fast(c.indexes[ia], pa, c.indexes[ib], pb) != expected && wrong_fast++ < 5)
-            ADD_FAILURE() << "fast query " << q << ": clips " << kClips[ia].file << " " << kClips[ib].file
+        if (collide_sweep(c.indexes[ia], pa, c.indexes[ib], pb) != expected && wrong_sweep++ < 5)
+            ADD_FAILURE() << "circle sweep " << q << ": clips " << kClips[ia].file << " " << kClips[ib].file
                           << " expected " << expected;
         if (collide_scan(c.indexes[ia], pa, c.indexes[ib], pb) != expected && wrong_scan++ < 5)
             ADD_FAILURE() << "best scan " << q << ": clips " << kClips[ia].file << " " << kClips[ib].file
                           << " expected " << expected;
     }
     for (std::size_t t = 0; t < std::size(kTypes); ++t) EXPECT_EQ(wrong[t], 0) << to_string(kTypes[t]);
-    EXPECT_EQ(wrong_fast, 0) << "fast query";
+    EXPECT_EQ(wrong_sweep, 0) << "circle sweep";
     EXPECT_EQ(wrong_scan, 0) << "best scan";
     // A good share of both answers.
     EXPECT_GT(positives, kQueries / 5);
@@ -105,7 +105,7 @@ TEST(RealClipsTest, EveryTreeTypeAgreesWithBruteForceOn200kPlacements) {
     std::printf("%d of %d placements collide\n", positives, kQueries);
 }
 
-// The fast query's plan boundaries on real clips: crowd-like grid-aligned start times (touching
+// The circle sweep's plan boundaries on real clips: crowd-like grid-aligned start times (touching
 // neighbour diagonals decided by one ulp) or shifted ones, overlaps of 0 to 160 samples at either end
 // (around the scan / sweep switch), rotations at +-pi, huge global offsets.
 TEST(RealClipsTest, FastQueryPlanBoundariesAgreeWithBruteForce) {
@@ -129,7 +129,7 @@ TEST(RealClipsTest, FastQueryPlanBoundariesAgreeWithBruteForce) {
         if (q % 17 == 0) pa.x += 1e6, pb.x += 1e6, pa.t0 += 1e4, pb.t0 += 1e4;
         const bool expected = collide_brute(a, pa, b, pb);
         positives += expected;
-        ASSERT_EQ(collide_fast(c.indexes[ia], pa, c.indexes[ib], pb), expected) << q;
+        ASSERT_EQ(collide_sweep(c.indexes[ia], pa, c.indexes[ib], pb), expected) << q;
         ASSERT_EQ(collide_scan(c.indexes[ia], pa, c.indexes[ib], pb), expected) << q;
     }
     EXPECT_GT(positives, kQueries / 20);

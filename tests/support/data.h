@@ -23,10 +23,10 @@ inline std::string data_file(const std::string& relative) {
 }  // namespace mobb::test
 
 /// In a TEST body: skips (or fails under MOBB_REQUIRE_DATA=1) when the mocap folder is missing.
-#define MOBB_REQUIRE_MOCAP()                                                                          \
-    do {                                                                                              \
-        if (mobb::io::data_dir().empty()) {                                                           \
+#define MOBB_REQUIRE_MOCAP()                                                                            \
+    do {                                                                                                \
+        if (mobb::io::data_dir().empty()) {                                                             \
             if (mobb::test::data_required()) FAIL() << "MOBB_REQUIRE_DATA=1 but no mocap folder found"; \
-            GTEST_SKIP() << "mocap data not found: set MOBB_DATA or put it in ../shared/mocap";       \
-        }                                                                                             \
+            GTEST_SKIP() << "mocap data not found: set MOBB_DATA or put it in ../shared/mocap";         \
+        }                                                                                               \
     } while (0)

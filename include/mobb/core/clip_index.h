@@ -1,5 +1,6 @@
-// A clip prepared once for the fast queries (fast_query.h, scan.h): float SoA samples, a root box and
-// a time-implicit hierarchy of bounding circles. Built once per clip, queried under any placement.
+// A clip prepared once for the flat queries (the circle sweep, sweep.h, and the best scan, scan.h):
+// float SoA samples, a root box and a time-implicit hierarchy of bounding circles. Built once per clip,
+// queried under any placement.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -20,7 +21,7 @@ struct Circles {
     std::size_t count = 0;
 };
 
-/// Per-clip acceleration structure for collide_fast() and collide_scan().
+/// Per-clip acceleration structure for collide_sweep() and collide_scan().
 /// Level k of the hierarchy holds one circle per block of `kLeaf << k` consecutive samples
 /// (block b covers samples [b * (kLeaf << k), (b + 1) * (kLeaf << k)) clipped to the path), so a
 /// block's time range is implicit and its children at level k - 1 are blocks 2b and 2b + 1. The top

@@ -1,8 +1,10 @@
 // Oriented boxes in the plane and in space-time (x, y, t), and their separating-axis tests.
 #pragma once
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/mat3x3.hpp>
+
+#include "mobb/core/path.h"
 
 namespace mobb {
 
@@ -25,13 +27,6 @@ struct Obb3 {
     glm::dvec3 half{0.0};
 
     double volume() const { return 8.0 * half.x * half.y * half.z; }
-};
-
-/// Rigid motion of space-time used by queries: rotation by angle (radians) about the t axis, then
-/// translation (x, y, t).
-struct SpaceTimeRigid {
-    double c = 1, s = 0;
-    glm::dvec3 shift{0.0};
 };
 
 /// A 2D box extruded over [t_min, t_max] (seconds) as a 3D space-time box.

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 namespace mobb {
 
 /// One sample of a clip's path: ground position (x, y) of the root and the radius r of the vertical
@@ -38,6 +40,15 @@ struct Rigid2 {
     static Rigid2 of(const Placement& p) { return {std::cos(p.theta), std::sin(p.theta), p.x, p.y}; }
     double apply_x(double x, double y) const { return c * x - s * y + tx; }
     double apply_y(double x, double y) const { return s * x + c * y + ty; }
+};
+
+/// Rigid motion of space-time (x, y, t): rotation by an angle (radians) about the t axis, then
+/// translation. A placement is one: rotation theta, shift (x, y, t0).
+struct SpaceTimeRigid {
+    double c = 1, s = 0;
+    glm::dvec3 shift{0.0};
+
+    static SpaceTimeRigid of(const Placement& p) { return {std::cos(p.theta), std::sin(p.theta), {p.x, p.y, p.t0}}; }
 };
 
 /// Global start time of sample k (k may be n: the end of the last sample). Every time comparison in

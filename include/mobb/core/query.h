@@ -25,14 +25,14 @@ struct SamplePair {
 /// |p_a,i - p_b,j| < r_a,i + r_b,j (see path.h). Exits at the first hit. Trees of any types and
 /// sample spacings may be mixed. Counting and tracing cost nothing when stats / trace are null;
 /// a non-null trace is cleared and filled with the ordered events.
-bool collide(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb,
-             QueryStats* stats = nullptr, Trace* trace = nullptr, SamplePair* hit = nullptr);
+bool collide(const Tree& a, const Placement& pa, const Tree& b, const Placement& pb, QueryStats* stats = nullptr,
+             Trace* trace = nullptr, SamplePair* hit = nullptr);
 
 /// The leaf test shared by every tree and the 1-level baseline: binary search in time for the first
 /// overlapping samples of a[fa, ea) and b[fb, eb), then walk the time-aligned pairs. Counts sample
 /// tests into `tested`; on a hit stores the pair and returns true.
-bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_t fa, std::int64_t ea,
-               const Path& b, const Placement& pb, const Rigid2& tb, std::int64_t fb, std::int64_t eb,
-               std::uint64_t& tested, SamplePair& hit);
+bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_t fa, std::int64_t ea, const Path& b,
+               const Placement& pb, const Rigid2& tb, std::int64_t fb, std::int64_t eb, std::uint64_t& tested,
+               SamplePair& hit);
 
 }  // namespace mobb

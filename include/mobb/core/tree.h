@@ -20,15 +20,33 @@ enum class TreeType : std::uint8_t {
     Umobb1,   ///< "1 level": UMOBB root only
 };
 
-/// Command-line names: mobb, umobb, hybrid1, hybrid2, mobb1, umobb1. parse throws
-/// std::invalid_argument on an unknown name.
+/// The tree-type table: each type's name on the command line and in scene files, and its label in
+/// the benchmark tables and the viewer (the paper's words).
+struct TreeTypeName {
+    TreeType type;
+    const char* name;   ///< "mobb", "umobb", "hybrid1", "hybrid2", "mobb1", "umobb1"
+    const char* label;  ///< "MOBB", "UMOBB", "Hybrid 1", "Hybrid 2", "MOBB 1 level", "UMOBB 1 level"
+};
+/// Every tree type, in TreeType order.
+inline constexpr TreeTypeName kTreeTypes[] = {
+    {TreeType::Mobb, "mobb", "MOBB"},           {TreeType::Umobb, "umobb", "UMOBB"},
+    {TreeType::Hybrid1, "hybrid1", "Hybrid 1"}, {TreeType::Hybrid2, "hybrid2", "Hybrid 2"},
+    {TreeType::Mobb1, "mobb1", "MOBB 1 level"}, {TreeType::Umobb1, "umobb1", "UMOBB 1 level"},
+};
+inline constexpr int kTreeTypeCount = int(sizeof kTreeTypes / sizeof kTreeTypes[0]);
+
+/// The command-line name and the label of a type (kTreeTypes).
 const char* to_string(TreeType type);
+const char* label(TreeType type);
+/// The type of a command-line name; throws std::invalid_argument naming the valid ones.
 TreeType parse_tree_type(const std::string& name);
+/// "mobb, umobb, hybrid1, hybrid2, mobb1, umobb1", for messages.
+std::string tree_type_names();
 
 struct TreeOptions {
     TreeType type = TreeType::Mobb;
-    int n_min = 10;                  ///< leaves hold at most n_min samples (paper 3.1); >= 1
-    AxisFit fit = AxisFit::Chord;    ///< MOBB axis choice
+    int n_min = 10;                ///< leaves hold at most n_min samples (paper 3.1); >= 1
+    AxisFit fit = AxisFit::Chord;  ///< MOBB axis choice
 };
 
 enum class BoxKind : std::uint8_t { Box2, Box3 };
@@ -40,7 +58,7 @@ struct Node {
     std::int32_t child = -1;           ///< -1 for a leaf
     std::uint32_t box = 0;             ///< index into box2s() or box3s(), by kind
     BoxKind kind = BoxKind::Box2;
-    std::uint8_t level = 0;            ///< 0 at the root
+    std::uint8_t level = 0;  ///< 0 at the root
 
     bool leaf() const { return child < 0; }
 };
@@ -77,11 +95,11 @@ private:
 struct LevelStats {
     int level = 0;
     int nodes = 0;
-    int box2 = 0, box3 = 0;    ///< nodes of each kind
-    double mean_area = 0;      ///< mean area (m^2) of the level's 2D boxes
-    double area_ratio = 0;     ///< mean of 2D box area over the area of the union of its disks (>= 1)
-    double mean_volume = 0;    ///< mean space-time volume (m^2 s) of every node, 2D boxes extruded
-    double volume_ratio = 0;   ///< mean of box volume over the volume of its sample cylinders (>= 1)
+    int box2 = 0, box3 = 0;   ///< nodes of each kind
+    double mean_area = 0;     ///< mean area (m^2) of the level's 2D boxes
+    double area_ratio = 0;    ///< mean of 2D box area over the area of the union of its disks (>= 1)
+    double mean_volume = 0;   ///< mean space-time volume (m^2 s) of every node, 2D boxes extruded
+    double volume_ratio = 0;  ///< mean of box volume over the volume of its sample cylinders (>= 1)
 };
 std::vector<LevelStats> level_stats(const Tree& tree);
 

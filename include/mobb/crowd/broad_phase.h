@@ -10,9 +10,11 @@
 #include <utility>
 #include <vector>
 
-namespace mobb::crowd {
-
+namespace mobb::util {
 class WorkerPool;
+}
+
+namespace mobb::crowd {
 
 /// Axis-aligned box in space-time: ground rectangle (metres) and global frames [f0, f1).
 struct SpaceTimeBox {
@@ -53,7 +55,7 @@ public:
     /// The same as insert() of each, in order, for distinct ids that are not held; the flat cells are filled
     /// by `pool`'s workers, each owning a band of grid columns (the crowd commits a frame's clips at
     /// once). Throws std::invalid_argument for a negative id.
-    void insert_all(const std::vector<Insertion>& items, WorkerPool& pool);
+    void insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool);
     /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
     /// Drops every item whose box ends at or before `frame` (f1 <= frame): they are no longer reported
@@ -92,7 +94,7 @@ private:
     double cell_;
     // Emptied cells keep their (empty) arrays: agents walk back and forth over the same ground, and
     // reusing the arrays saves an allocation per cell per clip.
-    std::int64_t nx_ = 0, ny_ = 0;   // flat cells: ix in [0, nx), iy in [0, ny)
+    std::int64_t nx_ = 0, ny_ = 0;  // flat cells: ix in [0, nx), iy in [0, ny)
     std::vector<Cell> flat_;
     std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;

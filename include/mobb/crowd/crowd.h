@@ -23,12 +23,12 @@ Selection parse_selection(const std::string& name);  ///< "avoid" | "random"; th
 
 struct CrowdOptions {
     int agents = 100;
-    double width = 30, height = 40;   ///< world rectangle [0, W] x [0, H], metres
-    double seconds = 120;             ///< simulated; frames = round(seconds / dt)
+    double width = 30, height = 40;  ///< world rectangle [0, W] x [0, H], metres
+    double seconds = 120;            ///< simulated; frames = round(seconds / dt)
     std::uint64_t seed = 1;
     Selection select = Selection::Avoid;
-    double cell = 4.0;                ///< broad-phase grid cell, metres
-    bool log_queries = false;         ///< keep every narrow-phase query (for replays by the benchmarks)
+    double cell = 4.0;         ///< broad-phase grid cell, metres
+    bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;
@@ -36,7 +36,7 @@ struct CrowdOptions {
 
 /// One narrow-phase query of a run: candidate clip a at pa against committed clip b at pb.
 struct LoggedQuery {
-    int choice = 0, candidate = 0;    ///< indices into Record::choices and its candidates
+    int choice = 0, candidate = 0;  ///< indices into Record::choices and its candidates
     int clip_a = 0, clip_b = 0;
     Placement pa, pb;
     bool hit = false;
@@ -46,16 +46,17 @@ struct LoggedQuery {
 struct CrowdSummary {
     std::uint64_t choice_points = 0, candidates = 0, queries = 0, hits = 0;
     std::uint64_t tests2d = 0, tests3d = 0, samples = 0;
-    std::uint64_t root_rejected = 0;   ///< queries whose only box test (if any) was the roots' and that tested no samples
-    std::uint64_t time_pairs = 0;      ///< (candidate, committed clip) pairs overlapping in time
-    std::uint64_t pruned = 0;          ///< of those, skipped by the broad phase
-    std::uint64_t fallbacks = 0, outside = 0;  ///< fallback clips taken; of them, clips leaving the world
+    /// Queries whose only box test (if any) was the roots' and that tested no samples.
+    std::uint64_t root_rejected = 0;
+    std::uint64_t time_pairs = 0;                        ///< (candidate, committed clip) pairs overlapping in time
+    std::uint64_t pruned = 0;                            ///< of those, skipped by the broad phase
+    std::uint64_t fallbacks = 0, outside = 0;            ///< fallback clips taken; of them, clips leaving the world
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
-    std::uint64_t reevaluated = 0;     ///< choice points evaluated again: a commit earlier in their frame was near
-    std::uint64_t agents = 0;          ///< the run's agents
-    double simulated_seconds = 0;      ///< frames * dt
-    int threads = 1;                   ///< worker threads of the run
-    double seconds = 0;                ///< wall time of the simulation (without the record check)
+    std::uint64_t reevaluated = 0;  ///< choice points evaluated again: a commit earlier in their frame was near
+    std::uint64_t agents = 0;       ///< the run's agents
+    double simulated_seconds = 0;   ///< frames * dt
+    int threads = 1;                ///< worker threads of the run
+    double seconds = 0;             ///< wall time of the simulation (without the record check)
     /// Wall time of collision detection in it: the frames' choice points (candidate placement, broad
     /// phase, narrow-phase queries, re-evaluations) and their commits to the broad phase.
     double cd_seconds = 0;

@@ -20,9 +20,9 @@ public:
 
 /// One input file as the graph used it.
 struct GraphSource {
-    std::string file;          ///< relative to the data folder (io::data_dir()) when inside it, else as given
-    int frame_begin = 0;       ///< file frames dropped at the start (a stray T-pose frame: root jump > trim_jump)
-    int samples = 0;           ///< samples after trimming and resampling to the graph's fps
+    std::string file;     ///< relative to the data folder (io::data_dir()) when inside it, else as given
+    int frame_begin = 0;  ///< file frames dropped at the start (a stray T-pose frame: root jump > trim_jump)
+    int samples = 0;      ///< samples after trimming and resampling to the graph's fps
 };
 
 /// A clip: samples [first, exit) of one source at the graph's dt. Its "last pose" is sample `exit`,
@@ -30,7 +30,7 @@ struct GraphSource {
 /// elsewhere), so a clip holds exit - first samples and lasts (exit - first) * dt seconds.
 struct GraphClip {
     int source = 0;
-    int first = 0, exit = 0;           ///< sample indices at the graph's fps
+    int first = 0, exit = 0;              ///< sample indices at the graph's fps
     int frame_first = 0, frame_exit = 0;  ///< the same, as frames of the file
     /// The path in the clip's own frame: root at sample `first` at the origin, its heading along +x
     /// (heading: see PoseTrack). Metres.
@@ -38,20 +38,20 @@ struct GraphClip {
     /// Root position and heading change (radians, counter-clockwise) of sample `exit` in that frame:
     /// where and how a successor starts.
     double exit_x = 0, exit_y = 0, exit_heading = 0;
-    std::vector<int> successors;       ///< clip ids
-    std::vector<double> distances;     ///< pose distance (metres) of each edge, below the threshold
+    std::vector<int> successors;    ///< clip ids
+    std::vector<double> distances;  ///< pose distance (metres) of each edge, below the threshold
 };
 
 struct MotionGraph {
-    double fps = 30;                   ///< every clip shares dt = 1 / fps
-    double threshold = 0;              ///< pose distance (metres, RMS) for transitions and edges
-    int window = 5;                    ///< frames in a pose-distance window
-    std::vector<std::string> joints;   ///< joint names compared (first source's skeleton)
-    std::string command;               ///< the command that built it
+    double fps = 30;                  ///< every clip shares dt = 1 / fps
+    double threshold = 0;             ///< pose distance (metres, RMS) for transitions and edges
+    int window = 5;                   ///< frames in a pose-distance window
+    std::vector<std::string> joints;  ///< joint names compared (first source's skeleton)
+    std::string command;              ///< the command that built it
     std::vector<GraphSource> sources;
     std::vector<GraphClip> clips;
-    int transitions = 0;               ///< transition points found (build statistics)
-    int clips_cut = 0;                 ///< clips before keeping the largest strongly connected part
+    int transitions = 0;  ///< transition points found (build statistics)
+    int clips_cut = 0;    ///< clips before keeping the largest strongly connected part
 
     double dt() const { return 1.0 / fps; }
     /// Placement of a successor of `clip` placed at p: chained through its exit transform; starts at
@@ -60,12 +60,12 @@ struct MotionGraph {
 };
 
 struct GraphBuildOptions {
-    double fps = 30;           ///< resample every input (the paper's clips: 63 frames in 2.1 s)
-    double threshold = 0.12;   ///< metres, RMS pose distance
-    int window = 5;            ///< frames
+    double fps = 30;          ///< resample every input (the paper's clips: 63 frames in 2.1 s)
+    double threshold = 0.12;  ///< metres, RMS pose distance
+    int window = 5;           ///< frames
     double min_clip = 1.0, max_clip = 4.0, target_clip = 2.0;  ///< clip lengths, seconds
-    double trim_jump = 0.5;    ///< drop frame 0 when the root jumps more than this (metres) to frame 1
-    int hubs = 2;              ///< hub poses whose matches are the transition points (Snap-Together Motion)
+    double trim_jump = 0.5;  ///< drop frame 0 when the root jumps more than this (metres) to frame 1
+    int hubs = 2;            ///< hub poses whose matches are the transition points (Snap-Together Motion)
 };
 
 /// Builds the graph: pose distances between all frames of all inputs; hub poses chosen greedily (the
@@ -77,9 +77,6 @@ struct GraphBuildOptions {
 /// file, GraphError when nothing connects. Progress lines go to `log` when not null.
 MotionGraph build_motion_graph(const std::vector<std::string>& files, const GraphBuildOptions& options,
                                std::ostream* log = nullptr);
-
-/// The data file of a source: relative names resolve against io::data_dir().
-std::string resolve_data_file(const std::string& file);
 
 /// The committed graph: assets/graphs/cmu_locomotion.json under the working directory if it exists,
 /// else in the source tree this was built from.

@@ -23,12 +23,12 @@ PoseJoints select_joints(const io::Skeleton& skeleton);
 
 /// One clip's poses in ground coordinates (x, y, height), metres, ready for comparison.
 struct PoseTrack {
-    double dt = 1.0 / 30.0;                 ///< seconds between frames
+    double dt = 1.0 / 30.0;  ///< seconds between frames
     int frames = 0, joints = 0;
-    std::vector<glm::dvec3> points;         ///< frame-major: points[f * joints + j]
-    std::vector<double> weights;            ///< per joint
-    std::vector<glm::dvec2> root;           ///< per frame: the path's root position (io::path_of)
-    std::vector<double> heading;            ///< per frame: facing direction (radians, 0 = +x), see below
+    std::vector<glm::dvec3> points;  ///< frame-major: points[f * joints + j]
+    std::vector<double> weights;     ///< per joint
+    std::vector<glm::dvec2> root;    ///< per frame: the path's root position (io::path_of)
+    std::vector<double> heading;     ///< per frame: facing direction (radians, 0 = +x), see below
 };
 
 /// Builds the track of a loaded clip. Heading: the direction the body faces, perpendicular (to the
@@ -40,9 +40,9 @@ PoseTrack pose_track(const io::Clip& clip, const PoseJoints& joints);
 /// after the rigid motion about the vertical axis that best maps b's window onto a's (closed form).
 /// Windows of `window` frames are centred on fa / fb and shifted to fit inside each clip.
 struct PoseMatch {
-    double distance = 0;     ///< metres, RMS
-    double theta = 0;        ///< rotation (radians) applied to b
-    glm::dvec2 shift{0.0};   ///< then this translation (metres)
+    double distance = 0;    ///< metres, RMS
+    double theta = 0;       ///< rotation (radians) applied to b
+    glm::dvec2 shift{0.0};  ///< then this translation (metres)
 };
 PoseMatch pose_distance(const PoseTrack& a, int fa, const PoseTrack& b, int fb, int window = 5);
 

@@ -36,8 +36,8 @@ struct PlacedClip {
     int clip = 0;
     std::int64_t start = 0;
     Placement place;
-    bool fallback = false;     ///< chosen although every candidate collided or left the world
-    std::int64_t commit = 0;   ///< order of the choice point that committed it
+    bool fallback = false;    ///< chosen although every candidate collided or left the world
+    std::int64_t commit = 0;  ///< order of the choice point that committed it
 };
 
 /// One narrow-phase query of a candidate: against clip `index` of agent `agent`'s track.
@@ -49,21 +49,21 @@ struct CandidateQuery {
 
 struct Candidate {
     int clip = 0;
-    bool outside = false;      ///< leaves the world: some root position is farther outside the rectangle
-                               ///< than the clip's start (0 when it starts inside)
-    int queries = 0;           ///< narrow-phase queries run for it
-    int hits = 0;              ///< committed clips it collides with (see the layout note)
+    bool outside = false;                 ///< leaves the world: some root position is farther outside the rectangle
+                                          ///< than the clip's start (0 when it starts inside)
+    int queries = 0;                      ///< narrow-phase queries run for it
+    int hits = 0;                         ///< committed clips it collides with (see the layout note)
     std::vector<CandidateQuery> against;  ///< its queries, in the order run
 };
 
 struct ChoicePoint {
     int agent = 0;
     std::int64_t frame = 0;
-    std::vector<Candidate> candidates;   ///< in the order tested
-    int taken = 0;                       ///< clip id
+    std::vector<Candidate> candidates;  ///< in the order tested
+    int taken = 0;                      ///< clip id
     bool fallback = false;
     std::uint64_t queries = 0, tests2d = 0, tests3d = 0, samples = 0;
-    std::uint64_t pruned = 0;            ///< time-overlapping committed clips the broad phase skipped
+    std::uint64_t pruned = 0;  ///< time-overlapping committed clips the broad phase skipped
 };
 
 /// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].
@@ -76,7 +76,7 @@ struct Record {
     std::string graph, tree, select;
     double dt = 1.0 / 30.0;
     std::int64_t frames = 0;
-    double width = 0, height = 0;        ///< the world rectangle [0, W] x [0, H]
+    double width = 0, height = 0;  ///< the world rectangle [0, W] x [0, H]
     std::uint64_t seed = 0;
     std::vector<AgentTrack> tracks;
     std::vector<ChoicePoint> choices;
@@ -85,8 +85,8 @@ struct Record {
 /// Two agents' disks overlapping at one global frame: |p_a - p_b| < r_a + r_b (the core's sample test).
 struct Contact {
     std::int64_t frame = 0;
-    int a = 0, b = 0;          ///< a < b
-    bool excused = false;      ///< either agent was playing a fallback clip then
+    int a = 0, b = 0;      ///< a < b
+    bool excused = false;  ///< either agent was playing a fallback clip then
 };
 
 /// Every contact in the record, checked frame by frame on the samples (a uniform grid per frame),

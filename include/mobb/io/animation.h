@@ -14,7 +14,7 @@ enum class UpAxis { Y, Z };
 /// A joint hierarchy. End Sites (BVH) are joints too, flagged, so r counts them.
 struct Skeleton {
     std::vector<std::string> names;
-    std::vector<int> parents;     ///< -1 for the root
+    std::vector<int> parents;  ///< -1 for the root
     std::vector<bool> end_site;
     int root = 0;
 
@@ -24,8 +24,8 @@ struct Skeleton {
 /// World positions of every joint at every frame, in the file's own axes, already scaled to metres.
 struct Animation {
     Skeleton skeleton;
-    double dt = 1.0 / 60.0;                ///< seconds between frames
-    std::vector<glm::dvec3> positions;     ///< frame-major: positions[f * joints + j]
+    double dt = 1.0 / 60.0;             ///< seconds between frames
+    std::vector<glm::dvec3> positions;  ///< frame-major: positions[f * joints + j]
 
     int frames() const { return skeleton.size() ? int(positions.size()) / skeleton.size() : 0; }
     const glm::dvec3& at(int frame, int joint) const { return positions[std::size_t(frame) * skeleton.size() + joint]; }

@@ -20,15 +20,33 @@ public:
 /// Invalid values (scale or fps not finite and positive, frames outside 0 <= A < B <= frames)
 /// throw LoadError naming the file.
 struct LoadOptions {
-    UpAxis up = UpAxis::Y;              ///< --up y|z (glTF is always Y-up; Z is ignored with a warning)
-    std::optional<double> scale;        ///< --scale S (file units to metres); empty = auto (BVH), 1 (glTF)
-    int frame_begin = 0;                ///< --frames A:B keeps frames A..B-1 (after loading)
-    int frame_end = -1;                 ///< -1 = to the end
-    std::optional<double> fps;          ///< --fps F: at each new sample time k/F, the original frame at or just
-                                        ///< below it (samples k/F < duration); dt becomes 1/F
-    int skin = 0;                       ///< glTF: --skin K
-    std::string animation;              ///< glTF: --animation NAME (empty = first)
+    UpAxis up = UpAxis::Y;        ///< --up y|z (glTF is always Y-up; Z is ignored with a warning)
+    std::optional<double> scale;  ///< --scale S (file units to metres); empty = auto (BVH), 1 (glTF)
+    int frame_begin = 0;          ///< --frames A:B keeps frames A..B-1 (after loading)
+    int frame_end = -1;           ///< -1 = to the end
+    std::optional<double> fps;    ///< --fps F: at each new sample time k/F, the original frame at or just
+                                  ///< below it (samples k/F < duration); dt becomes 1/F
+    int skin = 0;                 ///< glTF: --skin K
+    std::string animation;        ///< glTF: --animation NAME (empty = first)
 };
+
+/// Loader options as people write them on the command line and in scene files.
+struct LoadOptionText {
+    std::string up = "y";        ///< "y" or "z"
+    std::string scale = "auto";  ///< metres per file unit, or "auto"
+    std::string frames;          ///< "A:B" (B may be empty: to the end), or empty for every frame
+    double fps = 0;              ///< 0: the file's rate
+    int skin = 0;
+    std::string animation;
+};
+
+/// A finite number written as the whole of `text`. Throws std::invalid_argument
+/// "WHAT: 'TEXT' is not a finite number".
+double parse_number(const std::string& text, const std::string& what);
+
+/// The options the text stands for. Throws std::invalid_argument with one line naming the option, e.g.
+/// "--frames: expected whole numbers 0 <= A < B, got '5:2'".
+LoadOptions parse_load_options(const LoadOptionText& text);
 
 /// A loaded clip: the animation (for drawing skeletons), its path (for the trees), and what was decided.
 struct Clip {
@@ -47,8 +65,8 @@ struct Clip {
 
 /// A units guess for a skeleton `height` file units tall (its standing height, see load_clip).
 struct ScaleGuess {
-    double scale = 1.0;                 ///< metres per file unit
-    std::string reason;                 ///< e.g. "auto: centimetres (standing height 172.3 units)"
+    double scale = 1.0;  ///< metres per file unit
+    std::string reason;  ///< e.g. "auto: centimetres (standing height 172.3 units)"
 };
 
 /// Chooses among metres (1), centimetres (0.01), inches (0.0254) and the CMU unit (0.056444 m) the
@@ -69,5 +87,13 @@ Clip load_clip(const std::string& file, const LoadOptions& options = {});
 /// working directory, else the one next to the source tree (compiled in). Empty if none exists.
 /// Returned as an absolute, normalised path.
 std::string data_dir();
+
+/// A data file's path: absolute names as given, relative ones under data_dir(). Throws LoadError
+/// "FILE: no data folder (...)" when the name is relative and there is no data folder.
+std::string resolve_data_file(const std::string& file);
+
+/// The inverse, for files that name data: the path relative to data_dir() when the file lies inside it
+/// (symbolic links resolved), else the name as given.
+std::string data_relative(const std::string& file);
 
 }  // namespace mobb::io

@@ -1,0 +1,24 @@
+// The circle sweep: the library's fastest exact query, the same answer as collide() and collide_brute().
+#pragma once
+#include "mobb/core/clip_index.h"
+#include "mobb/core/path.h"
+#include "mobb/core/query.h"
+
+namespace mobb {
+
+/// Do placed clips a and b collide (README "model": some time-overlapping sample pair with
+/// |p_a,i - p_b,j| < r_a,i + r_b,j)? Exactly the answer of collide_brute(a.path(), pa, b.path(), pb).
+/// Plan: clip time ranges first; the root MOBB test (double); then, when both clips share one
+/// sample spacing, only the time-aligned diagonals j - i = d that can overlap are visited: a short
+/// overlap is scanned directly, a long one is swept: A's blocks of 32 samples against the B blocks
+/// time aligned with them, by bounding circles (clip_index.h) four at a time, in chunks of 512
+/// samples first tested whole; only blocks that may collide are scanned, 4-wide filtered pairs
+/// (float, rounded outward). Every candidate is confirmed by times_overlap on sample_time() and
+/// samples_overlap() in double, so rounding can only cost time. Different sample spacings use an
+/// exact two-pointer scan instead. (The paper's trees, section 3, bound with boxes and recurse;
+/// this flat two-level sweep is the same bounding idea laid out for SIMD: bench/results/README.md.)
+/// On a hit, stores a colliding pair in `hit` (not necessarily the one brute force reports).
+bool collide_sweep(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb,
+                   SamplePair* hit = nullptr);
+
+}  // namespace mobb

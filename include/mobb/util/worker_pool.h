@@ -1,0 +1,59 @@
+// A small persistent pool of worker threads for data-parallel loops: the crowd's choice points of one
+// frame (paper section 5) and `mobb batch` queries. No global state: each user owns its pool.
+#pragma once
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace mobb::util {
+
+class WorkerPool {
+public:
+    /// A pool of `threads` workers; the calling thread is worker 0, so one worker starts no thread.
+    /// Throws std::invalid_argument when threads < 1.
+    explicit WorkerPool(int threads);
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    int size() const { return int(threads_.size()) + 1; }
+
+    /// Calls f(index, worker) once for every index in [0, n), indices handed out in chunks of `grain`
+    /// to workers 0 .. size() - 1, and returns when every call has returned. Which worker runs which
+    /// index is not deterministic; callers write results by index. If calls throw, the exception of
+    /// the lowest index is rethrown after all calls finished. Not reentrant: call from one thread.
+    void for_each(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain = 1);
+
+    /// std::thread::hardware_concurrency(), at least 1.
+    static int hardware_threads();
+
+private:
+    // One for_each call. Workers that wake late keep it alive and find no index left, so the caller
+    // never waits for a thread that was not scheduled in time (the machine may be shared).
+    struct Job {
+        const std::function<void(std::size_t, int)>* f = nullptr;
+        std::size_t n = 0, grain = 1;
+        std::atomic<std::size_t> next{0}, finished{0};
+        std::exception_ptr error;  // guarded by the pool's mutex
+        std::size_t error_index = 0;
+    };
+    void loop(int worker);
+    void work(Job& job, int worker);
+
+    std::vector<std::thread> threads_;
+    std::mutex mutex_;
+    std::condition_variable start_, done_;
+    std::shared_ptr<Job> job_;              // the latest job, guarded by mutex_
+    std::uint64_t generation_ = 0;          // one per job that wakes the threads
+    std::atomic<std::uint64_t> posted_{0};  // generation_, readable without the lock (spinning)
+    bool stop_ = false;
+};
+
+}  // namespace mobb::util

@@ -1,0 +1,272 @@
+// mobb view, mobb render, mobb export-gltf: the viewer layer's subcommands (src/viewer).
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "cli.h"
+#include "context_glfw.h"
+#include "crowd_view.h"
+#include "export_gltf.h"
+#include "headless.h"
+#include "image.h"
+#include "scene.h"
+#include "state.h"
+#include "window.h"
+
+namespace mobb::app {
+
+namespace {
+
+using viewer::Scene;
+using viewer::State;
+
+float aspect(int w, int h) { return float(w) / float(std::max(h, 1)); }
+
+/// The default scene: assets/scenes/default.json from the working folder, else from the source tree.
+std::string default_scene() {
+    const std::string local = "assets/scenes/default.json";
+    if (std::filesystem::exists(local)) return local;
+    return std::string(MOBB_ASSETS_DIR) + "/scenes/default.json";
+}
+
+/// Puts each clip's path midpoint at the origin under its rotation, so crossing directions cross.
+void centre_clips(State& s) {
+    for (std::size_t k = 0; k < s.scene.clips.size(); ++k) {
+        const Path& path = s.clips[k].tree->path();
+        const Sample &a = path.samples.front(), &b = path.samples.back();
+        Placement& p = s.places[k];
+        const double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
+        const Rigid2 turn = Rigid2::of({0, 0, p.theta, 0});
+        p.x = -turn.apply_x(mx, my);
+        p.y = -turn.apply_y(mx, my);
+    }
+    viewer::run_query(s);
+}
+
+void apply_step(State& s, int step) {
+    if (step >= 0) s.scene.step = step;
+}
+
+/// A recorded crowd's state for `render --crowd` and `view --crowd`: the agent's choice points listed,
+/// the cursor at `time` (negative: the middle of the run), the camera from the space-time side.
+State crowd_state(const std::string& record, float asp, int agent, double time) {
+    State s = viewer::load_crowd_state(record, asp);
+    viewer::select_choice(s, agent, -1);
+    const auto& r = s.crowd->record;
+    s.scene.cursor = time >= 0 ? time : 0.5 * double(r.frames) * r.dt;
+    return s;
+}
+
+/// `render --crowd ... --choice C [--candidate K [--query J]]`: selects choice point C (the cursor at
+/// its time unless --time was given) and opens query J (default 0) of its candidate K in the trace,
+/// as the crowd panel does. Throws InputError with the reason when the record has no such query.
+void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_time) {
+    const auto& r = s.crowd->record;
+    if (choice < 0) {
+        if (candidate >= 0 || query >= 0) throw InputError("render: --candidate and --query need --choice");
+        return;
+    }
+    if (std::size_t(choice) >= r.choices.size())
+        throw InputError("render: --choice " + std::to_string(choice) + ": the record has " +
+                         std::to_string(r.choices.size()) + " choice points");
+    viewer::select_choice(s, -1, choice);
+    if (!keep_time) s.scene.cursor = double(r.choices[std::size_t(choice)].frame) * r.dt;
+    if (candidate < 0) {
+        if (query >= 0) throw InputError("render: --query needs --candidate");
+        return;
+    }
+    std::string message;
+    if (!viewer::open_candidate_query(s, candidate, std::max(query, 0), &message))
+        throw InputError("render: " + message);
+}
+
+void add_render(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
+    struct Args {
+        std::string scene, out, crowd;
+        int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
+        double time = -1;
+        bool ui = false, bench = false;
+    };
+    auto a = std::make_shared<Args>();
+    cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
+    cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
+    cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--agent", a->agent, "With --crowd: agent listed in the crowd panel")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--choice", a->choice, "With --crowd: select this choice point (index in the record)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--candidate", a->candidate, "With --choice: open a query of this candidate in the trace")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--query", a->query, "With --candidate: which of its queries, in the order run (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--out", a->out, "PNG file to write");
+    cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")
+        ->check(CLI::Range(16, 8192));
+    cmd->add_option("--height", a->height, "Image height (default: the scene's; 720 with --bench)")
+        ->check(CLI::Range(16, 8192));
+    cmd->add_option("--step", a->step, "Trace step to show (default: the scene's)")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--ui", a->ui, "Also draw the ImGui panels");
+    cmd->add_flag("--bench", a->bench, "Print frames per second instead of writing an image");
+    cmd->add_option("--bench-frames", a->bench_frames, "Frames timed by --bench")->check(CLI::Range(1, 100000));
+    cmd->callback([a, &exit_code] {
+        if (a->out.empty() && !a->bench) {
+            std::cerr << "render: --out FILE.png is required (or --bench)\n";
+            exit_code = kUsage;
+            return;
+        }
+        if (a->scene.empty() == a->crowd.empty()) {
+            std::cerr << "render: expected a SCENE or --crowd RECORD.json (one of them)\n";
+            exit_code = kUsage;
+            return;
+        }
+        if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0)) {
+            std::cerr << "render: --time, --choice, --candidate and --query go with --crowd\n";
+            exit_code = kUsage;
+            return;
+        }
+        exit_code = guarded([&](std::ostream& out) {
+            if (!a->crowd.empty()) {
+                const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
+                State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
+                open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
+                apply_step(s, a->step);
+                if (a->bench) {
+                    out << "bench: crowd, " << std::fixed << std::setprecision(2)
+                        << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
+                    return;
+                }
+                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));
+                out << a->out << "\n";
+                return;
+            }
+            Scene scene = viewer::load_scene(a->scene);
+            const int w = a->width ? a->width : a->bench ? 1280 : scene.width;
+            const int h = a->height ? a->height : a->bench ? 720 : scene.height;
+            State s = viewer::load_state(scene, aspect(w, h));
+            apply_step(s, a->step);
+            if (a->bench) {
+                std::size_t disks = 0;
+                for (const auto& c : s.clips) disks += c.tree->path().size();
+                render::DiskStats drawn;
+                const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
+                // The disk layer groups consecutive samples of crowds seen from afar (level of detail k).
+                out << "bench: " << s.clips.size() << " clips, " << disks << " disks in " << drawn.instances
+                    << " instances at LOD k=" << drawn.k_min;
+                if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
+                out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
+                    << " frames per second\n";
+                return;
+            }
+            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));
+            out << a->out << "\n";
+        });
+    });
+}
+
+struct ViewArgs {
+    std::vector<std::string> inputs;
+    io::LoadOptionText load;
+    std::string screenshot, crowd;
+    int frames = 0, width = 1280, height = 800;
+    TreeArgs tree;
+};
+
+// Opens a window on the state, or renders it headless when there is no display (`what` names it).
+void show(State& s, const ViewArgs& a, const std::string& what, std::ostream& out) {
+    if (!render::display_available()) {
+        const std::string png = a.screenshot.empty() ? "mobb-view.png" : a.screenshot;
+        render::write_png(png, viewer::render_headless(s, {a.width, a.height, true}));
+        std::cerr << "no display: rendered " << what << " headless to " << std::filesystem::absolute(png).string()
+                  << "\n";
+        return;
+    }
+    viewer::WindowOptions w;
+    w.width = a.width;
+    w.height = a.height;
+    w.frames = a.frames;
+    w.screenshot = a.screenshot;
+    viewer::run_window(s, w);
+    if (!a.screenshot.empty()) out << a.screenshot << "\n";
+}
+
+void add_view(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand("view", "Open the interactive viewer on a scene or on clip files");
+    auto a = std::make_shared<ViewArgs>();
+    cmd->add_option("SCENE_OR_FILES", a->inputs,
+                    "A scene (.json) or BVH / glTF files (default: assets/scenes/default.json)");
+    // Not LoadArgs: here --frames is the number of frames to show, not the clips' frame range.
+    cmd->add_option("--up", a->load.up, "Up axis of BVH files: y or z")->check(CLI::IsMember({"y", "z"}));
+    cmd->add_option("--scale", a->load.scale, "Metres per file unit, or auto");
+    cmd->add_option("--fps", a->load.fps, "Resample clip files to F samples per second")->check(CLI::PositiveNumber);
+    a->tree.add_to(*cmd, false);
+    cmd->add_option("--frames", a->frames, "Close after N frames (with --screenshot: smoke tests)")
+        ->check(CLI::Range(1, 1 << 30));
+    cmd->add_option("--screenshot", a->screenshot, "Save the last frame to this PNG");
+    cmd->add_option("--crowd", a->crowd, "Show a crowd record (mobb crowd --record) instead of a scene");
+    cmd->add_option("--width", a->width, "Window width")->check(CLI::Range(16, 8192));
+    cmd->add_option("--height", a->height, "Window height")->check(CLI::Range(16, 8192));
+    cmd->callback([a, cmd, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            if (!a->crowd.empty()) {
+                if (!a->inputs.empty()) throw InputError("view: --crowd takes no scene or clip files");
+                State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
+                show(s, *a, a->crowd, out);
+                return;
+            }
+            const bool files = !a->inputs.empty() && !(a->inputs.size() == 1 && a->inputs[0].size() > 5 &&
+                                                       a->inputs[0].substr(a->inputs[0].size() - 5) == ".json");
+            std::string scene_file;
+            Scene scene;
+            if (files) {
+                std::vector<std::string> abs;
+                for (const std::string& f : a->inputs) abs.push_back(std::filesystem::absolute(f).string());
+                scene = viewer::scene_of_files(abs);
+                for (auto& c : scene.clips) c.load = a->load;
+            } else {
+                scene_file = a->inputs.empty() ? default_scene() : a->inputs[0];
+                scene = viewer::load_scene(scene_file);
+            }
+            if (cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit")) scene.tree = a->tree.options();
+            State s = viewer::load_state(scene, aspect(a->width, a->height));
+            if (files) {
+                centre_clips(s);
+                if (s.queried) s.scene.step = 0;
+                viewer::frame_all(s, aspect(a->width, a->height));
+            }
+            show(s, *a, scene_file.empty() ? "the clips" : scene_file, out);
+        });
+    });
+}
+
+void add_export(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand("export-gltf", "Write a scene's visible disk stacks and boxes as a glTF binary");
+    auto scene_file = std::make_shared<std::string>();
+    auto out_file = std::make_shared<std::string>();
+    auto step = std::make_shared<int>(-1);
+    cmd->add_option("SCENE", *scene_file, "Scene file (JSON)")->required();
+    cmd->add_option("--out", *out_file, "GLB file to write")->required();
+    cmd->add_option("--step", *step, "Trace step to include (default: the scene's)")->check(CLI::NonNegativeNumber);
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            const Scene scene = viewer::load_scene(*scene_file);
+            State s = viewer::load_state(scene, aspect(scene.width, scene.height));
+            apply_step(s, *step);
+            const viewer::GltfSummary g = viewer::export_gltf(s, *out_file);
+            out << *out_file << ": " << g.meshes << " meshes, " << g.nodes << " nodes, " << g.materials
+                << " materials\n";
+        });
+    });
+}
+
+}  // namespace
+
+void add_view_commands(CLI::App& app, int& exit_code) {
+    add_view(app, exit_code);
+    add_render(app, exit_code);
+    add_export(app, exit_code);
+}
+
+}  // namespace mobb::app

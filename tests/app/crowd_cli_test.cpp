@@ -1,0 +1,117 @@
+// The crowd and benchmark subcommands as a user meets them: tables, records, exit codes.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "files.h"
+#include "mobb/crowd/record.h"
+#include "query_set.h"
+#include "run.h"
+
+namespace mobb {
+namespace {
+
+using test::Result;
+using test::temp_file;
+
+const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+
+Result run(const std::string& args) { return test::run_mobb(args); }
+
+TEST(CrowdCli, BenchCommandsPrintTables) {
+    const std::string json = temp_file("t1.json"), png = temp_file("t1.png");
+    const Result r = run("bench table1 --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* row : {"| MOBB 1 level |", "| frame stepping |", "| best scan |", "| FCL |", "| circle sweep |"})
+        EXPECT_NE(r.out.find(row), std::string::npos) << row;
+    std::ifstream j(json);
+    EXPECT_EQ(nlohmann::json::parse(j)["rows"].size(), 11u);
+    std::remove(json.c_str());
+    std::remove(png.c_str());
+    const Result r2 = run("bench table2 --synth --quick --quiet --motions 2 --synth-seconds 10 --graph " + kGraph);
+    ASSERT_EQ(r2.code, 0) << r2.err;
+    EXPECT_NE(r2.out.find("| Hybrid 1 |"), std::string::npos);
+}
+
+// synth42 / synth120 / scale: each subcommand runs (--quick) and its JSON rows carry method + us_per_query.
+void expect_json_rows(const std::string& file, const std::string& workload) {
+    std::ifstream f(file);
+    const nlohmann::json j = nlohmann::json::parse(f);
+    EXPECT_EQ(j["workload"], workload);
+    EXPECT_FALSE(j["rows"].empty());
+    for (const auto& row : j["rows"]) {
+        EXPECT_TRUE(row["method"].is_string());
+        EXPECT_TRUE(row.contains("us_per_query"));
+    }
+    EXPECT_FALSE(j["targets"].empty());
+}
+
+TEST(CrowdCli, PerformanceWorkloads) {
+    const std::string json = temp_file("w.json"), set = temp_file("w.queries");
+    for (const std::string w : {"synth42", "synth120"}) {
+        const Result r = run("bench " + w + " --quick --quiet --motions 2 --tests 300 --slow-queries 20 --graph " +
+                             kGraph + " --json " + json + " --save-queries " + set);
+        ASSERT_EQ(r.code, 0) << w << ": " << r.err;
+        EXPECT_NE(r.out.find("| circle sweep |"), std::string::npos);
+        expect_json_rows(json, w);
+        EXPECT_EQ(bench::load_query_set(set).queries.size(), 300u);
+    }
+    const Result r = run("bench scale --quick --quiet --graph " + kGraph + " --json " + json);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("| 40 |"), std::string::npos);
+    expect_json_rows(json, "scale");
+    std::remove(json.c_str());
+    std::remove(set.c_str());
+}
+
+TEST(CrowdCli, CrowdPrintsSummaryAndRecord) {
+    const std::string rec = temp_file("rec.json");
+    const Result r = run("crowd --quiet --graph " + kGraph + " --agents 10 --seconds 5 --world 20x20 --record " + rec);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("0 outside fallbacks"), std::string::npos) << r.out;
+    EXPECT_EQ(crowd::load_record(rec).tracks.size(), 10u);
+    std::remove(rec.c_str());
+}
+
+// The record file is the same, byte for byte, for another run and another thread count (wall times
+// and the thread count are printed, not recorded).
+TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
+    const std::string args =
+        "crowd --quiet --graph " + kGraph + " --agents 40 --seconds 10 --world 20x25 --seed 5 --record ";
+    std::string text[3];
+    const int threads[3] = {1, 2, 2};
+    for (int k = 0; k < 3; ++k) {
+        const std::string rec = temp_file("rec" + std::to_string(k) + ".json");
+        const Result r = run(args + rec + " --threads " + std::to_string(threads[k]));
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find(std::to_string(threads[k]) + " threads"), std::string::npos) << r.out;
+        text[k] = test::slurp(rec);
+        std::remove(rec.c_str());
+    }
+    EXPECT_FALSE(text[0].empty());
+    EXPECT_TRUE(text[1] == text[0]);
+    EXPECT_TRUE(text[2] == text[0]);
+}
+
+TEST(CrowdCli, ErrorsAndExitCodes) {
+    Result r = run("crowd --quiet --graph " + kGraph + " --world 30by40");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("--world"), std::string::npos);
+    EXPECT_TRUE(r.out.empty());
+    r = run("crowd --quiet --graph /nonexistent/g.json");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("/nonexistent/g.json"), std::string::npos);
+    r = run("crowd --select nearest");
+    EXPECT_EQ(r.code, 2);
+    r = run("graph build /nonexistent/a.bvh --out /tmp/never.json");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("/nonexistent/a.bvh"), std::string::npos);
+    r = run("bench");
+    EXPECT_EQ(r.code, 2);
+}
+
+}  // namespace
+}  // namespace mobb

@@ -1,0 +1,213 @@
+// Smoke runs of the benchmark library (shape of the output, not timing), its methods, workloads and files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "data.h"
+#include "files.h"
+#include "method.h"
+#include "report.h"
+#include "workloads.h"
+
+namespace mobb::bench {
+namespace {
+
+using test::temp_file;
+
+const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+// The tables' row order: paper rows, brute force, best scan, FCL, circle sweep (then frame stepping in Table 1).
+const std::vector<std::string> kRows = {"MOBB 1 level", "UMOBB 1 level", "MOBB",      "UMOBB", "Hybrid 1",
+                                        "Hybrid 2",     "brute force",   "best scan", "FCL",   "circle sweep"};
+
+bool fcl_built() { return fcl_method()->unavailable().empty(); }
+
+void expect_shape(const BenchTable& t, bool stepping) {
+    ASSERT_EQ(t.rows.size(), kRows.size() + (stepping ? 1 : 0));
+    for (std::size_t k = 0; k < kRows.size(); ++k) {
+        const MethodRow& r = t.rows[k];
+        EXPECT_EQ(r.label, kRows[k]);
+        ASSERT_TRUE(r.method.has_value());
+        EXPECT_EQ(r.label, label(*r.method));
+        if (r.method == Method::Fcl) {  // optional peer, conservative: its own positives and disagreements
+            EXPECT_EQ(r.measured, fcl_built());
+            if (!r.measured) {
+                EXPECT_NE(r.note.find("without FCL"), std::string::npos);
+            }
+            continue;
+        }
+        EXPECT_GT(r.queries, 0u);
+        EXPECT_GT(r.us_per_query, 0.0);
+        EXPECT_GT(r.x_sweep, 0.0);
+        EXPECT_EQ(r.disagreements, 0u) << r.label << " disagrees with brute force";
+        if (r.queries == t.rows.front().queries) {
+            EXPECT_DOUBLE_EQ(r.positive, t.rows.front().positive);
+        }
+    }
+    EXPECT_DOUBLE_EQ(t.rows[kRows.size() - 1].x_sweep, 1.0);
+    EXPECT_FALSE(t.targets.empty());
+    EXPECT_EQ(t.rows[0].tests3d, 0.0);  // MOBB 1 level: 2D root only
+    EXPECT_EQ(t.rows[1].tests2d, 0.0);  // UMOBB 1 level: 3D root only
+    EXPECT_GT(t.rows[2].tests2d, 0.0);
+    const nlohmann::json j = nlohmann::json::parse(table_json(t));
+    ASSERT_EQ(j["rows"].size(), t.rows.size());
+    for (const auto& row : j["rows"]) {
+        EXPECT_TRUE(row["method"].is_string());
+        if (row["method"] != "FCL" || fcl_built()) {
+            EXPECT_TRUE(row["us_per_query"].is_number()) << row["method"];
+        }
+    }
+    EXPECT_EQ(j["targets"].size(), t.targets.size());
+    const std::string md = table_markdown(t);
+    EXPECT_NE(md.find("| Method | Time (us) | x sweep | #2D | #3D | #sample |"), std::string::npos);
+    EXPECT_NE(md.find("| Hybrid 2 |"), std::string::npos);
+    EXPECT_NE(md.find("| circle sweep | "), std::string::npos);
+    EXPECT_NE(md.find("Targets (issue 5)"), std::string::npos);
+}
+
+TEST(Bench, Table1QuickShape) {
+    Table1Options o;
+    o.graph = kGraph;
+    o.agents = 20;
+    o.seconds = 10;
+    o.passes = 1;
+    const BenchTable t = run_table1(o);
+    expect_shape(t, true);
+    EXPECT_EQ(t.rows.back().label, "frame stepping");
+    EXPECT_FALSE(t.rows.back().method.has_value());
+    EXPECT_EQ(t.workload, "table1");
+    const std::string png = temp_file("table1.png");
+    write_table_png(t, png);
+    std::ifstream f(png, std::ios::binary);
+    char magic[4] = {};
+    f.read(magic, 4);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+    std::remove(png.c_str());
+}
+
+TEST(Bench, Table2QuickShapeAndRootShare) {
+    MOBB_REQUIRE_MOCAP();
+    Table2Options o;
+    o.graph = kGraph;
+    o.tests = 1000;
+    o.root_share = 0.8;
+    o.passes = 1;
+    o.motions = 4;
+    const BenchTable t = run_table2(o);
+    expect_shape(t, false);
+    EXPECT_EQ(t.rows.front().queries, 1000u);
+    EXPECT_NE(t.notes.at("root overlap target").find("80.0 %"), std::string::npos);
+}
+
+TEST(Bench, Table2SynthShape) {
+    Table2Options o;
+    o.graph = kGraph;
+    o.synth = true;
+    o.motions = 3;
+    o.synth_seconds = 20;
+    o.tests = 500;
+    o.root_share = 0.5;
+    o.passes = 1;
+    o.slow_queries = 50;
+    const BenchTable t = run_table2(o);
+    expect_shape(t, false);
+    EXPECT_NE(t.title.find("motion-graph sequences"), std::string::npos);
+    EXPECT_EQ(t.workload, "synth20");
+    EXPECT_EQ(t.rows[6].timed_queries, 50u);  // brute force: timed on a prefix, answers all
+    EXPECT_EQ(t.rows[6].queries, 500u);
+}
+
+TEST(Bench, QuerySetRoundTrip) {
+    QuerySet set;
+    set.clips.push_back({1.0 / 30.0, {{0.1, 0.2, 0.3}, {1.0 / 3.0, -2.5e-7, 0.25}}});
+    set.queries.push_back({0, 0, {0.5, 1.0 / 7.0, 3.0, 0.1}, {-1, 2, -3.1, 0}});
+    const std::string file = temp_file("set.txt");
+    save_query_set(set, file);
+    const QuerySet back = load_query_set(file);
+    ASSERT_EQ(back.clips.size(), 1u);
+    ASSERT_EQ(back.queries.size(), 1u);
+    EXPECT_EQ(back.clips[0].dt, set.clips[0].dt);
+    EXPECT_EQ(back.clips[0].samples[1].x, set.clips[0].samples[1].x);
+    EXPECT_EQ(back.clips[0].samples[1].y, set.clips[0].samples[1].y);
+    EXPECT_EQ(back.queries[0].pa.y, set.queries[0].pa.y);
+    EXPECT_EQ(back.queries[0].pb.theta, set.queries[0].pb.theta);
+    std::remove(file.c_str());
+    EXPECT_THROW(load_query_set(file), std::runtime_error);
+}
+
+// One name table: every method by its key and by its label, made as itself; tree methods named as
+// the core names their tree types.
+TEST(Bench, MethodsByName) {
+    for (int k = 0; k < kMethodCount; ++k) {
+        const Method m = Method(k);
+        EXPECT_EQ(parse_method(key(m)), m);
+        EXPECT_EQ(parse_method(label(m)), m);
+        EXPECT_EQ(make_method(m)->method(), m);
+        if (const auto type = tree_type(m)) {
+            EXPECT_STREQ(key(m), to_string(*type));
+        }
+    }
+    EXPECT_EQ(parse_method("sweep"), Method::Sweep);
+    EXPECT_STREQ(label(Method::Mobb1), "MOBB 1 level");
+    EXPECT_THROW(parse_method("nearest"), std::invalid_argument);
+    EXPECT_EQ(table_methods().size(), std::size_t(kMethodCount));
+}
+
+// The workloads' generators are deterministic, and the paper's random tests land the second clip's
+// centre within the radius of the first's.
+TEST(Bench, RandomTestsAreDeterministicAndWithinTheRadius) {
+    std::vector<Path> clips(2);
+    for (int k = 0; k < 50; ++k) {
+        clips[0].samples.push_back({0.05 * k, 0, 0.3});
+        clips[1].samples.push_back({0, 0.04 * k, 0.3});
+    }
+    const auto a = random_tests(clips, 2.0, 200, 7), b = random_tests(clips, 2.0, 200, 7);
+    ASSERT_EQ(a.size(), 200u);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].pb.x, b[k].pb.x);
+        EXPECT_EQ(a[k].pb.t0, b[k].pb.t0);
+        const Path &pa = clips[std::size_t(a[k].a)], &pb = clips[std::size_t(a[k].b)];
+        const Rigid2 m = Rigid2::of(a[k].pb);
+        double cx = 0, cy = 0;  // b's centre, placed
+        for (const Sample& s : pb.samples)
+            cx += m.apply_x(s.x, s.y) / double(pb.size()), cy += m.apply_y(s.x, s.y) / double(pb.size());
+        const double ax = pa.samples.back().x / 2, ay = pa.samples.back().y / 2;
+        EXPECT_LE(std::hypot(cx - ax, cy - ay), 2.0 + 1e-9);
+        EXPECT_GE(a[k].pb.t0, -pb.duration());
+        EXPECT_LE(a[k].pb.t0, pa.duration());
+    }
+    const std::vector<Tree> trees = mobb_trees(clips);
+    EXPECT_GT(root_share(trees, random_tests(clips, 0.5, 500, 1)), root_share(trees, random_tests(clips, 20, 500, 1)));
+}
+
+TEST(Bench, ScaleQuickShape) {
+    ScaleOptions o;
+    o.graph = kGraph;
+    o.agents = {8, 16};
+    o.seconds = 4;
+    o.threads = 2;
+    const ScaleTable t = run_scale(o);
+    ASSERT_EQ(t.rows.size(), 2u);
+    for (const ScaleRow& r : t.rows) {
+        EXPECT_TRUE(r.identical) << r.agents << " agents: " << r.digest_1 << " vs " << r.digest_n;
+        EXPECT_EQ(r.contacts_unexcused, 0u);
+        EXPECT_GT(r.choice_points, 0u);
+        EXPECT_EQ(r.threads, 2);
+    }
+    EXPECT_NEAR(t.rows[1].width * t.rows[1].height, 16 * o.area_per_agent, 1e-9);
+    EXPECT_EQ(t.targets.size(), 3u);
+    const nlohmann::json j = nlohmann::json::parse(scale_json(t));
+    EXPECT_EQ(j["workload"], "scale");
+    for (const auto& row : j["rows"]) {
+        EXPECT_TRUE(row["method"].is_string());
+        EXPECT_TRUE(row["us_per_query"].is_number());
+    }
+    EXPECT_NE(scale_markdown(t).find("| agents |"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mobb::bench

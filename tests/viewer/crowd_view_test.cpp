@@ -1,0 +1,185 @@
+// The crowd view without images: every query a candidate lists opens with the recorded answer, the
+// skeletons stand on their agents' disks, sources load once, and unreadable inputs leave the disks
+// with a reason instead of a crash.
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "crowd_view.h"
+#include "render_test_util.h"
+#include "state.h"
+
+namespace mobb::test {
+namespace {
+
+using viewer::State;
+
+/// A copy of `from` (JSON) with `edit` applied, written to the test output folder as `name`.
+std::string edited_copy(const std::string& from, const std::string& name,
+                        const std::function<void(nlohmann::json&)>& edit) {
+    std::ifstream in(from);
+    nlohmann::json j = nlohmann::json::parse(in);
+    edit(j);
+    const std::string out = std::string(MOBB_TEST_OUT) + "/" + name;
+    std::ofstream(out) << j.dump();
+    return out;
+}
+
+TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 1.5f);
+    ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
+    const crowd::Record& r = s.crowd->record;
+    int opened = 0, hits = 0;
+    for (std::size_t k = 0; k < r.choices.size(); ++k) {
+        const crowd::ChoicePoint& c = r.choices[k];
+        viewer::select_choice(s, -1, int(k));
+        ASSERT_EQ(s.crowd->candidate_clips.size(), c.candidates.size());
+        for (std::size_t i = 0; i < c.candidates.size(); ++i) {
+            const crowd::Candidate& cand = c.candidates[i];
+            EXPECT_EQ(int(cand.against.size()), cand.queries) << "choice " << k << " candidate " << i;
+            for (std::size_t j = 0; j < cand.against.size(); ++j) {
+                std::string message;
+                ASSERT_TRUE(viewer::open_candidate_query(s, int(i), int(j), &message)) << message;
+                ASSERT_TRUE(s.queried);
+                EXPECT_FALSE(s.trace.empty());
+                EXPECT_EQ(s.answer, cand.against[j].hit)
+                    << "choice " << k << " candidate " << i << " query " << j << ": " << message;
+                EXPECT_EQ(s.scene.step, 0);
+                EXPECT_EQ(s.crowd->opened_candidate, int(i));
+                EXPECT_EQ(s.crowd->opened_query, int(j));
+                // The query's other clip is the recorded agent's committed clip, where it was placed.
+                const crowd::PlacedClip& other =
+                    r.tracks[std::size_t(cand.against[j].agent)].clips[std::size_t(cand.against[j].index)];
+                EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].x, other.place.x);
+                EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].t0, other.place.t0);
+                // Opening another query replaces the other clip instead of piling them up.
+                EXPECT_EQ(s.clips.size(), std::size_t(s.crowd->agents) + c.candidates.size() + 1);
+                ++opened;
+                hits += s.answer ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(opened, 20);
+    EXPECT_GT(hits, 0);
+    EXPECT_LT(hits, opened);
+    viewer::select_choice(s, 0, -1);
+    EXPECT_EQ(s.clips.size(), r.tracks.size());
+    EXPECT_EQ(s.scene.query_a, -1);
+    EXPECT_EQ(s.crowd->opened_query, -1);
+}
+
+TEST(CrowdTrace, BadQueryIndicesAreRefused) {
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    State s = viewer::load_crowd_state(record, 1.5f);
+    std::string message;
+    EXPECT_FALSE(viewer::open_candidate_query(s, 0, 0, &message));
+    EXPECT_EQ(message, "no choice point selected");
+    viewer::select_choice(s, -1, 0);
+    const auto& c = s.crowd->record.choices[0];
+    EXPECT_FALSE(viewer::open_candidate_query(s, int(c.candidates.size()), 0, &message));
+    EXPECT_FALSE(viewer::open_candidate_query(s, 0, int(c.candidates[0].against.size()), &message));
+    EXPECT_FALSE(viewer::open_candidate_query(s, 0, -1, &message));
+    EXPECT_NE(message.find("has no query"), std::string::npos) << message;
+    EXPECT_FALSE(s.queried);
+}
+
+/// At every frame (sampled), each agent's skeleton root lies on its recorded disk's centre: the pose
+/// went through the graph's localisation and the clip's placement like the path did.
+TEST(CrowdSkeletons, RootsStandOnTheirDisks) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    State s = viewer::load_crowd_state(record, 1.5f);
+    ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
+    const crowd::Record& r = s.crowd->record;
+    int checked = 0;
+    for (std::int64_t k = 0; k < r.frames; k += 5) {
+        const double t = (double(k) + 0.5) * r.dt;
+        const auto skeletons = viewer::agent_skeletons(*s.crowd, t, s.colors);
+        ASSERT_EQ(skeletons.size(), r.tracks.size()) << viewer::skeleton_problem(*s.crowd);
+        for (std::size_t a = 0; a < skeletons.size(); ++a) {
+            const render::PosedSkeleton& p = skeletons[a];
+            const glm::dvec3 g = io::to_ground(p.animation->at(p.frame, p.animation->skeleton.root), p.up);
+            const Rigid2 m = Rigid2::of(p.place);
+            const auto& disk = r.tracks[a].samples[std::size_t(k)];
+            // The graph rounds clip paths to micrometres; the record chains placements in doubles.
+            EXPECT_NEAR(m.apply_x(g.x, g.y), disk[1], 1e-4) << "agent " << a << " frame " << k;
+            EXPECT_NEAR(m.apply_y(g.x, g.y), disk[2], 1e-4) << "agent " << a << " frame " << k;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 100);
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+TEST(CrowdSkeletons, SourcesLoadOnceAndOnlyWhenNeeded) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    State s = viewer::load_crowd_state(record, 1.5f);
+    ASSERT_TRUE(s.crowd->poses);
+    // Loading the state posed the agents at t = 0 (framing the camera): only their sources are loaded.
+    std::set<const io::Animation*> distinct;
+    for (const auto& p : viewer::agent_skeletons(*s.crowd, 0.0, s.colors)) distinct.insert(p.animation);
+    EXPECT_EQ(s.crowd->poses->loaded(), int(distinct.size()));
+    EXPECT_LT(s.crowd->poses->loaded(), int(s.crowd->graph->sources.size()));
+    const auto first = viewer::agent_skeletons(*s.crowd, 1.0, s.colors);
+    const int loaded = s.crowd->poses->loaded();
+    const auto again = viewer::agent_skeletons(*s.crowd, 1.0 + s.crowd->record.dt, s.colors);
+    EXPECT_EQ(s.crowd->poses->loaded(), loaded);
+    ASSERT_EQ(first.size(), again.size());
+    for (std::size_t a = 0; a < first.size(); ++a) {
+        if (first[a].place.x == again[a].place.x) {
+            EXPECT_EQ(first[a].animation, again[a].animation);
+        }
+    }
+    // The layer off: frame_of poses nobody.
+    s.scene.layers.skeletons = false;
+    EXPECT_TRUE(viewer::frame_of(s).posed.empty());
+    s.scene.layers.skeletons = true;
+    EXPECT_EQ(viewer::frame_of(s).posed.size(), s.crowd->record.tracks.size());
+}
+
+TEST(CrowdSkeletons, UnreadableGraphKeepsTheDisks) {
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    const std::string bad =
+        edited_copy(record, "crowd_no_graph.json", [](nlohmann::json& j) { j["graph"] = "/no/such/graph.json"; });
+    State s = viewer::load_crowd_state(bad, 1.5f);
+    EXPECT_FALSE(s.crowd->graph);
+    EXPECT_EQ(s.clips.size(), s.crowd->record.tracks.size());
+    EXPECT_NE(viewer::skeleton_problem(*s.crowd).find("/no/such/graph.json"), std::string::npos);
+    EXPECT_TRUE(viewer::frame_of(s).posed.empty());
+    viewer::select_choice(s, -1, 0);
+    std::string message;
+    EXPECT_FALSE(viewer::open_candidate_query(s, 0, 0, &message));
+    EXPECT_NE(message.find("graph"), std::string::npos) << message;
+}
+
+TEST(CrowdSkeletons, MissingSourceNamesTheFile) {
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    // The committed graph with every source renamed: paths still fine, mocap missing.
+    const std::string graph = edited_copy(MOBB_GRAPH, "crowd_graph_no_sources.json", [](nlohmann::json& j) {
+        for (auto& src : j["sources"]) src["file"] = "cmu/no_such_take.bvh";
+    });
+    const std::string rec =
+        edited_copy(record, "crowd_missing_sources.json", [&](nlohmann::json& j) { j["graph"] = graph; });
+    State s = viewer::load_crowd_state(rec, 1.5f);
+    ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
+    EXPECT_TRUE(viewer::frame_of(s).posed.empty());
+    const std::string problem = viewer::skeleton_problem(*s.crowd);
+    EXPECT_NE(problem.find("no_such_take.bvh"), std::string::npos) << problem;
+    EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
+    EXPECT_EQ(s.clips.size(), s.crowd->record.tracks.size());
+}
+
+}  // namespace
+}  // namespace mobb::test

@@ -1,0 +1,293 @@
+// Image-diff tests: each case renders a scene headless (OSMesa, llvmpipe, 128-bit vectors) and
+// compares it with tests/golden/NAME.png. MOBB_UPDATE_GOLDENS=1 rewrites the goldens instead
+// (cmake --build BUILD --target update_goldens).
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include "crowd_view.h"
+#include "headless.h"
+#include "image_diff.h"
+#include "render_test_util.h"
+#include "scene.h"
+#include "state.h"
+
+namespace mobb::test {
+namespace {
+
+using viewer::Scene;
+using viewer::State;
+
+struct Case {
+    std::string name;
+    std::string scene;
+    std::function<void(State&)> edit = [](State&) {};
+    bool ui = false;
+    int width = 320, height = 240;
+};
+
+std::string golden_path(const std::string& name) { return std::string(MOBB_GOLDEN_DIR) + "/" + name + ".png"; }
+
+render::Image render_case(const Case& c) {
+    const Scene scene = viewer::load_scene(test_scene(c.scene));
+    State state = viewer::load_state(scene, float(c.width) / float(c.height));
+    c.edit(state);
+    return viewer::render_headless(state, {c.width, c.height, c.ui});
+}
+
+bool updating() {
+    const char* v = std::getenv("MOBB_UPDATE_GOLDENS");
+    return v && std::string(v) == "1";
+}
+
+void check_image(const std::string& name, const render::Image& actual);
+
+void check_golden(const Case& c) { check_image(c.name, render_case(c)); }
+
+void check_image(const std::string& name, const render::Image& actual) {
+    const Case c{name, ""};
+    const std::string golden = golden_path(c.name);
+    if (updating()) {
+        render::write_png(golden, actual);
+        std::cout << "updated " << golden << "\n";
+        return;
+    }
+    if (!std::filesystem::exists(golden)) {
+        const std::string base = write_failure(MOBB_TEST_OUT, c.name, {}, actual, {});
+        FAIL() << golden << " is missing; actual image in " << base
+               << ".actual.png (regenerate: target update_goldens)";
+    }
+    const render::Image expected = render::read_png(golden);
+    const Tolerance tolerance;
+    const Diff diff = compare(expected, actual, tolerance);
+    if (!diff.matches(tolerance)) {
+        const std::string base = write_failure(MOBB_TEST_OUT, c.name, expected, actual, diff);
+        FAIL() << c.name << ": " << diff.differing << " pixels differ (" << diff.fraction * 100
+               << "%, largest channel difference " << diff.largest << "); see " << base
+               << ".{expected,actual,diff}.png";
+    }
+}
+
+void level(State& s, render::Layers l) { s.scene.layers = l; }
+
+render::Layers boxes_at(int lvl, int count = 1) {
+    render::Layers l;
+    l.boxes = true;
+    l.level = lvl;
+    l.levels = count;
+    l.cursor = l.skeletons = l.trace = false;
+    return l;
+}
+
+Case mobb_level(int lvl) {
+    return {"mobb_level" + std::to_string(lvl), "long.json", [lvl](State& s) { level(s, boxes_at(lvl)); }};
+}
+
+TEST(Golden, SyntheticWalks) { check_golden({"synthetic_walks", "walks.json"}); }
+
+TEST(Golden, DiskStacksOnly) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"disk_stacks", "pair.json"});
+}
+
+TEST(Golden, MobbLevel0) {
+    MOBB_NEEDS_MOCAP();
+    check_golden(mobb_level(0));
+}
+
+TEST(Golden, MobbLevel1) {
+    MOBB_NEEDS_MOCAP();
+    check_golden(mobb_level(1));
+}
+
+TEST(Golden, MobbLevel2) {
+    MOBB_NEEDS_MOCAP();
+    check_golden(mobb_level(2));
+}
+
+TEST(Golden, UmobbLevel1) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"umobb_level1", "long.json", [](State& s) {
+                      s.scene.tree.type = TreeType::Umobb;
+                      viewer::rebuild_trees(s);
+                      level(s, boxes_at(1));
+                  }});
+}
+
+/// A step in the middle of the query, neither its first test nor its answer, with both nodes shown.
+TEST(Golden, TraceStepMidQuery) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"trace_step", "pair.json", [](State& s) {
+                      ASSERT_TRUE(s.queried);
+                      ASSERT_GE(s.trace.size(), 5u);
+                      s.scene.step = int(s.trace.size()) / 2;
+                      s.scene.layers.trace = true;
+                      s.scene.layers.disks_translucent = true;
+                  }});
+}
+
+TEST(Golden, TraceHit) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"trace_hit", "pair.json", [](State& s) {
+                      ASSERT_TRUE(s.answer);
+                      s.scene.step = int(s.trace.size()) - 1;
+                      ASSERT_EQ(s.trace.back().outcome, TraceOutcome::Hit);
+                      s.scene.layers.trace = true;
+                      s.scene.layers.disks_translucent = true;
+                  }});
+}
+
+TEST(Golden, CursorWithSkeletons) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"cursor_skeletons", "pair.json", [](State& s) {
+                      s.scene.layers.cursor = s.scene.layers.skeletons = true;
+                      s.scene.cursor = 2.2;
+                  }});
+}
+
+TEST(Golden, UiPanels) {
+    MOBB_NEEDS_MOCAP();
+    Case c{"ui_panels", "pair.json", [](State& s) {
+               s.scene.step = 4;
+               s.scene.layers.trace = true;
+           }};
+    c.ui = true;
+    c.width = 1024;
+    c.height = 640;
+    check_golden(c);
+}
+
+/// The crowd from the default (space-time) camera: every agent's skeleton stands on its disk at the
+/// cursor (they need the mocap the graph was built from).
+TEST(Golden, Crowd) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 320.0f / 240.0f);
+    ASSERT_EQ(s.crowd->agents, 12);
+    ASSERT_EQ(s.clips.size(), 12u);
+    viewer::select_choice(s, 0, -1);
+    s.scene.cursor = 4.0;
+    check_image("crowd", viewer::render_headless(s, {320, 240, false}));
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// Larger, so the skeletons read: the space-time view, and from above (the skeletons on their disks).
+TEST(Golden, CrowdSkeletons) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 800.0f / 500.0f);
+    viewer::select_choice(s, 0, -1);
+    s.scene.cursor = 3.0;
+    check_image("crowd_skeletons", viewer::render_headless(s, {800, 500, false}));
+    s.camera.top();
+    viewer::frame_all(s, 800.0f / 500.0f);
+    check_image("crowd_skeletons_top", viewer::render_headless(s, {800, 500, false}));
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// The first choice point after the start that found a clear clip (no fallback) among a few candidates,
+/// one of them rejected (so the Crowd panel stays short), or -1.
+int small_rejection(const crowd::Record& r) {
+    for (std::size_t n = 0; n < r.choices.size(); ++n) {
+        const auto& c = r.choices[n];
+        if (c.frame > 0 && !c.fallback && c.candidates.size() <= 6 &&
+            std::any_of(c.candidates.begin(), c.candidates.end(), [](const auto& k) { return k.hits > 0; }))
+            return int(n);
+    }
+    return -1;
+}
+
+/// One agent's choice point with its candidates placed where the agent stood, and the panels.
+TEST(Golden, CrowdChoicePoint) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
+    ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
+    const int pick = small_rejection(s.crowd->record);
+    ASSERT_GE(pick, 0);
+    viewer::select_choice(s, -1, pick);
+    const auto& c = s.crowd->record.choices[std::size_t(pick)];
+    ASSERT_EQ(s.crowd->candidate_clips.size(), c.candidates.size());
+    s.scene.cursor = double(c.frame) * s.crowd->record.dt;
+    s.scene.layers.disks_translucent = true;
+    s.camera.top();  // the "from above" preset: the candidates fan out from the agent's disk
+    viewer::frame_all(s, 1024.0f / 640.0f);
+    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
+    check_image("crowd_choice", viewer::render_headless(s, {1024, 640, true}));
+}
+
+/// A rejected candidate's first colliding query opened in the trace debugger, seen from above: the
+/// panel lists the candidate's queries with the opened one selected, the trace shows its first step.
+TEST(Golden, CrowdQueryOpened) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
+    ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
+    const auto& r = s.crowd->record;
+    const int pick = small_rejection(r);
+    ASSERT_GE(pick, 0);
+    viewer::select_choice(s, -1, pick);
+    const auto& c = r.choices[std::size_t(pick)];
+    int k = 0;
+    while (c.candidates[std::size_t(k)].hits == 0) ++k;
+    const auto& against = c.candidates[std::size_t(k)].against;
+    int j = 0;
+    while (std::size_t(j) < against.size() && !against[std::size_t(j)].hit) ++j;
+    ASSERT_LT(std::size_t(j), against.size());
+    std::string message;
+    ASSERT_TRUE(viewer::open_candidate_query(s, k, j, &message)) << message;
+    EXPECT_TRUE(s.answer) << message;
+    s.scene.cursor = double(c.frame) * r.dt;
+    s.camera.top();
+    viewer::frame_all(s, 1024.0f / 640.0f);
+    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
+    check_image("crowd_query", viewer::render_headless(s, {1024, 640, true}));
+}
+
+/// The comparator must catch a real change: the level-1 scene with one more box level drawn.
+TEST(GoldenNegative, OneMoreBoxLevelDoesNotMatch) {
+    MOBB_NEEDS_MOCAP();
+    if (updating()) GTEST_SKIP() << "goldens being regenerated";
+    const render::Image expected = render::read_png(golden_path("mobb_level1"));
+    Case changed{"mobb_level1_plus_one", "long.json", [](State& s) { level(s, boxes_at(1, 2)); }};
+    const render::Image actual = render_case(changed);
+    const Tolerance tolerance;
+    const Diff diff = compare(expected, actual, tolerance);
+    EXPECT_FALSE(diff.matches(tolerance)) << "one more box level went unnoticed: " << diff.fraction;
+    EXPECT_GT(diff.fraction, 0.005);
+}
+
+TEST(Comparator, Tolerances) {
+    render::Image a{4, 4, std::vector<std::uint8_t>(64, 100)};
+    render::Image b = a;
+    b.at(1, 1)[0] = 108;  // within the channel tolerance
+    EXPECT_EQ(compare(a, b, {8, 0.0}).differing, 0);
+    b.at(2, 2)[1] = 200;  // one pixel of 16 differs
+    const Diff d = compare(a, b, {8, 0.0});
+    EXPECT_EQ(d.differing, 1);
+    EXPECT_EQ(d.largest, 100);
+    EXPECT_FALSE(d.matches({8, 0.05}));
+    EXPECT_TRUE(d.matches({8, 0.0625}));
+    EXPECT_EQ(d.image.at(2, 2)[0], 255);
+    render::Image c{2, 4, std::vector<std::uint8_t>(32, 100)};
+    EXPECT_FALSE(compare(a, c, {255, 1.0}).matches({255, 1.0}));  // sizes differ
+}
+
+TEST(Comparator, WritesExpectedActualAndDiff) {
+    render::Image a{4, 4, std::vector<std::uint8_t>(64, 100)}, b = a;
+    b.at(0, 0)[2] = 0;
+    const Diff d = compare(a, b, {});
+    const std::string base = write_failure(std::string(MOBB_TEST_OUT) + "/comparator", "sample", a, b, d);
+    for (const char* ext : {".expected.png", ".actual.png", ".diff.png"})
+        EXPECT_TRUE(std::filesystem::exists(base + ext)) << base + ext;
+}
+
+}  // namespace
+}  // namespace mobb::test
