@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "cli.h"
+#include "crowd_quality.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/scenario.h"
 #include "report.h"
 
 namespace mobb::app {
@@ -197,6 +199,49 @@ void add_scale(CLI::App& bench, int& exit_code) {
     });
 }
 
+void add_crowd_quality(CLI::App& bench, int& exit_code) {
+    auto* cmd = bench.add_subcommand("crowd", "The avoiding crowd: wander at the paper's density and every scenario, "
+                                              "several seeds, with their metrics and the crowd's targets");
+    auto o = std::make_shared<bench::CrowdQualityOptions>();
+    auto outputs = std::make_shared<TableOutputs>();
+    auto quick = std::make_shared<bool>(false);
+    auto scenarios = std::make_shared<std::string>();
+    cmd->add_option("--graph", o->graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
+    cmd->add_option("--scenarios", *scenarios, "Folder of scenario files (default: assets/scenarios)");
+    cmd->add_option("--seeds", o->seeds, "Seeds of every run")->delimiter(',')->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads per run (the CD cost is measured on 1)")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
+    cmd->add_option("--baseline-us", o->baseline_us,
+                    "CD us per agent per simulated second before the escapes (10,000 agents, MOBB tree, 1 thread)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_flag("--quick", *quick, "Smoke run: 30 and 60 agents for 20 s, two scenarios, one seed");
+    outputs->add_to(*cmd);
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            bench::CrowdQualityOptions opt = *o;
+            if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
+            const std::string folder = scenarios->empty() ? crowd::default_scenario_folder() : *scenarios;
+            opt.scenarios = crowd::scenario_files(folder);
+            if (opt.scenarios.empty()) throw InputError(folder + ": no scenario files (*.json)");
+            if (*quick) {
+                opt.wander = {{30, 20, 20, 20}, {60, 24, 30, 20}};
+                opt.scenarios.resize(std::min<std::size_t>(2, opt.scenarios.size()));
+                opt.seeds = {opt.seeds.front()};
+            }
+            const bench::CrowdQualityTable t = bench::run_crowd_quality(opt, outputs->progress("crowd"));
+            if (!outputs->json.empty()) {
+                std::ofstream f(outputs->json);
+                f << bench::crowd_quality_json(t);
+                if (!f) throw InputError(outputs->json + ": cannot write");
+            }
+            if (!outputs->png.empty()) bench::write_crowd_quality_png(t, outputs->png);
+            out << bench::crowd_quality_markdown(t);
+        });
+    });
+}
+
 void add_bench(CLI::App& app, int& exit_code) {
     auto* bench = app.add_subcommand("bench", "The paper's experiments (section 5), every row measured in one run");
     bench->require_subcommand(1);
@@ -205,6 +250,7 @@ void add_bench(CLI::App& app, int& exit_code) {
     add_synth(*bench, exit_code, 42, 20000);
     add_synth(*bench, exit_code, 120, 10000);
     add_scale(*bench, exit_code);
+    add_crowd_quality(*bench, exit_code);
 }
 
 }  // namespace

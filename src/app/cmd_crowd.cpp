@@ -7,7 +7,9 @@
 
 #include "cli.h"
 #include "mobb/crowd/crowd.h"
+#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/scenario.h"
 #include "mobb/util/worker_pool.h"
 
 namespace mobb::app {
@@ -72,6 +74,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
     auto world = std::make_shared<std::string>("30x40");
     auto select = std::make_shared<std::string>("avoid");
     auto record = std::make_shared<std::string>();
+    auto scenario = std::make_shared<std::string>();
     auto o = std::make_shared<crowd::CrowdOptions>();
     o->threads = util::WorkerPool::hardware_threads();
     auto tree = std::make_shared<TreeArgs>();
@@ -81,8 +84,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
     cmd->add_option("--world", *world, "World rectangle WxH (metres)")->capture_default_str();
     cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--select", *select, "Clip choice: avoid or random")
-        ->check(CLI::IsMember({"avoid", "random"}))
+    cmd->add_option("--select", *select, "Clip choice: avoid (wander), random (the paper's timing) or goal")
+        ->check(CLI::IsMember({"avoid", "random", "goal"}))
         ->capture_default_str();
     cmd->add_option("--cell", o->cell, "Broad-phase grid cell (metres)")
         ->check(CLI::PositiveNumber)
@@ -92,29 +95,51 @@ void add_crowd(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
     cmd->add_option("--record", *record, "Write the record (JSON) to this file");
+    cmd->add_option("--scenario", *scenario,
+                    "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
     cmd->callback([=, &exit_code] {
+        // A scenario brings its own world, agents, policy and time limit.
+        for (const char* own : {"--agents", "--world", "--select", "--seconds"})
+            if (!scenario->empty() && cmd->count(own)) {
+                std::cerr << "crowd: " << own << " does not go with --scenario (the scenario sets it)\n";
+                exit_code = kUsage;
+                return;
+            }
         exit_code = guarded([&](std::ostream& out) {
             crowd::CrowdOptions opt = *o;
-            parse_world(*world, opt.width, opt.height);
+            parse_world(*world, opt.world.x1, opt.world.y1);
             opt.select = crowd::parse_selection(*select);
+            crowd::Scenario s;
+            if (!scenario->empty()) {
+                s = crowd::load_scenario(*scenario);
+                opt = crowd::scenario_options(s);
+                opt.seed = o->seed;
+                opt.threads = o->threads;
+                opt.cell = o->cell;
+            }
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);
-            const std::vector<Tree> trees = crowd::build_trees(g, tree->options());
+            // The fastest exact query unless a tree is asked for (its counters then fill the summary).
+            const bool trees = cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit");
+            const crowd::NarrowPhase narrow =
+                trees ? crowd::NarrowPhase::trees(g, tree->options()) : crowd::NarrowPhase::sweep(g);
             crowd::CrowdRun run =
-                crowd::run_crowd(g, trees, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
+                crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
             run.record.graph = file;
-            run.record.tree = tree->type;
+            run.record.scenario = s.name;
+            const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);
             if (!record->empty()) {
                 std::ofstream f(*record);
-                f << crowd::record_to_text(run.record, crowd::summary_json(run.summary));
+                f << crowd::record_to_text(run.record, crowd::summary_json(run.summary), crowd::metrics_json(metrics));
                 if (!f) throw InputError(*record + ": cannot write");
             }
-            out << opt.agents << " agents, " << opt.width << " x " << opt.height << " m, " << opt.seconds << " s, seed "
-                << opt.seed << ", " << *select << ", tree " << tree->type << ", " << opt.threads << " threads, graph "
-                << file << " (" << g.clips.size() << " clips)\n"
-                << crowd::summary_text(run.summary);
+            if (!s.name.empty()) out << "scenario " << s.name << ": ";
+            out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, " << opt.seconds
+                << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase " << narrow.name()
+                << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size() << " clips)\n"
+                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics);
         });
     });
 }

@@ -87,7 +87,7 @@ void add_render(CLI::App& app, int& exit_code) {
         std::string scene, out, crowd;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1;
-        bool ui = false, bench = false;
+        bool ui = false, bench = false, top = false;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
@@ -102,6 +102,7 @@ void add_render(CLI::App& app, int& exit_code) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--query", a->query, "With --candidate: which of its queries, in the order run (default 0)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--top", a->top, "With --crowd: seen from above (the crowd panel's \"from above\")");
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")
         ->check(CLI::Range(16, 8192));
@@ -122,8 +123,8 @@ void add_render(CLI::App& app, int& exit_code) {
             exit_code = kUsage;
             return;
         }
-        if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0)) {
-            std::cerr << "render: --time, --choice, --candidate and --query go with --crowd\n";
+        if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0 || a->top)) {
+            std::cerr << "render: --time, --top, --choice, --candidate and --query go with --crowd\n";
             exit_code = kUsage;
             return;
         }
@@ -133,6 +134,10 @@ void add_render(CLI::App& app, int& exit_code) {
                 State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
                 open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
                 apply_step(s, a->step);
+                if (a->top) {
+                    s.camera.top();
+                    viewer::frame_all(s, aspect(w, h));
+                }
                 if (a->bench) {
                     out << "bench: crowd, " << std::fixed << std::setprecision(2)
                         << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";

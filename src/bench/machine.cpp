@@ -4,8 +4,6 @@
 
 namespace mobb::bench {
 
-namespace {
-
 std::string cpu_name() {
     std::ifstream in("/proc/cpuinfo");
     std::string line;
@@ -13,8 +11,6 @@ std::string cpu_name() {
         if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
     return "unknown";
 }
-
-}  // namespace
 
 void add_machine_notes(std::map<std::string, std::string>& notes) {
     notes["cpu"] = cpu_name();

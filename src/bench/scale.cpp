@@ -48,7 +48,8 @@ void hash_choice(Fnv& f, const ChoicePoint& cp) {
         f.add(std::uint64_t(c.outside));
         f.add(std::uint64_t(c.hits));
         for (const CandidateQuery& q : c.against)
-            f.add((std::uint64_t(q.agent) << 33) ^ (std::uint64_t(q.index) << 1) ^ q.hit);
+            f.add((std::uint64_t(std::uint32_t(q.agent)) << 40) ^ (std::uint64_t(std::uint32_t(q.commit)) << 8) ^
+                  (std::uint64_t(q.piece + 1) << 1) ^ std::uint64_t(q.hit));
     }
 }
 
@@ -63,18 +64,18 @@ void world_for(int agents, double area_per_agent, double& width, double& height)
 CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
     CrowdOptions co;
     co.agents = agents;
-    world_for(agents, o.area_per_agent, co.width, co.height);
+    world_for(agents, o.area_per_agent, co.world.x1, co.world.y1);
     co.seconds = o.seconds;
     co.seed = o.seed;
     co.select = Selection::Avoid;
     return co;
 }
 
-CrowdRun run_one(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents, int threads,
+CrowdRun run_one(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
                  const std::function<void(double)>& progress) {
     CrowdOptions co = crowd_options(o, agents);
     co.threads = threads;
-    return run_crowd(g, trees, co, progress);
+    return run_crowd(g, narrow, co, progress);
 }
 
 // Wall times of the runs of one size: [0] 1 thread, [1] `threads`; medians over the repeats.
@@ -83,10 +84,10 @@ struct Times {
 };
 
 // One run; returns its summary and record digest, and adds its times.
-CrowdSummary timed_run(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents,
+CrowdSummary timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents,
                        int threads, Times& times, int slot, std::string& digest,
                        const std::function<void(double)>& progress) {
-    const CrowdRun run = run_one(g, trees, o, agents, threads, progress);
+    const CrowdRun run = run_one(g, narrow, o, agents, threads, progress);
     times.sim[slot].push_back(run.summary.seconds);
     times.cd[slot].push_back(run.summary.cd_seconds);
     digest = record_digest(run.record);
@@ -95,7 +96,7 @@ CrowdSummary timed_run(const MotionGraph& g, const std::vector<Tree>& trees, con
 
 // One crowd size: `repeats` pairs of runs (1 thread, then `threads`), interleaved; records compared by
 // digest and counters; times are medians.
-ScaleRow scale_row(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents, int threads,
+ScaleRow scale_row(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
                    const std::function<void(double)>& progress) {
     ScaleRow r;
     r.agents = agents;
@@ -112,8 +113,8 @@ ScaleRow scale_row(const MotionGraph& g, const std::vector<Tree>& trees, const S
                 if (progress) progress((2.0 * k + slot + f) / (2.0 * repeats));
             };
         };
-        s1 = timed_run(g, trees, o, agents, 1, times, 0, d1, part(0));
-        sn = timed_run(g, trees, o, agents, threads, times, 1, dn, part(1));
+        s1 = timed_run(g, narrow, o, agents, 1, times, 0, d1, part(0));
+        sn = timed_run(g, narrow, o, agents, threads, times, 1, dn, part(1));
         if (k == 0) {
             r.digest_1 = d1;
             r.digest_n = dn;
@@ -175,10 +176,10 @@ void add_scale_targets(ScaleTable& t) {
 }
 
 // The untimed logged run of one size: a sample of its queries for bench/callgrind_workload.sh.
-void save_scale_queries(const MotionGraph& g, const std::vector<Tree>& trees, const ScaleOptions& o, int agents) {
+void save_scale_queries(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents) {
     CrowdOptions co = crowd_options(o, agents);
     co.log_queries = true;
-    const CrowdRun run = run_crowd(g, trees, co);
+    const CrowdRun run = run_crowd(g, narrow, co);
     const std::size_t n = run.queries.size(), keep = std::min<std::size_t>(n, 5000);
     std::vector<LoggedQuery> sample;
     for (std::size_t k = 0; k < keep; ++k) sample.push_back(run.queries[k * n / keep]);
@@ -208,17 +209,17 @@ std::string record_digest(const Record& r) {
 ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& progress) {
     if (o.agents.empty()) throw std::invalid_argument("scale: no crowd sizes");
     const MotionGraph g = load_graph(o.graph);
-    const std::vector<Tree> trees = build_trees(g, {});
+    const NarrowPhase narrow = NarrowPhase::sweep(g);
     const int threads = o.threads > 0 ? o.threads : util::WorkerPool::hardware_threads();
     double total = 0, done = 0;
     for (int n : o.agents) total += double(n);
     ScaleTable t;
     for (int n : o.agents) {
-        t.rows.push_back(scale_row(g, trees, o, n, threads, [&](double f) {
+        t.rows.push_back(scale_row(g, narrow, o, n, threads, [&](double f) {
             if (progress) progress((done + f * n) / total);
         }));
         done += double(n);
-        if (!o.save_queries.empty()) save_scale_queries(g, trees, o, n);
+        if (!o.save_queries.empty()) save_scale_queries(g, narrow, o, n);
     }
     for (ScaleRow& r : t.rows)
         r.ratio_to_first = t.rows.front().cd_us_per_agent_second > 0

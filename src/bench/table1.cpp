@@ -18,8 +18,8 @@ using util::fixed;
 crowd::CrowdOptions crowd_options(const Table1Options& o) {
     crowd::CrowdOptions co;
     co.agents = o.agents;
-    co.width = o.width;
-    co.height = o.height;
+    co.world.x1 = o.width;
+    co.world.y1 = o.height;
     co.seconds = o.seconds;
     co.seed = o.seed;
     co.select = crowd::Selection::Random;
@@ -105,8 +105,9 @@ void add_notes(BenchTable& t, const Table1Options& o, const crowd::MotionGraph& 
 
 BenchTable run_table1(const Table1Options& o, const std::function<void(double)>& progress) {
     const crowd::MotionGraph g = crowd::load_graph(o.graph);
-    const std::vector<Tree> trees = crowd::build_trees(g, {TreeType::Mobb, o.n_min});
-    const crowd::CrowdRun run = crowd::run_crowd(g, trees, crowd_options(o), progress_stage(progress, 0.0, 0.1));
+    const crowd::NarrowPhase narrow = crowd::NarrowPhase::trees(g, {TreeType::Mobb, o.n_min});
+    const std::vector<Tree>& trees = narrow.tree_list();
+    const crowd::CrowdRun run = crowd::run_crowd(g, narrow, crowd_options(o), progress_stage(progress, 0.0, 0.1));
     const QuerySet set = crowd_query_set(g, run.queries);
     if (!o.save_queries.empty()) save_query_set(set, o.save_queries);
 

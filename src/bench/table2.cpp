@@ -27,8 +27,9 @@ double crowd_root_share(const Table2Options& o, std::string& source) {
     co.seed = o.seed;
     co.select = crowd::Selection::Random;
     co.log_queries = true;
-    const std::vector<Tree> trees = crowd::build_trees(g, {});
-    const QuerySet set = crowd_query_set(g, crowd::run_crowd(g, trees, co).queries);
+    const crowd::NarrowPhase narrow = crowd::NarrowPhase::trees(g, {});
+    const QuerySet set = crowd_query_set(g, crowd::run_crowd(g, narrow, co).queries);
+    const std::vector<Tree>& trees = narrow.tree_list();
     source = "measured on a crowd run (" + std::to_string(co.agents) + " agents, 30 x 40 m, " + fixed(co.seconds, 0) +
              " s, random selection, " + std::to_string(set.queries.size()) + " queries)";
     return root_share(trees, set.queries);
@@ -108,7 +109,7 @@ QuerySet named_query_set(const std::string& name, const std::string& graph) {
         crowd::CrowdOptions co;
         co.select = crowd::Selection::Random;
         co.log_queries = true;
-        return crowd_query_set(g, crowd::run_crowd(g, crowd::build_trees(g, {}), co).queries);
+        return crowd_query_set(g, crowd::run_crowd(g, crowd::NarrowPhase::sweep(g), co).queries);
     }
     Table2Options o;
     o.graph = graph;

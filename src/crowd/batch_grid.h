@@ -1,5 +1,5 @@
-// The clips chosen by the choice points of one frame, so each choice point can tell whether a clip
-// chosen before it in the same frame (lower agent id) may change its evaluation (paper section 5's
+// The boxes chosen by the choice points of one frame, so each choice point can tell whether a plan
+// committed before it in the same frame (lower agent id) may change its evaluation (paper section 5's
 // choice points, run in parallel: see Simulation in crowd.cpp).
 #pragma once
 #include <cstddef>
@@ -10,13 +10,14 @@
 
 namespace mobb::crowd {
 
-/// A flat grid over the world [0, W] x [0, H]; boxes beyond it land in the border cells (clamping
+/// A flat grid over the world [x0, x1] x [y0, y1]; boxes beyond it land in the border cells (clamping
 /// keeps every overlap findable), so no hashing. Filled sequentially, then read by any number of threads.
 class BatchGrid {
 public:
-    BatchGrid(double cell, double width, double height);
+    BatchGrid(double cell, double x0, double y0, double x1, double y1);
 
-    /// Adds the box of the batch's choice point `index`; indices are added in increasing order.
+    /// Adds a box of the batch's choice point `index` (any number per index); indices are added in
+    /// increasing order.
     void add(int index, const SpaceTimeBox& box);
     /// Whether a box added with an index below `below` overlaps `box`.
     bool any_before(const SpaceTimeBox& box, int below) const;
@@ -24,13 +25,17 @@ public:
     void clear();
 
 private:
-    int column(double v, int n) const;
+    struct Entry {
+        int index;
+        SpaceTimeBox box;
+    };
+    int column(double v, double origin, int n) const;
 
-    double cell_ = 1;
+    double cell_ = 1, x0_ = 0, y0_ = 0;
     int nx_ = 1, ny_ = 1;
-    std::vector<std::vector<int>> cells_;
-    std::vector<std::size_t> used_;    // cells holding something
-    std::vector<SpaceTimeBox> boxes_;  // by index
+    std::vector<std::vector<int>> cells_;  // entries, in order of addition
+    std::vector<std::size_t> used_;        // cells holding something
+    std::vector<Entry> entries_;
 };
 
 }  // namespace mobb::crowd

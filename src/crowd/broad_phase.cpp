@@ -12,16 +12,20 @@ BroadPhase::BroadPhase(double cell) : cell_(cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
 
-BroadPhase::BroadPhase(double cell, double width, double height) : BroadPhase(cell) {
-    if (!(width >= 0) || !(height >= 0)) throw std::invalid_argument("broad phase: negative world size");
+BroadPhase::BroadPhase(double cell, double width, double height) : BroadPhase(cell, 0, 0, width, height) {}
+
+BroadPhase::BroadPhase(double cell, double x0, double y0, double x1, double y1) : BroadPhase(cell) {
+    if (!(x1 >= x0) || !(y1 >= y0)) throw std::invalid_argument("broad phase: negative world size");
+    x0_ = x0, y0_ = y0;
     // A huge world would make a huge array: then every cell is hashed.
-    if ((width / cell + 1) * (height / cell + 1) > double(kMaxFlatCells)) return;
-    nx_ = index(width) + 1;
-    ny_ = index(height) + 1;
+    if (((x1 - x0) / cell + 1) * ((y1 - y0) / cell + 1) > double(kMaxFlatCells)) return;
+    nx_ = index_x(x1) + 1;
+    ny_ = index_y(y1) + 1;
     flat_.resize(std::size_t(nx_ * ny_));
 }
 
-std::int64_t BroadPhase::index(double x) const { return std::int64_t(std::floor(x / cell_)); }
+std::int64_t BroadPhase::index_x(double x) const { return std::int64_t(std::floor((x - x0_) / cell_)); }
+std::int64_t BroadPhase::index_y(double y) const { return std::int64_t(std::floor((y - y0_) / cell_)); }
 
 BroadPhase::Cell& BroadPhase::cell(std::int64_t ix, std::int64_t iy) {
     if (flat(ix, iy)) return flat_[std::size_t(ix * ny_ + iy)];
@@ -36,7 +40,7 @@ const BroadPhase::Cell* BroadPhase::find(std::int64_t ix, std::int64_t iy) const
 
 template <class F>
 void BroadPhase::cells(const SpaceTimeBox& box, F&& f) const {
-    const std::int64_t ix0 = index(box.x0), ix1 = index(box.x1), iy0 = index(box.y0), iy1 = index(box.y1);
+    const std::int64_t ix0 = index_x(box.x0), ix1 = index_x(box.x1), iy0 = index_y(box.y0), iy1 = index_y(box.y1);
     for (std::int64_t ix = ix0; ix <= ix1; ++ix)
         for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(ix, iy);
 }
@@ -83,9 +87,9 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
         for (std::size_t k = 0; k < items.size(); ++k) {
             const Insertion& it = items[k];
             if (!kept[k]) continue;
-            const std::int64_t ix0 = std::max(lo, index(it.box.x0)), ix1 = std::min(hi - 1, index(it.box.x1));
-            const std::int64_t iy0 = std::max<std::int64_t>(0, index(it.box.y0)),
-                               iy1 = std::min(ny_ - 1, index(it.box.y1));
+            const std::int64_t ix0 = std::max(lo, index_x(it.box.x0)), ix1 = std::min(hi - 1, index_x(it.box.x1));
+            const std::int64_t iy0 = std::max<std::int64_t>(0, index_y(it.box.y0)),
+                               iy1 = std::min(ny_ - 1, index_y(it.box.y1));
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
                 for (std::int64_t iy = iy0; iy <= iy1; ++iy)
                     put(flat_[std::size_t(ix * ny_ + iy)], {it.box, it.id, it.owner});
@@ -125,7 +129,7 @@ void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out
             if (e.owner == owner || e.box.f1 <= expired_ || !e.box.overlaps(box)) continue;
             // An item spans several cells: report it only from the cell holding the lower corner of
             // the two boxes' intersection, which both cover. No visited marks, so the query is const.
-            if (index(std::max(e.box.x0, box.x0)) != ix || index(std::max(e.box.y0, box.y0)) != iy) continue;
+            if (index_x(std::max(e.box.x0, box.x0)) != ix || index_y(std::max(e.box.y0, box.y0)) != iy) continue;
             out.push_back(e.id);
         }
     });

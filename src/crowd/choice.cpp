@@ -1,6 +1,8 @@
 #include "choice.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "mobb/util/random.h"
@@ -9,9 +11,31 @@ namespace mobb::crowd {
 
 namespace {
 
+constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
+
 // How far a point is outside the world rectangle (0 inside), metres.
-double excursion(double x, double y, const CrowdOptions& o) {
-    return std::max({0.0, -x, x - o.width, -y, y - o.height});
+double excursion(double x, double y, const World& w) { return std::max({0.0, w.x0 - x, x - w.x1, w.y0 - y, y - w.y1}); }
+
+SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x + h.r, h.y + h.r, h.frame, kForever}; }
+
+// A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
+// f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap.
+bool clip_meets_hold(const MotionGraph& g, const PlannedClip& c, const Hold& h, QueryStats* stats) {
+    const Path& path = g.clips[std::size_t(c.clip)].path;
+    const Rigid2 m = Rigid2::of(c.place);
+    const Rigid2 still{1, 0, 0, 0};
+    const Sample disk{h.x, h.y, h.r};
+    const std::int64_t first = std::max<std::int64_t>(0, h.frame - c.frame);
+    for (std::int64_t i = first; i < std::int64_t(path.size()); ++i) {
+        if (stats) ++stats->samples;
+        if (samples_overlap(m, path.samples[std::size_t(i)], still, disk)) return true;
+    }
+    return false;
+}
+
+bool holds_meet(const Hold& a, const Hold& b) {
+    const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+    return dx * dx + dy * dy < r * r;
 }
 
 }  // namespace
@@ -54,19 +78,18 @@ std::vector<ClipOutline> outlines_of(const MotionGraph& g) {
 
 // A candidate "leaves the world" when its root goes farther outside the rectangle than where it
 // starts, so an agent pushed out by a fallback may walk back in.
-Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, std::int64_t frame,
-                  const CrowdOptions& o) {
+Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
+                  std::int64_t frame, const World* world) {
     Placed out{clip, p, {}, false, 0.0};
-    const Rigid2 m = Rigid2::of(p);
     out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + frames};
-    const double start = excursion(p.x, p.y, o);
+    const double start = world ? excursion(p.x, p.y, *world) : 0.0;
     for (const auto& v : outline.hull) {
         const double x = m.apply_x(v[0], v[1]), y = m.apply_y(v[0], v[1]);
         out.box.x0 = std::min(out.box.x0, x);
         out.box.y0 = std::min(out.box.y0, y);
         out.box.x1 = std::max(out.box.x1, x);
         out.box.y1 = std::max(out.box.y1, y);
-        out.excess = std::max(out.excess, excursion(x, y, o) - start);
+        if (world) out.excess = std::max(out.excess, excursion(x, y, *world) - start);
     }
     out.box.x0 -= outline.r_max;
     out.box.y0 -= outline.r_max;
@@ -76,13 +99,28 @@ Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, con
     return out;
 }
 
+bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats) {
+    if (other.kind == Piece::Solid) {
+        const Polygon& solid = s.solids[std::size_t(other.commit)];
+        // Held ground keeps room to turn on the spot from the walls, so a stop is never a trap.
+        if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.escapes.wall_clearance);
+        const PlannedClip& c = mine.clip;
+        return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.place, solid);
+    }
+    if (mine.kind == Piece::Clip && other.kind == Piece::Clip)
+        return s.narrow(mine.clip.clip, mine.clip.place, other.clip.clip, other.clip.place, stats);
+    if (mine.kind == Piece::Clip) return clip_meets_hold(s.graph, mine.clip, other.hold, stats);
+    if (other.kind == Piece::Clip) return clip_meets_hold(s.graph, other.clip, mine.hold, stats);
+    return holds_meet(mine.hold, other.hold);
+}
+
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
     agent_ = agent;
     frame_ = frame;
     util::Random rng = util::Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
     const Agent& a = s.agents[std::size_t(agent)];
     const MotionGraph& g = s.graph;
-    std::vector<int>& order = order_;
+    std::vector<int>& order = drawn_;
     base_ = a.start;
     if (a.clips.empty()) {
         order = g.clips[std::size_t(rng.below(int(g.clips.size())))].successors;
@@ -95,120 +133,275 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
     base_.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
     for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng.below(int(k)))]);
     random_pick_ = rng.below(int(order.size()));
+    order_.clear();
     placed_.clear();
-    near_.resize(order.size());
-    asked_.resize(order.size());
-    for (auto& v : asked_) v.clear();
-    queried_ = 0;
+}
+
+// The policy's order of the drawn candidates, from the state as it is now (the neighbours may have
+// moved since a first evaluation); placements are kept only while the order is unchanged.
+void Choice::order(const CrowdState& s) {
+    const Agent& a = s.agents[std::size_t(agent_)];
+    ChoiceSite site{agent_, base_, a.goal, a.waited, false, {}};
+    site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
+    arriving_ = site.arrived;
+    if (const double reach = s.policy.neighbourhood(); reach > 0) {
+        const SpaceTimeBox around{base_.x - reach, base_.y - reach, base_.x + reach, base_.y + reach, frame_,
+                                  frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
+        queried_boxes_.push_back(around);
+        s.broad.query(around, agent_, near_);
+        for (int id : near_) {
+            const Piece& p = s.pieces[std::size_t(id)];
+            if (p.kind == Piece::Held) site.neighbours.push_back({p.hold.x, p.hold.y});
+            if (p.kind == Piece::Clip)
+                site.neighbours.push_back({0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
+        }
+    }
+    std::vector<int> next = drawn_;
+    s.policy.order(site, next);
+    if (next != order_) placed_.clear();
+    order_ = std::move(next);
 }
 
 const Placed& Choice::place(const CrowdState& s, int k) {
+    const Rigid2 m = Rigid2::of(base_);  // every candidate starts there
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
+        // The random mode ranks candidates leaving the world; the others meet the walls instead.
+        const World* world = s.policy.kind() == Selection::Random ? &s.options.world : nullptr;
         placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
-                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, frame_,
-                                     s.options));
+                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, m, frame_,
+                                     world));
     }
     return placed_[std::size_t(k)];
 }
 
-const Answer& Choice::ask(const CrowdState& s, int k, std::size_t pos, int id) {
-    std::vector<Answer>& asked = asked_[std::size_t(k)];
-    if (pos < asked.size() && asked[pos].id == id) return asked[pos];
-    const Committed& other = s.committed[std::size_t(id)];
-    const Placed& c = placed_[std::size_t(k)];
-    Answer a{id, false, {}};
-    a.hit = collide(s.trees[std::size_t(c.clip)], c.place, s.trees[std::size_t(other.clip)], other.place, &a.stats);
-    // Lists only grow at their end, so the answer belongs at `pos` (anything else is not kept).
-    asked.resize(std::min(asked.size(), pos));
-    asked.push_back(a);
-    return asked.back();
+PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame) {
+    const std::int64_t frames = std::int64_t(s.graph.clips[std::size_t(clip)].path.size());
+    return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box};
 }
 
-int Choice::count_hits(const CrowdState& s, int k, bool stop_at_hit) {
+// The queries of one piece of candidate k's plan against everything else live in the broad phase.
+bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
     Candidate& cand = point_.candidates[std::size_t(k)];
-    cand.queries = 0;  // a fallback reruns a candidate's queries in full: keep only the full list
-    cand.against.clear();
-    int hits = 0;
-    const std::vector<int>& near = near_[std::size_t(k)];
-    for (std::size_t pos = 0; pos < near.size(); ++pos) {
-        const Answer& a = ask(s, k, pos, near[pos]);
-        const Committed& other = s.committed[std::size_t(a.id)];
+    const Hold& h = mine.hold;
+    // Held ground's box reaches the solids it keeps clear of.
+    const SpaceTimeBox box = mine.kind == Piece::Held
+                                 ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
+                                 : mine.clip.box;
+    queried_boxes_.push_back(box);
+    s.broad.query(box, agent_, near_);
+    near_total_ += near_.size();
+    bool free = true;
+    for (int id : near_) {
+        const Piece& other = s.pieces[std::size_t(id)];
+        QueryStats st;
+        const bool hit = pieces_collide(s, mine, other, &st);
         ++cand.queries;
-        cand.against.push_back({other.agent, other.index, a.hit});
         ++point_.queries;
-        point_.tests2d += a.stats.tests2d;
-        point_.tests3d += a.stats.tests3d;
-        point_.samples += a.stats.samples;
-        if (!a.hit && a.stats.tests2d + a.stats.tests3d <= 1 && a.stats.samples == 0) ++root_rejected_;
-        if (s.options.log_queries) log_.emplace_back(k, a);
-        if (a.hit) {
-            ++hits;
-            if (stop_at_hit) break;
-        }
+        point_.tests2d += st.tests2d;
+        point_.tests3d += st.tests3d;
+        point_.samples += st.samples;
+        if (!hit && st.tests2d + st.tests3d <= 1 && st.samples == 0) ++root_rejected_;
+        cand.against.push_back({other.agent, other.commit, other.index, mine.index, hit});
+        if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
+            log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
+        if (!hit) continue;
+        ++cand.hits;
+        if (other.kind == Piece::Solid) cand.outside = true;
+        free = false;
+        if (stop_at_hit) return false;
     }
-    cand.hits = hits;
-    return hits;
+    return free;
 }
 
-// Every candidate failed: the fewest collisions, then the least far out.
-int Choice::fallback_pick() const {
-    int taken = 0;
-    for (std::size_t k = 1; k < placed_.size(); ++k) {
-        const Candidate &x = point_.candidates[k], &y = point_.candidates[std::size_t(taken)];
-        if (std::make_pair(x.hits, placed_[k].excess) < std::make_pair(y.hits, placed_[std::size_t(taken)].excess))
-            taken = int(k);
+// The plan of clip `c` along an escape route: its stopping clips chained after it on the frame grid, and
+// the held ground where the route's clip in place starts.
+Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route) {
+    const MotionGraph& g = s.graph;
+    Plan plan;
+    plan.escape.reserve(route.size() - 1);
+    int prev = c.clip;
+    Placement p = c.place;
+    Rigid2 m = Rigid2::of(p);
+    std::int64_t f = c.frame + std::int64_t(g.clips[std::size_t(prev)].path.size());
+    for (std::size_t i = 0; i < route.size(); ++i) {
+        p = g.next(p, m, prev);
+        p.t0 = double(f) * g.dt();
+        if (i + 1 == route.size()) break;  // the idle clip: the held ground starts with it
+        m = Rigid2::of(p);
+        plan.escape.push_back(frame_clip(s, route[i], p, m, f));
+        prev = route[i];
+        f += std::int64_t(g.clips[std::size_t(prev)].path.size());
     }
-    return taken;
+    plan.hold = Hold{p.x, p.y, s.escapes.hold_of(route.back()), f};
+    return plan;
+}
+
+// Whether every piece of candidate k's plan is free of the others (its clip was tested already).
+bool Choice::plan_free(const CrowdState& s, int k, const Plan& plan) {
+    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
+        Piece piece;
+        piece.index = int(i) + 1;
+        piece.clip = plan.escape[i];
+        if (!free_of_others(s, k, piece, true)) return false;
+    }
+    Piece held;
+    held.kind = Piece::Held;
+    held.index = -1;
+    held.hold = *plan.hold;
+    return free_of_others(s, k, held, true);
+}
+
+void Choice::take(int k, Outcome how) {
+    const Placed& c = placed_[std::size_t(k)];
+    taken_ = {c.clip, c.place, frame_, c.box};
+    outcome_ = how;
+    point_.taken = c.clip;
+}
+
+// The agent's own escape: its next stopping clip, else one more clip in place on its held ground.
+bool Choice::take_escape(const CrowdState& s) {
+    const Agent& a = s.agents[std::size_t(agent_)];
+    if (!a.plan.escape.empty()) {
+        taken_ = a.plan.escape.front();
+        plan_.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
+        plan_.hold = a.plan.hold;
+        outcome_ = Outcome::Escape;
+        point_.taken = taken_.clip;
+        return true;
+    }
+    return hold_on(s);
+}
+
+// Whether every disk of clip `c` placed at `base` lies inside the held disk h.
+bool inside_hold(const CrowdState& s, int c, const Placement& base, const Hold& h) {
+    if (base.x == h.x && base.y == h.y) return s.escapes.hold_of(c) <= h.r;  // idle clips start on the anchor
+    const Rigid2 m = Rigid2::of(base);
+    for (const Sample& x : s.graph.clips[std::size_t(c)].path.samples) {
+        const double dx = m.apply_x(x.x, x.y) - h.x, dy = m.apply_y(x.x, x.y) - h.y, room = h.r - x.r;
+        if (room < 0 || dx * dx + dy * dy > room * room) return false;
+    }
+    return true;
+}
+
+// One more idle clip on the held ground, all of its disks inside it (so free: the others planned around
+// it). Idle clips loop exactly in place, so the next one fits too.
+bool Choice::hold_on(const CrowdState& s) {
+    const Agent& a = s.agents[std::size_t(agent_)];
+    if (!a.plan.hold) return false;
+    const Hold& h = *a.plan.hold;
+    const MotionGraph& g = s.graph;
+    const auto idle = [&](int c) { return s.escapes.kind[std::size_t(c)] == ClipKind::Idle; };
+    std::vector<int> options;
+    if (a.clips.empty()) {
+        for (int c = 0; c < int(g.clips.size()); ++c)
+            if (idle(c)) options.push_back(c);
+    } else {
+        for (int c : g.clips[std::size_t(a.clips.back().clip)].successors)
+            if (idle(c)) options.push_back(c);
+    }
+    std::sort(options.begin(), options.end());
+    for (int c : options) {
+        if (!inside_hold(s, c, base_, h)) continue;
+        taken_ = frame_clip(s, c, base_, Rigid2::of(base_), frame_);
+        plan_ = Plan{{}, h};
+        outcome_ = Outcome::Escape;
+        point_.taken = c;
+        return true;
+    }
+    return false;
+}
+
+// Nothing is free and the agent's escape cannot go on: the candidate that stays clear of walls and
+// obstacles with the fewest collisions (its queries run in full), its first route reserved unchecked.
+void Choice::fall_back(const CrowdState& s) {
+    point_.fallback = true;
+    int best = -1;
+    std::pair<int, int> best_key{1 << 30, 1 << 30};
+    for (int k = 0; k < int(order_.size()); ++k) {
+        const Placed& c = place(s, k);
+        if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
+        point_.candidates[std::size_t(k)] = {c.clip, false, 0, 0, {}};
+        Piece mine;
+        mine.clip = {c.clip, c.place, frame_, c.box};
+        free_of_others(s, k, mine, false);
+        const Candidate& cand = point_.candidates[std::size_t(k)];
+        const std::pair<int, int> key{cand.outside ? 1 : 0, cand.hits};
+        if (key < best_key) best = k, best_key = key;
+    }
+    take(best, Outcome::Fallback);
+    const auto& routes = s.escapes.routes[std::size_t(taken_.clip)];
+    plan_ = routes.empty() ? Plan{} : plan_along(s, taken_, routes.front());
+}
+
+// The paper's timing mode: every candidate's queries in full, then the random pick, nothing reserved.
+void Choice::evaluate_random(const CrowdState& s) {
+    for (int k = 0; k < int(order_.size()); ++k) {
+        const Placed& c = place(s, k);
+        point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
+        Piece mine;
+        mine.clip = {c.clip, c.place, frame_, c.box};
+        free_of_others(s, k, mine, false);
+        point_.candidates.back().outside = c.outside;  // the random mode's meaning: leaves the world
+    }
+    take(random_pick_, Outcome::Candidate);
+    plan_ = Plan{};
 }
 
 void Choice::evaluate(const CrowdState& s) {
     point_ = ChoicePoint{};
     point_.agent = agent_;
     point_.frame = frame_;
-    point_.candidates.reserve(order_.size());
-    queried_ = 0;
-    taken_ = -1;
+    queried_boxes_.clear();
+    near_total_ = 0;
     root_rejected_ = 0;
     log_.clear();
-    const bool random = s.options.select == Selection::Random;
+    outcome_ = Outcome::Candidate;
+    order(s);
+    point_.candidates.reserve(order_.size());
+    if (s.policy.kind() == Selection::Random) return evaluate_random(s);
+    const Agent& a = s.agents[std::size_t(agent_)];
+    if (frame_ < a.start_frame || a.arrived) {
+        if (!take_escape(s)) return fall_back(s);
+        if (a.arrived) outcome_ = Outcome::Arrived;
+        return;
+    }
     for (int k = 0; k < int(order_.size()); ++k) {
         const Placed& c = place(s, k);
-        point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
-        s.broad.query(c.box, agent_, near_[std::size_t(k)]);
-        queried_ = k + 1;
-        if (!random && c.outside) continue;  // dropped without queries
-        if (count_hits(s, k, !random) == 0 && !random) {
-            taken_ = k;
-            break;
+        point_.candidates.push_back({c.clip, false, 0, 0, {}});
+        Piece mine;
+        mine.clip = {c.clip, c.place, frame_, c.box};
+        if (!free_of_others(s, k, mine, true)) continue;
+        for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
+            Plan plan = plan_along(s, mine.clip, route);
+            if (!plan_free(s, k, plan)) continue;
+            // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
+            const bool stops = arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan.escape.empty();
+            take(k, stops ? Outcome::Arrived : Outcome::Candidate);
+            plan_ = std::move(plan);
+            return;
         }
     }
-    if (random) {
-        taken_ = random_pick_;
-    } else if (taken_ < 0) {  // every candidate failed: count all collisions
-        point_.fallback = true;
-        for (int k = 0; k < int(placed_.size()); ++k) count_hits(s, k, false);
-        taken_ = fallback_pick();
-    }
-    point_.taken = placed_[std::size_t(taken_)].clip;
+    if (!take_escape(s)) fall_back(s);
+}
+
+std::vector<SpaceTimeBox> Choice::boxes() const {
+    std::vector<SpaceTimeBox> out = {taken_.box};
+    for (const PlannedClip& c : plan_.escape) out.push_back(c.box);
+    if (plan_.hold) out.push_back(hold_box(*plan_.hold));
+    return out;
 }
 
 bool Choice::affected_by(const BatchGrid& chosen, int below) const {
-    for (int k = 0; k < queried_; ++k)
-        if (chosen.any_before(placed_[std::size_t(k)].box, below)) return true;
+    for (const SpaceTimeBox& b : queried_boxes_)
+        if (chosen.any_before(b, below)) return true;
     return false;
 }
 
 bool Choice::affected_by(const SpaceTimeBox& box) const {
-    for (int k = 0; k < queried_; ++k)
-        if (placed_[std::size_t(k)].box.overlaps(box)) return true;
+    for (const SpaceTimeBox& b : queried_boxes_)
+        if (b.overlaps(box)) return true;
     return false;
-}
-
-std::uint64_t Choice::near_total() const {
-    std::uint64_t n = 0;
-    for (int k = 0; k < queried_; ++k) n += near_[std::size_t(k)].size();
-    return n;
 }
 
 }  // namespace mobb::crowd

@@ -1,27 +1,25 @@
 // One crowd choice point (paper section 5): its candidates, drawn from the choice point's own random
-// stream, placed in the world, and tested against the clips other agents have committed to.
-// Evaluations only read the committed state, so the choice points of one frame run in parallel.
+// stream and put in order by the policy, placed in the world, and tested against what the other agents
+// reserved. In the avoiding modes a candidate is taken only with a free escape (escape.h): its plan - the
+// clip, the clips that stop the agent, the ground it then holds - must be free; when no candidate's is,
+// the agent follows its own escape, which the others were planned around. Evaluations only read the
+// reserved state, so the choice points of one frame run in parallel.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "batch_grid.h"
+#include "escape.h"
 #include "mobb/core/query.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
+#include "mobb/crowd/narrow_phase.h"
+#include "mobb/crowd/policy.h"
 
 namespace mobb::crowd {
-
-/// A candidate clip placed in the world: its space-time box and whether it leaves the world.
-struct Placed {
-    int clip = 0;
-    Placement place;
-    SpaceTimeBox box;
-    bool outside = false;
-    double excess = 0;  ///< metres farther outside than at the start (ranks fallbacks)
-};
 
 /// A clip's root positions reduced to their convex hull (clip frame, metres, counter-clockwise) and its
 /// largest radius. A placed clip's world box and how far it leaves the world are maxima of convex
@@ -33,89 +31,156 @@ struct ClipOutline {
 ClipOutline outline_of(const Path& path);
 std::vector<ClipOutline> outlines_of(const MotionGraph& g);
 
-/// Places graph clip `clip` (outline `outline`) at `p` from global frame `frame` on. The box pads the
-/// hull by r_max, so it holds every sample disk.
-Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, std::int64_t frame,
-                  const CrowdOptions& o);
-
-/// One agent of the simulation: where it started and the clips it committed to, in time order.
-struct Agent {
-    Placement start;
-    std::vector<PlacedClip> clips;
+/// A candidate clip placed in the world: its space-time box and how far it leaves the world.
+struct Placed {
+    int clip = 0;
+    Placement place;
+    SpaceTimeBox box;
+    bool outside = false;
+    double excess = 0;  ///< metres farther outside than at the start (the random mode's "leaves the world")
 };
 
-/// A committed clip by broad-phase id: whose it is (agent, index in its clips) and where it plays,
-/// copied from the agent's clip so a query reads one compact entry.
-struct Committed {
-    int agent = 0, index = 0, clip = 0;
+/// Places graph clip `clip` (outline `outline`, `frames` long) at `p` (rotation m = Rigid2::of(p)) from
+/// global frame `frame` on. The box pads the hull by r_max, so it holds every sample disk. With a world,
+/// also how far the clip leaves its rectangle.
+Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
+                  std::int64_t frame, const World* world);
+
+/// Ground an agent holds from frame `frame` on, for as long as it stands there: a disk of radius r.
+struct Hold {
+    double x = 0, y = 0, r = 0;
+    std::int64_t frame = 0;
+};
+
+/// A graph clip at its place in the world, from global frame `frame` on, with its box (place_clip).
+struct PlannedClip {
+    int clip = 0;
     Placement place;
+    std::int64_t frame = 0;
+    SpaceTimeBox box;
+};
+
+/// What an agent reserves beyond the clip it plays: the clips that would stop it, then the held ground.
+struct Plan {
+    std::vector<PlannedClip> escape;
+    std::optional<Hold> hold;
+};
+
+/// One thing in the broad phase, by id: a clip an agent committed to or reserved, its held ground, or
+/// a solid (an obstacle or a wall).
+struct Piece {
+    enum Kind : std::uint8_t { Clip, Held, Solid } kind = Clip;
+    int agent = -1;       ///< owner (-1 for solids)
+    int commit = 0;       ///< the choice point (record order) whose plan holds it; the solid's index
+    int index = 0;        ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
+    PlannedClip clip;     ///< Clip
+    Hold hold;            ///< Held
+};
+
+/// One agent of the simulation.
+struct Agent {
+    Placement start;
+    std::int64_t start_frame = 0;             ///< stands at its start until then
+    std::optional<std::array<double, 2>> goal;
+    std::vector<PlacedClip> clips;            ///< committed, in time order
+    Plan plan;                                ///< reserved beyond its last clip
+    std::vector<int> reserved;                ///< broad-phase ids of the plan's pieces
+    bool arrived = false;                     ///< reached its goal: stays for good
+    int waited = 0;                           ///< choice points in a row it followed its escape
 };
 
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
 struct CrowdState {
     const MotionGraph& graph;
     const std::vector<ClipOutline>& outlines;  ///< one per graph clip
-    const std::vector<Tree>& trees;
+    const NarrowPhase& narrow;
+    const EscapeTable& escapes;
+    const Policy& policy;
     const CrowdOptions& options;
-    const BroadPhase& broad;  ///< committed clips still playing
+    const std::vector<Polygon>& solids;       ///< World::solids(), by solid index
+    const BroadPhase& broad;                  ///< pieces live now
     const std::vector<Agent>& agents;
-    const std::vector<Committed>& committed;  ///< by broad-phase id
+    const std::vector<Piece>& pieces;         ///< by broad-phase id
 };
 
-/// One narrow-phase query as run: the committed clip's broad-phase id and the answer.
-struct Answer {
-    int id = 0;
-    bool hit = false;
-    QueryStats stats;
+/// How a choice point ended.
+enum class Outcome : std::uint8_t {
+    Candidate,  ///< a candidate with a free plan (or, in random mode, the random pick)
+    Escape,     ///< none was free: the agent's own escape (its next stopping clip, or one more held clip)
+    Arrived,    ///< the agent is at its goal: it stands there (a free idle clip, then its held ground)
+    Fallback,   ///< nothing free and no escape left: the least bad candidate
 };
 
 // Aligned to a cache line: neighbouring choice points are evaluated by different threads.
 class alignas(64) Choice {
 public:
-    /// Draws the candidates of `agent` at `frame` from the stream (seed, agent, frame); they are placed
-    /// when first needed (in avoid mode most choices stop at an early candidate).
+    /// Draws the candidates of `agent` at `frame` from the stream (seed, agent, frame) and lets the
+    /// policy order them; they are placed when first needed.
     void prepare(const CrowdState& s, int agent, std::int64_t frame);
-    /// Runs the choice against the state as it is now; may be called again after commits. Answers of
-    /// earlier evaluations are reused: a candidate's broad-phase list only grows between evaluations
-    /// (new commits get larger ids), so its old queries are a prefix of its new ones.
+    /// Runs the choice against the state as it is now; may be called again after commits.
     void evaluate(const CrowdState& s);
-    /// Whether a clip chosen in the same frame by a choice point before this one (index < `below` in
-    /// `chosen`) could change the evaluation: it overlaps the box of a candidate the evaluation queried
-    /// the broad phase for, so it would have been queried. Read-only: choice points check in parallel.
+    /// Whether a plan committed in the same frame by a choice point before this one (index < `below`)
+    /// could change the evaluation: one of its boxes (new pieces, or released ones) overlaps a box this
+    /// evaluation queried. Read-only: choice points check in parallel.
     bool affected_by(const BatchGrid& chosen, int below) const;
     /// The same for one box.
     bool affected_by(const SpaceTimeBox& box) const;
 
     int agent() const { return agent_; }
+    Outcome outcome() const { return outcome_; }
+    /// The clip taken and what is reserved beyond it.
+    const PlannedClip& taken() const { return taken_; }
+    const Plan& plan() const { return plan_; }
+    /// The boxes of the taken clip and its plan (for the frame's check of later choice points).
+    std::vector<SpaceTimeBox> boxes() const;
     const Placed& candidate(int k) const { return placed_[std::size_t(k)]; }
-    const Placed& taken() const { return placed_[std::size_t(taken_)]; }
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
     ChoicePoint& point() { return point_; }
-    /// Broad-phase queries run and the sum of their result sizes (for time_pairs and pruned).
-    int queried() const { return queried_; }
-    std::uint64_t near_total() const;
+    int queried() const { return int(queried_boxes_.size()); }
+    std::uint64_t near_total() const { return near_total_; }
     std::uint64_t root_rejected() const { return root_rejected_; }
-    /// The queries in the order run: (candidate index, broad-phase id, hit) (kept if log_queries).
-    const std::vector<std::pair<int, Answer>>& log() const { return log_; }
+    /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).
+    const std::vector<LoggedQuery>& log() const { return log_; }
 
 private:
+    void order(const CrowdState& s);
     const Placed& place(const CrowdState& s, int k);
-    int count_hits(const CrowdState& s, int k, bool stop_at_hit);
-    const Answer& ask(const CrowdState& s, int k, std::size_t pos, int id);
-    int fallback_pick() const;
+    bool free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
+    bool plan_free(const CrowdState& s, int k, const Plan& plan);
+    void evaluate_random(const CrowdState& s);
+    bool take_escape(const CrowdState& s);
+    bool hold_on(const CrowdState& s);
+    void fall_back(const CrowdState& s);
+    void take(int k, Outcome how);
 
     int agent_ = 0;
     std::int64_t frame_ = 0;
-    std::vector<int> order_;                  // candidate clips in test order
+    std::vector<int> drawn_;                  // candidate clips in the stream's random order
+    std::vector<int> order_;                  // the same in the policy's order, for the current evaluation
     Placement base_;                          // where and when the next clip starts
     std::vector<Placed> placed_;              // order_[0 .. placed_.size()) placed
-    int random_pick_ = 0;                     // Selection::Random: index of the clip taken
-    std::vector<std::vector<int>> near_;      // per candidate: broad-phase ids, ascending
-    std::vector<std::vector<Answer>> asked_;  // per candidate: answers by position in near_
-    int queried_ = 0, taken_ = -1;
-    std::uint64_t root_rejected_ = 0;
+    int random_pick_ = 0;                     // random mode: index of the clip taken
+    bool arriving_ = false;                   // at its goal: stops as soon as it can
+    std::vector<int> near_;                   // scratch: broad-phase ids of one query
+    std::vector<SpaceTimeBox> queried_boxes_; // every box the evaluation asked the broad phase about
+    std::uint64_t near_total_ = 0, root_rejected_ = 0;
+    Outcome outcome_ = Outcome::Candidate;
+    PlannedClip taken_;
+    Plan plan_;
     ChoicePoint point_;
-    std::vector<std::pair<int, Answer>> log_;
+    std::vector<LoggedQuery> log_;
 };
+
+/// Graph clip `clip` placed at `p` (rotation m) from frame `frame` on, with its box.
+PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame);
+
+/// The plan of clip `c` along an escape route (EscapeTable::routes): its stopping clips chained after it
+/// on the frame grid, and the held ground where the route's clip in place starts.
+Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route);
+
+/// Whether piece `mine` of an agent's plan collides with `other` (another agent's piece or a solid):
+/// clips by the narrow phase; a clip and held ground by their samples overlapping the held disk from
+/// its first frame on; two held grounds by their disks; anything and a solid by disk_overlaps().
+bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats);
 
 }  // namespace mobb::crowd

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -23,11 +24,23 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-void check(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o) {
-    if (o.agents < 1 || !(o.seconds > 0) || !(o.width > 0) || !(o.height > 0))
+constexpr std::int64_t kAlways = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
+
+void check(const CrowdOptions& o) {
+    const bool agents = o.agents >= 1 || !o.placed.empty();
+    if (!agents || !(o.seconds > 0) || !(o.world.width() > 0) || !(o.world.height() > 0))
         throw std::invalid_argument("crowd: agents, seconds and the world must be positive");
     if (o.threads < 1) throw std::invalid_argument("crowd: threads must be at least 1");
-    if (trees.size() != g.clips.size()) throw std::invalid_argument("crowd: one tree per graph clip expected");
+}
+
+bool reserves(const CrowdOptions& o) { return o.select != Selection::Random; }
+
+std::vector<std::array<double, 2>> goals_of(const CrowdOptions& o) {
+    std::vector<std::array<double, 2>> out;
+    for (const AgentSpec& a : o.placed)
+        if (a.goal) out.push_back(*a.goal);
+    return out;
 }
 
 // The simulation: frames in order; the choice points of one frame form a batch, evaluated in parallel
@@ -36,42 +49,58 @@ void check(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOpti
 // that of running the choice points one by one in (frame, agent) order, for any number of threads.
 class Simulation {
 public:
-    Simulation(const MotionGraph& g, const std::vector<Tree>& trees, const CrowdOptions& o)
+    Simulation(const MotionGraph& g, const NarrowPhase& narrow, const CrowdOptions& o)
         : g_(g),
           outlines_(outlines_of(g)),
-          trees_(trees),
+          narrow_(narrow),
           o_(o),
+          escapes_(reserves(o) ? EscapeTable::build(g) : EscapeTable{}),
+          solids_(reserves(o) ? o.world.solids() : std::vector<Polygon>{}),
+          policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, 0.45})),
           pool_(o.threads),
-          broad_(o.cell, o.width, o.height),
-          chosen_(o.cell, o.width, o.height) {}
+          broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+          chosen_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
 
 private:
-    CrowdState state() const { return {g_, outlines_, trees_, o_, broad_, agents_, committed_}; }
+    CrowdState state() const {
+        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, broad_, agents_, pieces_};
+    }
     double max_radius() const;
     void place_agents();
+    void place_at_random(double gap, double margin);
+    void reserve_starts();
     void run_frames(const std::function<void(double)>& progress);
     void run_batch(std::int64_t frame, const std::vector<int>& batch);
+    void gather(std::size_t n);
+    int add_piece(const Piece& piece, bool pending);
+    SpaceTimeBox box_of(const Piece& p) const;
     void commit(Choice& c);
+    void record_plan(const Choice& c, ChoicePoint& cp) const;
+    void count(const Choice& c, const ChoicePoint& cp);
     void flush();
     void log_queries(const Choice& c);
     void fill_samples();
 
     const MotionGraph& g_;
     const std::vector<ClipOutline> outlines_;
-    const std::vector<Tree>& trees_;
+    const NarrowPhase& narrow_;
     const CrowdOptions& o_;
+    const EscapeTable escapes_;
+    const std::vector<Polygon> solids_;
+    const std::unique_ptr<Policy> policy_;
     util::WorkerPool pool_;
-    BroadPhase broad_;                            // committed clips still playing
-    std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
-    BatchGrid chosen_;                            // the clips chosen by the current batch, by position
-    std::vector<char> stale_;                     // per position: a clip chosen before may change it
-    std::vector<SpaceTimeBox> moved_;             // new boxes of clips chosen differently on re-evaluation
+    BroadPhase broad_;                             // pieces live now
+    std::vector<BroadPhase::Insertion> pending_;   // committed in this frame, not yet in broad_
+    std::vector<int> released_;                    // released in this frame, still in broad_
+    BatchGrid chosen_;                             // boxes of the current batch's plans, by position
+    std::vector<char> stale_;                      // per position: a plan chosen before may change it
+    std::vector<SpaceTimeBox> moved_;              // boxes of plans chosen again on re-evaluation
     std::vector<Agent> agents_;
-    std::vector<Committed> committed_;   // by broad-phase id
-    std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
-    std::vector<Choice> slots_;          // one per choice point of a batch, reused
+    std::vector<Piece> pieces_;                    // by broad-phase id
+    std::vector<std::vector<int>> due_;            // per frame: agents at a choice point
+    std::vector<Choice> slots_;                    // one per choice point of a batch, reused
     CrowdRun out_;
 };
 
@@ -82,23 +111,26 @@ double Simulation::max_radius() const {
     return rmax;
 }
 
-// Random positions, rejected when closer than 2 r_max to an agent placed before. Placed agents are
-// kept in a grid of cells at least 2 r_max wide, so a test reads the 3 x 3 cells around the position.
-void Simulation::place_agents() {
-    const double rmax = max_radius(), gap = 2 * rmax;
-    if (o_.width <= gap || o_.height <= gap) throw std::invalid_argument("crowd: world smaller than an agent");
-    const double cell = std::max(gap, std::sqrt(o_.width * o_.height / double(o_.agents)));
-    const int nx = int(o_.width / cell) + 1, ny = int(o_.height / cell) + 1;
+// Random positions `margin` inside the world, rejected when closer than `gap` to an agent placed before
+// or (with reservations) when their held ground meets an obstacle. Placed agents are kept in a grid of
+// cells at least `gap` wide, so a test reads the 3 x 3 cells around the position.
+void Simulation::place_at_random(double gap, double margin) {
+    const World& w = o_.world;
+    if (w.width() <= 2 * margin || w.height() <= 2 * margin) throw std::invalid_argument("crowd: world smaller than an agent");
+    const double cell = std::max(gap, std::sqrt(w.width() * w.height() / double(o_.agents)));
+    const int nx = int(w.width() / cell) + 1, ny = int(w.height() / cell) + 1;
     std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));
     auto cell_of = [&](double v, int n) { return std::clamp(int(v / cell), 0, n - 1); };
     auto free_at = [&](const Placement& p) {
-        const int cx = cell_of(p.x, nx), cy = cell_of(p.y, ny);
+        const int cx = cell_of(p.x - w.x0, nx), cy = cell_of(p.y - w.y0, ny);
         for (int ix = std::max(0, cx - 1); ix <= std::min(nx - 1, cx + 1); ++ix)
             for (int iy = std::max(0, cy - 1); iy <= std::min(ny - 1, cy + 1); ++iy)
                 for (int b : grid[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)]) {
                     const Placement& q = agents_[std::size_t(b)].start;
                     if (!(std::hypot(q.x - p.x, q.y - p.y) >= gap)) return false;
                 }
+        for (const Polygon& s : w.obstacles)
+            if (disk_overlaps(s, p.x, p.y, margin)) return false;
         return true;
     };
     util::Random rng(o_.seed);
@@ -106,22 +138,99 @@ void Simulation::place_agents() {
         Placement p;
         bool ok = false;
         for (int attempt = 0; attempt < 100000 && !ok; ++attempt) {
-            p = {rng.uniform(rmax, o_.width - rmax), rng.uniform(rmax, o_.height - rmax), rng.uniform(-kPi, kPi), 0.0};
+            p = {rng.uniform(w.x0 + margin, w.x1 - margin), rng.uniform(w.y0 + margin, w.y1 - margin), rng.uniform(-kPi, kPi),
+                 0.0};
             ok = free_at(p);
         }
         if (!ok)
-            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
-                                        std::to_string(gap) + " m apart in the world");
-        grid[std::size_t(cell_of(p.x, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y, ny))].push_back(a);
-        agents_.push_back({p, {}});
+            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " + std::to_string(gap) +
+                                        " m apart in the world");
+        grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(a);
+        agents_.push_back({p, 0, std::nullopt, {}, {}, {}, false});
+    }
+}
+
+// A scenario's agents, or random ones: 2 r_max apart and r_max from the edges in random mode (the
+// paper's experiment), their held grounds apart and inside the walls otherwise.
+void Simulation::place_agents() {
+    if (o_.placed.empty()) {
+        if (!reserves(o_)) return place_at_random(2 * max_radius(), max_radius());
+        return place_at_random(2 * escapes_.hold_radius, escapes_.wall_clearance);
+    }
+    for (const AgentSpec& s : o_.placed) {
+        Placement p = s.start;
+        p.t0 = 0;
+        const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
+        agents_.push_back({p, std::max<std::int64_t>(0, frame), s.goal, {}, {}, {}, false});
+    }
+}
+
+SpaceTimeBox Simulation::box_of(const Piece& p) const {
+    if (p.kind == Piece::Held) return {p.hold.x - p.hold.r, p.hold.y - p.hold.r, p.hold.x + p.hold.r, p.hold.y + p.hold.r,
+                                       p.hold.frame, kForever};
+    if (p.kind == Piece::Solid) {
+        const auto b = bounds(solids_[std::size_t(p.commit)]);
+        return {b[0], b[1], b[2], b[3], kAlways, kForever};
+    }
+    return p.clip.box;
+}
+
+int Simulation::add_piece(const Piece& piece, bool pending) {
+    const int id = int(pieces_.size());
+    pieces_.push_back(piece);
+    const BroadPhase::Insertion item{id, piece.agent < 0 ? -2 : piece.agent, box_of(piece)};
+    if (pending) pending_.push_back(item);
+    else broad_.insert(item.id, item.owner, item.box);
+    return id;
+}
+
+// The solids, and every agent's held ground where it starts: the escape of its first choice point.
+// Scenario agents must start apart, clear of the solids (checked here).
+void Simulation::reserve_starts() {
+    for (int k = 0; k < int(solids_.size()); ++k) {
+        Piece s;
+        s.kind = Piece::Solid;
+        s.commit = k;
+        add_piece(s, false);
+    }
+    for (int a = 0; a < int(agents_.size()); ++a) {
+        Agent& agent = agents_[std::size_t(a)];
+        const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};
+        for (const Polygon& s : solids_)
+            if (disk_overlaps(s, h.x, h.y, escapes_.wall_clearance))
+                throw std::invalid_argument("crowd: agent " + std::to_string(a) + " starts within " +
+                                            std::to_string(escapes_.wall_clearance) + " m of a wall or an obstacle");
+        for (int b = 0; b < a && !o_.placed.empty(); ++b) {  // random starts are placed apart
+            const Placement& q = agents_[std::size_t(b)].start;
+            if (std::hypot(q.x - h.x, q.y - h.y) < 2 * h.r)
+                throw std::invalid_argument("crowd: agents " + std::to_string(b) + " and " + std::to_string(a) +
+                                            " start closer than " + std::to_string(2 * h.r) + " m");
+        }
+        Piece p;
+        p.kind = Piece::Held;
+        p.agent = a;
+        p.commit = -1;
+        p.index = -1;
+        p.hold = h;
+        agent.plan.hold = h;
+        agent.reserved.push_back(add_piece(p, false));
+    }
+}
+
+// The boxes the frame's plans put in place and the ones they release, by position in the batch.
+void Simulation::gather(std::size_t n) {
+    chosen_.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        for (const SpaceTimeBox& b : slots_[i].boxes()) chosen_.add(int(i), b);
+        for (int id : agents_[std::size_t(slots_[i].agent())].reserved) chosen_.add(int(i), box_of(pieces_[std::size_t(id)]));
     }
 }
 
 // Four steps, the same for any number of threads: (1) every choice point of the frame is evaluated
-// against the clips committed before the frame (in parallel); (2) the clips they chose are gathered;
-// (3) each choice point checks whether a clip chosen before it in the frame could have changed its
-// evaluation (in parallel); (4) in agent order, such choice points are evaluated again against the
-// clips committed so far, which also catches clips that changed in a re-evaluation, then each commits.
+// against the state before the frame (in parallel); (2) the boxes their plans take and release are
+// gathered; (3) each choice point checks whether a plan committed before it in the frame could have
+// changed its evaluation (in parallel); (4) in agent order, such choice points are evaluated again
+// against the state so far, which also catches plans that changed in a re-evaluation, then each commits.
 void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     const std::size_t n = batch.size();
     if (slots_.size() < n) slots_.resize(n);
@@ -130,21 +239,18 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         slots_[i].prepare(s, batch[i], frame);
         slots_[i].evaluate(s);
     });
-    chosen_.clear();
-    for (std::size_t i = 0; i < n; ++i) chosen_.add(int(i), slots_[i].taken().box);
+    gather(n);
     stale_.assign(n, 0);
-    pool_.for_each(
-        n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
-    moved_.clear();  // clips chosen again differently: the grid holds their old boxes
+    pool_.for_each(n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
+    moved_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         Choice& c = slots_[i];
         const auto near = [&](const SpaceTimeBox& b) { return c.affected_by(b); };
         if (stale_[i] || std::any_of(moved_.begin(), moved_.end(), near)) {
             flush();
-            const int before = c.taken().clip;
             c.evaluate(s);
             ++out_.summary.reevaluated;
-            if (c.taken().clip != before) moved_.push_back(c.taken().box);
+            for (const SpaceTimeBox& b : c.boxes()) moved_.push_back(b);
         }
         commit(c);
     }
@@ -153,34 +259,35 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
 
 // Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
 void Simulation::flush() {
+    for (int id : released_) broad_.remove(id);
+    released_.clear();
     broad_.insert_all(pending_, pool_);
     pending_.clear();
 }
 
 void Simulation::log_queries(const Choice& c) {
     const int choice = int(out_.record.choices.size());
-    for (const auto& [k, a] : c.log()) {
-        const Placed& cand = c.candidate(k);
-        const Committed& other = committed_[std::size_t(a.id)];
-        out_.queries.push_back({choice, k, cand.clip, other.clip, cand.place, other.place, a.hit});
+    for (LoggedQuery q : c.log()) {
+        q.choice = choice;
+        out_.queries.push_back(q);
     }
 }
 
-void Simulation::commit(Choice& c) {
-    ChoicePoint& cp = c.point();
+void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
+    static const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback"};
+    cp.outcome = kOutcomes[int(c.outcome())];
+    cp.escape.clear();
+    for (const PlannedClip& e : c.plan().escape) cp.escape.push_back({e.clip, e.frame, e.place});
+    cp.holds = c.plan().hold.has_value();
+    if (cp.holds) {
+        const Hold& h = *c.plan().hold;
+        cp.hold = {h.x, h.y, h.r};
+        cp.hold_frame = h.frame;
+    }
+}
+
+void Simulation::count(const Choice& c, const ChoicePoint& cp) {
     CrowdSummary& s = out_.summary;
-    // Every clip live now overlaps the candidates in time (it started before and ends after).
-    const std::uint64_t pairs = (broad_.size() + pending_.size()) * std::uint64_t(c.queried());
-    cp.pruned = pairs - c.near_total();
-    s.time_pairs += pairs;
-    if (o_.log_queries) log_queries(c);
-    const Placed& taken = c.taken();
-    Agent& a = agents_[std::size_t(c.agent())];
-    const int id = int(committed_.size());
-    a.clips.push_back({taken.clip, taken.box.f0, taken.place, cp.fallback, std::int64_t(out_.record.choices.size())});
-    committed_.push_back({c.agent(), int(a.clips.size()) - 1, taken.clip, taken.place});
-    pending_.push_back({id, c.agent(), taken.box});
-    if (taken.box.f1 < std::int64_t(due_.size())) due_[std::size_t(taken.box.f1)].push_back(c.agent());
     ++s.choice_points;
     s.candidates += cp.candidates.size();
     s.queries += cp.queries;
@@ -190,24 +297,76 @@ void Simulation::commit(Choice& c) {
     s.pruned += cp.pruned;
     s.root_rejected += c.root_rejected();
     for (const Candidate& k : cp.candidates) s.hits += std::uint64_t(k.hits);
+    if (c.outcome() == Outcome::Escape) ++s.escapes;
     if (cp.fallback) {
         ++s.fallbacks;
-        if (taken.outside) ++s.outside;
+        for (const Candidate& k : cp.candidates)
+            if (k.clip == cp.taken && k.outside) {
+                ++s.outside;
+                break;
+            }
     }
+}
+
+void Simulation::commit(Choice& c) {
+    ChoicePoint& cp = c.point();
+    // Every piece live now overlaps the candidates in time (it started before and ends after).
+    const std::uint64_t pairs = (broad_.size() + pending_.size()) * std::uint64_t(c.queried());
+    cp.pruned = pairs > c.near_total() ? pairs - c.near_total() : 0;
+    out_.summary.time_pairs += pairs;
+    if (o_.log_queries) log_queries(c);
+    const int commit = int(out_.record.choices.size());
+    Agent& a = agents_[std::size_t(c.agent())];
+    const PlannedClip& t = c.taken();
+    a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, commit});
+    Piece clip;
+    clip.agent = c.agent();
+    clip.commit = commit;
+    clip.clip = t;
+    add_piece(clip, true);
+    for (int id : a.reserved) released_.push_back(id);
+    a.reserved.clear();
+    for (std::size_t i = 0; i < c.plan().escape.size(); ++i) {
+        Piece e = clip;
+        e.index = int(i) + 1;
+        e.clip = c.plan().escape[i];
+        a.reserved.push_back(add_piece(e, true));
+    }
+    if (c.plan().hold) {
+        Piece h;
+        h.kind = Piece::Held;
+        h.agent = c.agent();
+        h.commit = commit;
+        h.index = -1;
+        h.hold = *c.plan().hold;
+        a.reserved.push_back(add_piece(h, true));
+    }
+    a.plan = c.plan();
+    if (c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold) {
+        a.arrived = true;
+        policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
+    }
+    // Waiting: following its escape, or choosing to stay in place (the random mode has no escapes).
+    const bool stays = reserves(o_) && escapes_.in_place[std::size_t(t.clip)];
+    a.waited = c.outcome() == Outcome::Escape || stays ? a.waited + 1 : 0;
+    const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
+    if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
+    record_plan(c, cp);
+    count(c, cp);
     out_.record.choices.push_back(std::move(cp));
 }
 
 void Simulation::run_frames(const std::function<void(double)>& progress) {
     const std::int64_t frames = out_.record.frames;
     due_.assign(std::size_t(frames), {});
-    for (int a = 0; a < o_.agents; ++a) due_[0].push_back(a);
+    for (int a = 0; a < int(agents_.size()); ++a) due_[0].push_back(a);
     // About agents x frames / mean clip length choice points: reserving saves moving them while committing.
     std::size_t samples = 0;
     for (const GraphClip& c : g_.clips) samples += c.path.size();
     const double expected =
-        double(o_.agents) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
+        double(agents_.size()) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
     out_.record.choices.reserve(std::size_t(expected * 1.2));
-    committed_.reserve(std::size_t(expected * 1.2));
+    pieces_.reserve(std::size_t(expected * (reserves(o_) ? 3.6 : 1.2)));
     std::int64_t reported = -1;
     for (std::int64_t f = 0; f < frames; ++f) {
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
@@ -229,6 +388,7 @@ void Simulation::fill_samples() {
     pool_.for_each(agents_.size(), [&](std::size_t a, int) {
         AgentTrack& t = out_.record.tracks[a];
         t.clips = std::move(agents_[a].clips);
+        t.goal = agents_[a].goal;
         t.samples.reserve(std::size_t(frames));
         std::size_t k = 0;
         Rigid2 m = Rigid2::of(t.clips[0].place);  // the core's own transform, so the check rounds as the queries do
@@ -246,16 +406,18 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     Record& r = out_.record;
     r.dt = g_.dt();
     r.frames = std::max<std::int64_t>(1, std::llround(o_.seconds / r.dt));
-    r.width = o_.width;
-    r.height = o_.height;
+    r.world = o_.world;
+    if (!reserves(o_)) r.world.walls = false;  // the random mode ignores them
     r.seed = o_.seed;
     r.select = to_string(o_.select);
-    r.tracks.resize(std::size_t(o_.agents));
+    r.tree = narrow_.name();
+    place_agents();
+    r.tracks.resize(agents_.size());
     CrowdSummary& s = out_.summary;
-    s.agents = std::uint64_t(o_.agents);
+    s.agents = std::uint64_t(agents_.size());
     s.simulated_seconds = double(r.frames) * r.dt;
     s.threads = o_.threads;
-    place_agents();
+    if (reserves(o_)) reserve_starts();
     run_frames(progress);
     fill_samples();
     s.seconds = since(start);
@@ -271,14 +433,6 @@ double per(std::uint64_t x, std::uint64_t n) { return n ? double(x) / double(n) 
 
 }  // namespace
 
-const char* to_string(Selection s) { return s == Selection::Avoid ? "avoid" : "random"; }
-
-Selection parse_selection(const std::string& name) {
-    if (name == "avoid") return Selection::Avoid;
-    if (name == "random") return Selection::Random;
-    throw std::invalid_argument("unknown selection '" + name + "' (avoid, random)");
-}
-
 std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& options) {
     std::vector<Tree> trees;
     trees.reserve(graph.clips.size());
@@ -286,10 +440,10 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
     return trees;
 }
 
-CrowdRun run_crowd(const MotionGraph& graph, const std::vector<Tree>& trees, const CrowdOptions& options,
+CrowdRun run_crowd(const MotionGraph& graph, const NarrowPhase& narrow, const CrowdOptions& options,
                    const std::function<void(double)>& progress) {
-    check(graph, trees, options);
-    return Simulation(graph, trees, options).run(progress);
+    check(options);
+    return Simulation(graph, narrow, options).run(progress);
 }
 
 double CrowdSummary::cd_us_per_agent_second() const {
@@ -309,6 +463,7 @@ std::string summary_json(const CrowdSummary& s) {
     j["root_rejected_share"] = per(s.root_rejected, s.queries);
     j["time_overlapping_pairs"] = s.time_pairs;
     j["pairs_pruned"] = s.pruned;
+    j["escapes"] = s.escapes;
     j["fallbacks"] = s.fallbacks;
     j["fallbacks_outside_world"] = s.outside;
     j["contacts"] = s.contacts;
@@ -325,7 +480,10 @@ std::string summary_text(const CrowdSummary& s) {
         << ", samples " << per(s.samples, s.queries) << "\n"
         << "rejected at the root     " << 100.0 * per(s.root_rejected, s.queries) << " %\n"
         << "pairs pruned (broad)     " << s.pruned << " of " << s.time_pairs << " overlapping in time\n"
-        << "fallbacks                " << s.fallbacks << " (" << s.outside << " leaving the world)\n"
+        << "escapes taken            " << s.escapes << " (" << 100.0 * per(s.escapes, s.choice_points)
+        << " % of choice points)\n"
+        << "fallbacks                " << s.fallbacks << " (" << 100.0 * per(s.fallbacks, s.choice_points) << " %, "
+        << s.outside << " leaving the world)\n"
         << "contacts (frame check)   " << s.contacts << " agent-pair frames, " << s.contacts_unexcused
         << " outside fallbacks\n"
         << "re-evaluated choices     " << s.reevaluated << " (a commit earlier in the frame was near)\n"

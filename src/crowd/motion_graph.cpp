@@ -23,18 +23,55 @@ namespace {
 double wrap_angle(double a) { return std::remainder(a, 2.0 * kPi); }
 
 // Loads at the graph's rate, dropping a stray first frame far from the rest (CMU 007_03..007_12).
-io::Clip load_source(const std::string& file, const GraphBuildOptions& o, int& frame_begin) {
+// "FILE:A:B": frames [A, B) of FILE; anything else: the whole file.
+void parse_input(const std::string& input, GraphSource& src, std::string& file) {
+    file = input;
+    const auto b = input.rfind(':');
+    if (b == std::string::npos || b == 0) return;
+    const auto a = input.rfind(':', b - 1);
+    if (a == std::string::npos) return;
+    const std::string first = input.substr(a + 1, b - a - 1), end = input.substr(b + 1);
+    const auto digits = [](const std::string& t) {
+        return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (!digits(first) || !digits(end)) return;
+    file = input.substr(0, a);
+    src.frame_begin = std::stoi(first);
+    src.frame_end = std::stoi(end);
+    if (src.frame_end <= src.frame_begin) throw GraphError(input + ": expected frames A:B with A < B");
+}
+
+// A source at the graph's rate: its range, or the whole file without a stray first frame.
+io::Clip load_source(const std::string& file, const GraphBuildOptions& o, GraphSource& src) {
     io::LoadOptions lo;
     lo.fps = o.fps;
+    lo.frame_begin = src.frame_begin;
+    lo.frame_end = src.frame_end;
     io::Clip clip = io::load_clip(file, lo);
-    frame_begin = 0;
     const auto& s = clip.path.samples;
-    if (s.size() > 2 && std::hypot(s[1].x - s[0].x, s[1].y - s[0].y) > o.trim_jump) {
-        frame_begin = 1;
+    if (src.frame_end < 0 && s.size() > 2 && std::hypot(s[1].x - s[0].x, s[1].y - s[0].y) > o.trim_jump) {
+        src.frame_begin = 1;
         lo.frame_begin = 1;
         clip = io::load_clip(file, lo);
     }
     return clip;
+}
+
+double reach_of(const Path& p) {
+    double d = 0;
+    for (const Sample& s : p.samples) d = std::max(d, std::hypot(s.x - p.samples[0].x, s.y - p.samples[0].y));
+    return d;
+}
+
+// An idle clip (ClipKind::Idle, before its snap) loops in place: its exit becomes the identity.
+void snap_idle(GraphClip& c, int id) {
+    const bool loops = std::find(c.successors.begin(), c.successors.end(), id) != c.successors.end();
+    if (!loops || reach_of(c.path) > kIdleReach || std::hypot(c.exit_x, c.exit_y) > kIdleExit ||
+        std::abs(c.exit_heading) > kIdleTurn)
+        return;
+    c.idle_drift = util::rounded(std::hypot(c.exit_x, c.exit_y));
+    c.idle_turn = util::rounded(c.exit_heading, 9);
+    c.exit_x = c.exit_y = c.exit_heading = 0;
 }
 
 // All frames of all sources in one distance matrix (floats, metres), sources one after another.
@@ -212,11 +249,45 @@ void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
 
 }  // namespace
 
-Placement MotionGraph::next(const Placement& p, int clip) const {
+ClipKind kind_of(const GraphClip& c, int id) {
+    const double reach = reach_of(c.path), exit = std::hypot(c.exit_x, c.exit_y);
+    const bool loops = std::find(c.successors.begin(), c.successors.end(), id) != c.successors.end();
+    if (loops && reach <= kIdleReach && c.exit_x == 0 && c.exit_y == 0 && c.exit_heading == 0) return ClipKind::Idle;
+    if (reach <= kInPlaceReach && exit <= kInPlaceExit) return ClipKind::InPlace;
+    return exit / c.path.duration() < kWalking ? ClipKind::Slow : ClipKind::Walk;
+}
+
+const char* to_string(ClipKind kind) {
+    switch (kind) {
+        case ClipKind::Walk: return "walk";
+        case ClipKind::Slow: return "slow";
+        case ClipKind::InPlace: return "in place";
+        case ClipKind::Idle: return "idle";
+    }
+    return "?";
+}
+
+Placement MotionGraph::next(const Placement& p, int clip) const { return next(p, Rigid2::of(p), clip); }
+
+Placement MotionGraph::next(const Placement& p, const Rigid2& m, int clip) const {
     const GraphClip& c = clips[std::size_t(clip)];
-    const double cs = std::cos(p.theta), sn = std::sin(p.theta);
-    return {p.x + cs * c.exit_x - sn * c.exit_y, p.y + sn * c.exit_x + cs * c.exit_y, p.theta + c.exit_heading,
+    return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y, p.theta + c.exit_heading,
             p.t0 + double(c.path.size()) * dt()};
+}
+
+io::Clip load_graph_source(const MotionGraph& g, int source) {
+    const GraphSource& src = g.sources.at(std::size_t(source));
+    // Frames dropped first, then resampled (LoadOptions applies them in that order), as the build did.
+    io::LoadOptions lo;
+    lo.fps = g.fps;
+    lo.frame_begin = src.frame_begin;
+    lo.frame_end = src.frame_end;
+    const std::string file = io::resolve_data_file(src.file);
+    io::Clip clip = io::load_clip(file, lo);
+    if (int(clip.path.size()) != src.samples)
+        throw GraphError(file + ": " + std::to_string(clip.path.size()) + " samples at " + std::to_string(g.fps) +
+                         " fps, the graph expects " + std::to_string(src.samples) + " (a different file?)");
+    return clip;
 }
 
 std::string default_graph_file() {
@@ -235,9 +306,11 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
     g.window = o.window;
     std::vector<io::Clip> clips;
     std::vector<PoseTrack> tracks;
-    for (const std::string& f : files) {
+    for (const std::string& input : files) {
         GraphSource src;
-        clips.push_back(load_source(f, o, src.frame_begin));
+        std::string f;
+        parse_input(input, src, f);
+        clips.push_back(load_source(f, o, src));
         const PoseJoints joints = select_joints(clips.back().animation.skeleton);
         if (g.joints.empty()) g.joints = joints.names;
         tracks.push_back(pose_track(clips.back(), joints));
@@ -266,8 +339,8 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
             c.first = cuts[k];
             c.exit = cuts[k + 1];
             const auto& index = clips[std::size_t(s)].source_index;
-            c.frame_first = index[std::size_t(c.first)] + g.sources[std::size_t(s)].frame_begin;
-            c.frame_exit = index[std::size_t(c.exit)] + g.sources[std::size_t(s)].frame_begin;
+            c.frame_first = index[std::size_t(c.first)];  // file frames (the index holds them)
+            c.frame_exit = index[std::size_t(c.exit)];
             all.push_back(std::move(c));
         }
     }
@@ -306,6 +379,7 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
                 c.distances.push_back(util::rounded(dist[u][k], 9));
             }
         localise(c, clips[std::size_t(c.source)], tracks[std::size_t(c.source)]);
+        snap_idle(c, id[u]);
     }
     if (g.clips.size() < 2) throw GraphError("graph build: no two clips connect; raise --threshold");
     if (log)
@@ -323,7 +397,9 @@ std::string graph_to_text(const MotionGraph& g) {
         "Clips of real mocap joined where poses match (Kovar et al. 2002). Units: metres, seconds, "
         "radians. A clip is samples [first, exit) of its source at fps; its path is in its own frame "
         "(root of sample first at the origin, facing +x); exit = [x, y, heading change] of sample exit, "
-        "where a successor starts.";
+        "where a successor starts. kind: walk, slow (starting, stopping), in place (turning on the spot), idle "
+        "(standing and looping in place, what an agent stops with: its exit is snapped to the identity; idle_snap "
+        "gives how far its root really moved, metres, and turned, radians, over the clip in the take).";
     j["command"] = g.command;
     j["fps"] = g.fps;
     j["dt"] = g.dt();
@@ -333,7 +409,8 @@ std::string graph_to_text(const MotionGraph& g) {
     j["joints"] = g.joints;
     J sources = J::array();
     for (const GraphSource& s : g.sources)
-        sources.push_back({{"file", s.file}, {"frame_begin", s.frame_begin}, {"samples", s.samples}});
+        sources.push_back(
+            {{"file", s.file}, {"frame_begin", s.frame_begin}, {"frame_end", s.frame_end}, {"samples", s.samples}});
     j["sources"] = sources;
     double total = 0, lo = 1e300, hi = 0;
     std::size_t edges = 0;
@@ -357,16 +434,19 @@ std::string graph_to_text(const MotionGraph& g) {
         const GraphClip& c = g.clips[k];
         J path = J::array();
         for (const Sample& s : c.path.samples) path.push_back({s.x, s.y, s.r});
-        clips.push_back({{"id", k},
-                         {"file", g.sources[std::size_t(c.source)].file},
-                         {"source", c.source},
-                         {"samples", {c.first, c.exit}},
-                         {"frames", {c.frame_first, c.frame_exit}},
-                         {"duration", util::rounded(c.path.duration(), 6)},
-                         {"exit", {c.exit_x, c.exit_y, c.exit_heading}},
-                         {"successors", c.successors},
-                         {"distances", c.distances},
-                         {"path", path}});
+        J clip = {{"id", k},
+                  {"file", g.sources[std::size_t(c.source)].file},
+                  {"source", c.source},
+                  {"kind", to_string(kind_of(c, int(k)))},
+                  {"samples", {c.first, c.exit}},
+                  {"frames", {c.frame_first, c.frame_exit}},
+                  {"duration", util::rounded(c.path.duration(), 6)},
+                  {"exit", {c.exit_x, c.exit_y, c.exit_heading}}};
+        if (c.idle_drift != 0 || c.idle_turn != 0) clip["idle_snap"] = {c.idle_drift, c.idle_turn};
+        clip["successors"] = c.successors;
+        clip["distances"] = c.distances;
+        clip["path"] = path;
+        clips.push_back(clip);
     }
     j["clips"] = clips;
     return util::readable_json(j);
@@ -410,6 +490,11 @@ GraphClip clip_from_json(const nlohmann::json& c, const MotionGraph& g, const st
     out.exit_x = exit[0].get<double>();
     out.exit_y = exit[1].get<double>();
     out.exit_heading = exit[2].get<double>();
+    if (c.contains("idle_snap") && c["idle_snap"].is_array() && c["idle_snap"].size() == 2 &&
+        c["idle_snap"][0].is_number() && c["idle_snap"][1].is_number()) {
+        out.idle_drift = c["idle_snap"][0].get<double>();
+        out.idle_turn = c["idle_snap"][1].get<double>();
+    }
     const auto& succ = field(c, "successors", where);
     if (!succ.is_array() || succ.empty()) throw GraphError(where + ".successors: every clip needs a successor");
     for (std::size_t k = 0; k < succ.size(); ++k)
@@ -452,8 +537,9 @@ MotionGraph graph_from_json(const nlohmann::json& j, const std::string& where) {
         const std::string w = where + ".sources[" + std::to_string(k) + "]";
         const auto& f = field(sources[k], "file", w);
         if (!f.is_string()) throw GraphError(w + ".file: expected a string");
-        g.sources.push_back(
-            {f.get<std::string>(), int(number(sources[k], "frame_begin", w)), int(number(sources[k], "samples", w))});
+        const int end = sources[k].contains("frame_end") ? int(number(sources[k], "frame_end", w)) : -1;
+        g.sources.push_back({f.get<std::string>(), int(number(sources[k], "frame_begin", w)), end,
+                             int(number(sources[k], "samples", w))});
     }
     const auto& clips = field(j, "clips", where);
     if (!clips.is_array() || clips.empty()) throw GraphError(where + ".clips: expected a non-empty array");

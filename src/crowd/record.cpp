@@ -128,58 +128,188 @@ std::vector<Contact> frame_contacts(const Record& record) {
     return out;
 }
 
-std::string record_to_text(const Record& r, const std::string& summary_json) {
-    using J = nlohmann::ordered_json;
+std::optional<FramedClip> query_clip(const Record& r, const CandidateQuery& q) {
+    if (q.agent < 0 || q.piece < 0) return std::nullopt;
+    const ChoicePoint& cp = r.choices.at(std::size_t(q.commit));
+    if (q.piece > 0) return cp.escape.at(std::size_t(q.piece - 1));
+    const auto& clips = r.tracks.at(std::size_t(q.agent)).clips;
+    const auto it = std::lower_bound(clips.begin(), clips.end(), std::int64_t(q.commit),
+                                     [](const PlacedClip& c, std::int64_t x) { return c.commit < x; });
+    if (it == clips.end() || it->commit != q.commit) throw std::out_of_range("no clip of that commit");
+    return FramedClip{it->clip, it->start, it->place};
+}
+
+namespace {
+
+using J = nlohmann::ordered_json;
+
+J world_json(const World& w) {
+    if (w.x0 == 0 && w.y0 == 0) return {w.x1, w.y1};
+    return {w.x0, w.y0, w.x1, w.y1};
+}
+
+J obstacles_json(const World& w) {
+    J out = J::array();
+    for (const Polygon& p : w.obstacles) {
+        J poly = J::array();
+        for (const auto& v : p.vertices) poly.push_back({v[0], v[1]});
+        out.push_back(poly);
+    }
+    return out;
+}
+
+J track_json(const AgentTrack& t) {
+    J clips = J::array();
+    for (const PlacedClip& c : t.clips)
+        clips.push_back({{"clip", c.clip},
+                         {"start", c.start},
+                         {"place", {c.place.x, c.place.y, c.place.theta, c.place.t0}},
+                         {"fallback", c.fallback},
+                         {"commit", c.commit}});
+    J samples = J::array();
+    for (const auto& s : t.samples) samples.push_back({s[0], s[1], s[2], s[3]});
+    J out = J::object();
+    if (t.goal) out["goal"] = {(*t.goal)[0], (*t.goal)[1]};
+    out["clips"] = clips;
+    out["samples"] = samples;
+    return out;
+}
+
+J plan_json(const ChoicePoint& c) {
+    J escape = J::array();
+    for (const FramedClip& e : c.escape) escape.push_back({e.clip, e.frame, e.place.x, e.place.y, e.place.theta});
+    J out = {{"escape", escape}};
+    if (c.holds) out["hold"] = {c.hold[0], c.hold[1], c.hold[2], c.hold_frame};
+    return out;
+}
+
+J choice_json(const ChoicePoint& c, double dt) {
+    J cands = J::array();
+    for (const Candidate& k : c.candidates) {
+        J against = J::array();
+        for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.commit, q.piece, q.mine, int(q.hit)});
+        cands.push_back(
+            {{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits}, {"against", against}});
+    }
+    return {{"agent", c.agent},     {"frame", c.frame},
+            {"t", util::rounded(double(c.frame) * dt, 9)},
+            {"taken", c.taken},     {"outcome", c.outcome},
+            {"fallback", c.fallback}, {"queries", c.queries},
+            {"tests2d", c.tests2d}, {"tests3d", c.tests3d},
+            {"samples", c.samples}, {"pruned", c.pruned},
+            {"plan", plan_json(c)}, {"candidates", cands}};
+}
+
+World world_of(const nlohmann::json& j) {
+    World w;
+    const auto& v = j.at("world");
+    if (v.size() == 4) {
+        w.x0 = v.at(0).get<double>(), w.y0 = v.at(1).get<double>();
+        w.x1 = v.at(2).get<double>(), w.y1 = v.at(3).get<double>();
+    } else {
+        w.x1 = v.at(0).get<double>(), w.y1 = v.at(1).get<double>();
+    }
+    w.walls = j.value("walls", false);
+    for (const auto& poly : j.value("obstacles", nlohmann::json::array())) {
+        Polygon p;
+        for (const auto& q : poly) p.vertices.push_back({q.at(0).get<double>(), q.at(1).get<double>()});
+        w.obstacles.push_back(std::move(p));
+    }
+    return w;
+}
+
+AgentTrack track_of(const nlohmann::json& t, std::int64_t frames) {
+    AgentTrack track;
+    if (t.contains("goal")) track.goal = std::array<double, 2>{t.at("goal").at(0).get<double>(), t.at("goal").at(1).get<double>()};
+    for (const auto& c : t.at("clips")) {
+        const auto& p = c.at("place");
+        track.clips.push_back(
+            {c.at("clip").get<int>(),
+             c.at("start").get<std::int64_t>(),
+             {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>(), p.at(3).get<double>()},
+             c.at("fallback").get<bool>(),
+             c.at("commit").get<std::int64_t>()});
+    }
+    for (const auto& s : t.at("samples"))
+        track.samples.push_back({s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
+    if (std::int64_t(track.samples.size()) != frames)
+        throw std::runtime_error("a track has " + std::to_string(track.samples.size()) + " samples, expected " +
+                                 std::to_string(frames));
+    return track;
+}
+
+void plan_of(const nlohmann::json& c, ChoicePoint& cp) {
+    if (!c.contains("plan")) return;
+    const auto& plan = c.at("plan");
+    for (const auto& e : plan.at("escape"))
+        cp.escape.push_back({e.at(0).get<int>(), e.at(1).get<std::int64_t>(),
+                             {e.at(2).get<double>(), e.at(3).get<double>(), e.at(4).get<double>(), 0.0}});
+    if (plan.contains("hold")) {
+        const auto& h = plan.at("hold");
+        cp.holds = true;
+        cp.hold = {h.at(0).get<double>(), h.at(1).get<double>(), h.at(2).get<double>()};
+        cp.hold_frame = h.at(3).get<std::int64_t>();
+    }
+}
+
+ChoicePoint choice_of(const nlohmann::json& c, const Record& r) {
+    ChoicePoint cp;
+    cp.agent = c.at("agent").get<int>();
+    cp.frame = c.at("frame").get<std::int64_t>();
+    cp.taken = c.at("taken").get<int>();
+    cp.outcome = c.value("outcome", std::string(c.at("fallback").get<bool>() ? "fallback" : "candidate"));
+    cp.fallback = c.at("fallback").get<bool>();
+    cp.queries = c.at("queries").get<std::uint64_t>();
+    cp.tests2d = c.at("tests2d").get<std::uint64_t>();
+    cp.tests3d = c.at("tests3d").get<std::uint64_t>();
+    cp.samples = c.at("samples").get<std::uint64_t>();
+    cp.pruned = c.at("pruned").get<std::uint64_t>();
+    plan_of(c, cp);
+    for (auto& e : cp.escape) e.place.t0 = double(e.frame) * r.dt;
+    for (const auto& k : c.at("candidates")) {
+        Candidate cand{k.at("clip").get<int>(), k.at("outside").get<bool>(), k.at("queries").get<int>(),
+                       k.at("hits").get<int>(), {}};
+        for (const auto& q : k.at("against")) {
+            const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>(), q.at(3).get<int>(),
+                                    q.at(4).get<int>() != 0};
+            const bool solid = cq.agent == -1 && cq.commit >= 0 && cq.piece == 0;
+            const bool start = cq.commit == -1 && cq.piece == -1;  // the ground the agent started on
+            const bool agent = cq.agent >= 0 && std::size_t(cq.agent) < r.tracks.size() && cq.piece >= -1 &&
+                               (start || (cq.commit >= 0 && std::size_t(cq.commit) < r.choices.size()));
+            if (!solid && !agent)
+                throw std::runtime_error("choice " + std::to_string(r.choices.size()) +
+                                         ": a query names a piece not in the record");
+            cand.against.push_back(cq);
+        }
+        cp.candidates.push_back(std::move(cand));
+    }
+    return cp;
+}
+
+}  // namespace
+
+std::string record_to_text(const Record& r, const std::string& summary_json, const std::string& metrics_json) {
     J j;
     j["format"] = "mobb crowd record";
-    j["version"] = 1;
+    j["version"] = 2;
     j["graph"] = r.graph;
     j["dt"] = r.dt;
     j["frames"] = r.frames;
-    j["world"] = {r.width, r.height};
     j["agents"] = r.tracks.size();
     j["seed"] = r.seed;
     j["tree"] = r.tree;
     j["select"] = r.select;
+    if (!r.scenario.empty()) j["scenario"] = r.scenario;
+    j["world"] = world_json(r.world);
+    j["walls"] = r.world.walls;
+    j["obstacles"] = obstacles_json(r.world);
     j["summary"] = summary_json.empty() ? J::object() : J::parse(summary_json);
+    if (!metrics_json.empty()) j["metrics"] = J::parse(metrics_json);
     J tracks = J::array();
-    for (const AgentTrack& t : r.tracks) {
-        J clips = J::array();
-        for (const PlacedClip& c : t.clips)
-            clips.push_back({{"clip", c.clip},
-                             {"start", c.start},
-                             {"place", {c.place.x, c.place.y, c.place.theta, c.place.t0}},
-                             {"fallback", c.fallback},
-                             {"commit", c.commit}});
-        J samples = J::array();
-        for (const auto& s : t.samples) samples.push_back({s[0], s[1], s[2], s[3]});
-        tracks.push_back({{"clips", clips}, {"samples", samples}});
-    }
+    for (const AgentTrack& t : r.tracks) tracks.push_back(track_json(t));
     j["tracks"] = tracks;
     J choices = J::array();
-    for (const ChoicePoint& c : r.choices) {
-        J cands = J::array();
-        for (const Candidate& k : c.candidates) {
-            J against = J::array();
-            for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.index, int(q.hit)});
-            cands.push_back({{"clip", k.clip},
-                             {"outside", k.outside},
-                             {"queries", k.queries},
-                             {"hits", k.hits},
-                             {"against", against}});
-        }
-        choices.push_back({{"agent", c.agent},
-                           {"frame", c.frame},
-                           {"t", util::rounded(double(c.frame) * r.dt, 9)},
-                           {"taken", c.taken},
-                           {"fallback", c.fallback},
-                           {"queries", c.queries},
-                           {"tests2d", c.tests2d},
-                           {"tests3d", c.tests3d},
-                           {"samples", c.samples},
-                           {"pruned", c.pruned},
-                           {"candidates", cands}});
-    }
+    for (const ChoicePoint& c : r.choices) choices.push_back(choice_json(c, r.dt));
     j["choices"] = choices;
     return util::readable_json(j);
 }
@@ -194,61 +324,19 @@ Record load_record(const std::string& file) {
         r.graph = j.at("graph").get<std::string>();
         r.dt = j.at("dt").get<double>();
         r.frames = j.at("frames").get<std::int64_t>();
-        r.width = j.at("world").at(0).get<double>();
-        r.height = j.at("world").at(1).get<double>();
+        r.world = world_of(j);
         r.seed = j.at("seed").get<std::uint64_t>();
         r.tree = j.at("tree").get<std::string>();
         r.select = j.at("select").get<std::string>();
-        for (const auto& t : j.at("tracks")) {
-            AgentTrack track;
-            for (const auto& c : t.at("clips")) {
-                const auto& p = c.at("place");
-                track.clips.push_back(
-                    {c.at("clip").get<int>(),
-                     c.at("start").get<std::int64_t>(),
-                     {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>(), p.at(3).get<double>()},
-                     c.at("fallback").get<bool>(),
-                     c.at("commit").get<std::int64_t>()});
-            }
-            for (const auto& s : t.at("samples"))
-                track.samples.push_back(
-                    {s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
-            if (std::int64_t(track.samples.size()) != r.frames)
-                throw std::runtime_error("a track has " + std::to_string(track.samples.size()) + " samples, expected " +
-                                         std::to_string(r.frames));
-            r.tracks.push_back(std::move(track));
-        }
-        for (const auto& c : j.at("choices")) {
-            ChoicePoint cp;
-            cp.agent = c.at("agent").get<int>();
-            cp.frame = c.at("frame").get<std::int64_t>();
-            cp.taken = c.at("taken").get<int>();
-            cp.fallback = c.at("fallback").get<bool>();
-            cp.queries = c.at("queries").get<std::uint64_t>();
-            cp.tests2d = c.at("tests2d").get<std::uint64_t>();
-            cp.tests3d = c.at("tests3d").get<std::uint64_t>();
-            cp.samples = c.at("samples").get<std::uint64_t>();
-            cp.pruned = c.at("pruned").get<std::uint64_t>();
-            for (const auto& k : c.at("candidates")) {
-                Candidate cand{k.at("clip").get<int>(),
-                               k.at("outside").get<bool>(),
-                               k.at("queries").get<int>(),
-                               k.at("hits").get<int>(),
-                               {}};
-                for (const auto& q : k.at("against")) {
-                    const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>() != 0};
-                    if (cq.agent < 0 || std::size_t(cq.agent) >= r.tracks.size() || cq.index < 0 ||
-                        std::size_t(cq.index) >= r.tracks[std::size_t(cq.agent)].clips.size())
-                        throw std::runtime_error("choice " + std::to_string(r.choices.size()) +
-                                                 ": a query names a clip not in the tracks");
-                    cand.against.push_back(cq);
-                }
-                cp.candidates.push_back(std::move(cand));
-            }
-            r.choices.push_back(std::move(cp));
-        }
+        r.scenario = j.value("scenario", std::string());
+        for (const auto& t : j.at("tracks")) r.tracks.push_back(track_of(t, r.frames));
+        const auto& choices = j.at("choices");
+        r.choices.reserve(choices.size());
+        for (const auto& c : choices) r.choices.push_back(choice_of(c, r));  // queries name earlier ones only
         return r;
     } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    } catch (const std::out_of_range& e) {
         throw std::runtime_error(file + ": " + e.what());
     }
 }

@@ -1,6 +1,7 @@
 // What the renderer draws: the clips (tree, placement, skeleton), which layers, the time cursor and
 // the current trace step. Plain data filled by the viewer; the renderer keeps no scene of its own.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,6 +52,17 @@ struct PosedSkeleton {
     glm::vec3 color{0.5f};
 };
 
+/// A polygon on the ground extruded over global time [t0, t1] (flat when t0 == t1): a crowd's walls,
+/// obstacles and goals over the whole run, or the disks in contact at the cursor. Drawn as edges, and
+/// with `fill` > 0 its side faces too, that opaque.
+struct Prism {
+    std::vector<std::array<double, 2>> ground;  ///< metres, in order; two points make a segment
+    double t0 = 0, t1 = 0;                       ///< seconds
+    glm::vec3 color{0.3f};
+    float fill = 0.0f;
+    bool on_top = false;  ///< drawn over everything, thick (marks that must not hide in the stacks)
+};
+
 /// The trace step to show: event `step` of `events`, a query between clips a and b.
 struct TraceView {
     const Trace* events = nullptr;
@@ -66,6 +78,7 @@ struct Frame {
     double skeleton_scale = 0.5;  ///< skeleton height factor on the cursor plane
     TraceView trace;
     std::vector<PosedSkeleton> posed;  ///< with the skeletons layer: drawn at the cursor, over everything
+    std::vector<Prism> prisms;         ///< the ones not on top count in the scene's bounds
     /// Changes whenever clips, placements or trees change: the renderer rebuilds cached geometry.
     std::uint64_t revision = 0;
 };

@@ -36,7 +36,7 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
     const double tick = 0.15 * std::max(1.0, (x1 - x0) / 10.0);
     if (frame.layers.labels) {
         char caption[48];
-        std::snprintf(caption, sizeof caption, "time (%g m per s)", ts);
+        std::snprintf(caption, sizeof caption, "time (%.2g m per s)", ts);
         text.add(to_gl(x0, y0, t1, ts) + glm::vec3(0, 0.25f, 0), caption, ink, Anchor::Right);
     }
     for (double t = std::ceil(t0 / step) * step; t <= t1 + 1e-9; t += step) {

@@ -6,6 +6,7 @@
 #include "cursor_layer.h"
 #include "disk_layer.h"
 #include "grid_layer.h"
+#include "prism_layer.h"
 #include "shader.h"
 #include "text_layer.h"
 #include "trace_layer.h"
@@ -25,6 +26,13 @@ Bounds scene_bounds(const Frame& frame) {
         }
         if (!path.samples.empty()) b.add({b.lo.x, b.lo.y, clip.place.t0 + path.duration()});
     }
+    for (const Prism& p : frame.prisms) {
+        if (p.on_top) continue;
+        for (const auto& g : p.ground) {
+            b.add({g[0], g[1], p.t0});
+            b.add({g[0], g[1], p.t1});
+        }
+    }
     return b;
 }
 
@@ -41,6 +49,7 @@ struct Renderer::Layers {
     GridLayer grid;
     DiskLayer disks;
     BoxLayer boxes;
+    PrismLayer prisms;
     CursorLayer cursor;
     TraceLayer trace;
     TextLayer text;
@@ -86,6 +95,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     l.grid.draw(frame, ctx, l.text);
     l.disks.draw(frame, ctx, false);
     l.boxes.draw(frame, ctx, false);
+    l.prisms.draw(frame, ctx, false);
     l.cursor.draw(frame, ctx, false, l.text);
     l.trace.draw(frame, ctx, false);
 
@@ -95,6 +105,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     glDepthMask(GL_FALSE);
     l.disks.draw(frame, ctx, true);
     l.boxes.draw(frame, ctx, true);
+    l.prisms.draw(frame, ctx, true);
     l.trace.draw(frame, ctx, true);
     l.cursor.draw(frame, ctx, true, l.text);
 
@@ -103,8 +114,9 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     glDisable(GL_BLEND);
     l.trace.draw_hit(frame, ctx, l.disks);
 
-    // Labels and posed skeletons (crowd agents) on top.
+    // Labels, contacts and posed skeletons (crowd agents) on top.
     glDisable(GL_DEPTH_TEST);
+    l.prisms.draw_on_top(frame, ctx);
     l.cursor.draw_posed(frame, ctx);
     l.text.draw(ctx);
     glDepthMask(GL_TRUE);

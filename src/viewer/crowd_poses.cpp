@@ -8,27 +8,12 @@
 
 namespace mobb::viewer {
 
-io::Clip load_graph_source(const crowd::MotionGraph& g, int source) {
-    const crowd::GraphSource& src = g.sources.at(std::size_t(source));
-    // The graph's own load: frames dropped first, then resampled (LoadOptions applies them in that order).
-    io::LoadOptions lo;
-    lo.fps = g.fps;
-    lo.frame_begin = src.frame_begin;
-    const std::string file = io::resolve_data_file(src.file);
-    io::Clip clip = io::load_clip(file, lo);
-    if (int(clip.path.size()) != src.samples)
-        throw std::runtime_error(file + ": " + std::to_string(clip.path.size()) + " samples at " +
-                                 std::to_string(g.fps) + " fps, the graph expects " + std::to_string(src.samples) +
-                                 " (a different file?)");
-    return clip;
-}
-
 namespace {
 
 std::unique_ptr<PoseSource> make_source(const crowd::MotionGraph& g, int source) {
     auto out = std::make_unique<PoseSource>();
     try {
-        auto clip = std::make_shared<io::Clip>(load_graph_source(g, source));
+        auto clip = std::make_shared<io::Clip>(crowd::load_graph_source(g, source));
         const crowd::PoseTrack track = crowd::pose_track(*clip, crowd::select_joints(clip->animation.skeleton));
         for (int f = 0; f < track.frames; ++f) {
             out->root_x.push_back(track.root[std::size_t(f)].x);

@@ -14,11 +14,6 @@
 
 namespace mobb::viewer {
 
-/// Source `source` of a graph loaded as the graph was built from it: resampled to the graph's fps,
-/// after dropping the graph's frame_begin frames (the stray T-pose of CMU 007_*). Throws io::LoadError
-/// naming the file, or std::runtime_error when its sample count differs from the graph's.
-io::Clip load_graph_source(const crowd::MotionGraph& graph, int source);
-
 /// One source as the skeletons need it: the animation, and per sample the root and heading the graph
 /// used to localise clips (crowd::pose_track), plus the lowest joint height (the skeleton's feet).
 struct PoseSource {

@@ -1,10 +1,12 @@
 #include "crowd_view.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "frame.h"
+#include "mobb/core/angle.h"
 
 namespace mobb::viewer {
 
@@ -65,9 +67,19 @@ State load_crowd_state(const std::string& record_file, float aspect) {
     s.scene.layers.skeletons = true;
     s.scene.layers.trace = false;
     s.scene.skeleton_scale = 1.0;  // life-size at 1 m per s: a crowd is seen from farther than a pair
+    // The whole run at most about as tall as the world is wide, on a round scale (a metre per second at most).
+    const double run = double(r.frames) * r.dt, fit = std::max(r.world.width(), r.world.height()) / std::max(run, 1e-9);
+    s.scene.time_scale = 0.05;
+    for (double scale : {1.0, 0.5, 0.25, 0.2, 0.1})
+        if (scale <= fit * 1.25) {
+            s.scene.time_scale = scale;
+            break;
+        }
     s.scene.width = 960;
     s.scene.height = 540;
     view->agents = int(r.tracks.size());
+    view->contacts = crowd::frame_contacts(r);
+    view->marks = timeline_marks(*view);
     s.crowd = view;
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         Path path;
@@ -148,10 +160,22 @@ bool open_candidate_query(State& s, int k, int j, std::string* message) {
     const int a = v.candidate_clips[std::size_t(k)];
     if (a < 0) return fail("candidate clip " + std::to_string(cand.clip) + " is not in the graph");
     const crowd::CandidateQuery& q = cand.against[std::size_t(j)];
-    if (q.agent < 0 || std::size_t(q.agent) >= v.record.tracks.size() || q.index < 0 ||
-        std::size_t(q.index) >= v.record.tracks[std::size_t(q.agent)].clips.size())
-        return fail("query " + std::to_string(j) + " names no committed clip of the record");
-    const crowd::PlacedClip& other = v.record.tracks[std::size_t(q.agent)].clips[std::size_t(q.index)];
+    // The record places the candidate clip; the escape clips of the routes it tried are not kept.
+    if (q.mine != 0)
+        return fail("query " + std::to_string(j) + " was asked by the candidate's " +
+                    (q.mine > 0 ? "escape clip " + std::to_string(q.mine) : std::string("held ground")) +
+                    ": not a clip to trace");
+    std::optional<crowd::FramedClip> against;
+    try {
+        against = crowd::query_clip(v.record, q);
+    } catch (const std::out_of_range&) {
+        return fail("query " + std::to_string(j) + " names no clip of the record");
+    }
+    if (!against)
+        return fail("query " + std::to_string(j) + " was against " +
+                    (q.agent < 0 ? "a wall or an obstacle" : "agent " + std::to_string(q.agent) + "'s held ground") +
+                    ": not a clip to trace");
+    const crowd::FramedClip& other = *against;
     if (other.clip < 0 || std::size_t(other.clip) >= v.graph->clips.size())
         return fail("agent " + std::to_string(q.agent) + "'s clip " + std::to_string(other.clip) +
                     " is not in the graph");
@@ -195,6 +219,76 @@ void update_crowd_playback(State& s, double seconds) {
     const double end = double(s.crowd->record.frames) * s.crowd->record.dt;
     s.scene.cursor += seconds * double(s.crowd->rate);
     if (end > 0 && s.scene.cursor > end) s.scene.cursor = std::fmod(s.scene.cursor, end);
+}
+
+namespace {
+
+std::vector<std::array<double, 2>> circle(double x, double y, double r, int sides) {
+    std::vector<std::array<double, 2>> out;
+    for (int k = 0; k < sides; ++k) {
+        const double a = 2 * kPi * k / sides;
+        out.push_back({x + r * std::cos(a), y + r * std::sin(a)});
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
+    const crowd::Record& r = v.record;
+    const double end = double(r.frames) * r.dt;
+    std::vector<render::Prism> out;
+    const crowd::World& w = r.world;
+    if (w.walls)
+        out.push_back({crowd::Polygon::rectangle(w.x0, w.y0, w.x1, w.y1).vertices, 0, end, glm::vec3(0.35f), 0, false});
+    for (const crowd::Polygon& p : w.obstacles) out.push_back({p.vertices, 0, end, glm::vec3(0.30f), 0.35f, false});
+    for (std::size_t a = 0; a < r.tracks.size(); ++a)
+        if (const auto& g = r.tracks[a].goal)
+            out.push_back({circle((*g)[0], (*g)[1], 0.15, 4), 0, end, render::clip_color(int(a)), 0.6f, false});
+    const auto frame = std::int64_t(std::floor(t / r.dt));
+    auto it = std::lower_bound(v.contacts.begin(), v.contacts.end(), frame,
+                               [](const crowd::Contact& c, std::int64_t f) { return c.frame < f; });
+    for (; it != v.contacts.end() && it->frame == frame; ++it)
+        for (int a : {it->a, it->b}) {
+            const auto& d = r.tracks[std::size_t(a)].samples[std::size_t(frame)];
+            out.push_back({circle(d[1], d[2], d[3] + 0.04, 24), t, t, glm::vec3(0.95f, 0.1f, 0.1f), 0, true});
+        }
+    return out;
+}
+
+std::vector<TimelineMark> timeline_marks(const CrowdView& v) {
+    std::vector<TimelineMark> out;
+    for (std::size_t k = 0; k < v.record.choices.size(); ++k) {
+        const crowd::ChoicePoint& c = v.record.choices[k];
+        if (c.fallback) out.push_back({TimelineMark::Fallback, c.frame, c.agent, int(k), 1});
+    }
+    for (const crowd::Contact& c : v.contacts) {
+        if (!out.empty() && out.back().kind == TimelineMark::Contact && out.back().frame == c.frame)
+            ++out.back().count;
+        else
+            out.push_back({TimelineMark::Contact, c.frame, c.a, -1, 1});
+    }
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
+    return out;
+}
+
+const TimelineMark* nearest_mark(const std::vector<TimelineMark>& marks, std::int64_t frame, std::int64_t reach) {
+    const TimelineMark* best = nullptr;
+    for (const TimelineMark& m : marks) {
+        const std::int64_t d = m.frame > frame ? m.frame - frame : frame - m.frame;
+        if (d <= reach && (!best || d < (best->frame > frame ? best->frame - frame : frame - best->frame))) best = &m;
+    }
+    return best;
+}
+
+void jump_to(State& s, const TimelineMark& m) {
+    CrowdView& v = *s.crowd;
+    if (m.kind == TimelineMark::Fallback)
+        select_choice(s, m.agent, m.choice);
+    else
+        select_choice(s, m.agent, -1);
+    // Inside the frame, so the contacts of that frame show at the cursor.
+    s.scene.cursor = (double(m.frame) + 0.5) * v.record.dt;
 }
 
 }  // namespace mobb::viewer

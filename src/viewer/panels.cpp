@@ -275,11 +275,52 @@ void pick_panel(const State& s, const Ui& ui) {
     ImGui::End();
 }
 
-/// The graph clip id of a query's other clip, -1 when the record does not have it.
-int committed_clip(const crowd::Record& r, const crowd::CandidateQuery& q) {
-    if (q.agent < 0 || std::size_t(q.agent) >= r.tracks.size()) return -1;
-    const auto& clips = r.tracks[std::size_t(q.agent)].clips;
-    return q.index >= 0 && std::size_t(q.index) < clips.size() ? clips[std::size_t(q.index)].clip : -1;
+/// What a query was against, in words: another agent's clip (committed, or reserved to stop it), its
+/// held ground, or a wall or an obstacle.
+std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q) {
+    if (q.agent < 0) return "wall or obstacle " + std::to_string(q.commit);
+    if (q.piece < 0) return "agent " + std::to_string(q.agent) + ", held ground";
+    try {
+        const auto c = crowd::query_clip(r, q);
+        return "agent " + std::to_string(q.agent) + ", clip " + std::to_string(c->clip) +
+               (q.piece > 0 ? " (its escape)" : "");
+    } catch (const std::out_of_range&) {
+        return "agent " + std::to_string(q.agent) + ", unknown clip";
+    }
+}
+
+/// The run as a strip: fallbacks (orange, upper half) and frames with contacts (red, lower half) at their
+/// time, the cursor in white. Hover names the nearest mark; a click jumps to it (or to the time clicked),
+/// dragging scrubs.
+void timeline_strip(State& s) {
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record;
+    const float w = std::max(ImGui::GetContentRegionAvail().x, 50.0f), h = 18.0f;
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("timeline", ImVec2(w, h));
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(38, 38, 44, 255));
+    const double frames = double(std::max<std::int64_t>(1, r.frames));
+    auto x_of = [&](double f) { return p0.x + w * float(f / frames); };
+    for (const TimelineMark& m : v.marks) {
+        const float x = x_of(double(m.frame));
+        const bool fallback = m.kind == TimelineMark::Fallback;
+        draw->AddLine(ImVec2(x, fallback ? p0.y : p0.y + h / 2), ImVec2(x, fallback ? p0.y + h / 2 : p0.y + h),
+                      fallback ? IM_COL32(255, 160, 40, 255) : IM_COL32(235, 40, 40, 255));
+    }
+    const float cx = x_of(s.scene.cursor / r.dt);
+    draw->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p0.y + h), IM_COL32(255, 255, 255, 255), 2.0f);
+    if (!ImGui::IsItemHovered() && !ImGui::IsItemActive()) return;
+    const auto frame = std::int64_t((ImGui::GetIO().MousePos.x - p0.x) / w * float(frames));
+    const TimelineMark* near = nearest_mark(v.marks, frame, std::int64_t(4.0 / w * frames) + 1);
+    if (near && near->kind == TimelineMark::Fallback)
+        ImGui::SetTooltip("fallback: agent %d at %.2f s", near->agent, double(near->frame) * r.dt);
+    else if (near)
+        ImGui::SetTooltip("%d agent pairs in contact at %.2f s", near->count, double(near->frame) * r.dt);
+    if (ImGui::IsItemClicked() && near)
+        jump_to(s, *near);
+    else if (ImGui::IsItemActive())
+        s.scene.cursor = std::clamp(double(frame), 0.0, frames) * r.dt;
 }
 
 /// One candidate of the selected choice point, coloured taken / clear / rejected, unfolding into its
@@ -298,7 +339,7 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
                   taken ? "taken"
                   : ok  ? "clear"
                         : "rejected",
-                  cand.outside ? " (leaves the world)" : "", cand.queries, cand.hits, k);
+                  cand.outside ? " (leaves the world or meets a wall)" : "", cand.queries, cand.hits, k);
     ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
     // The candidate whose query is open stays unfolded.
     if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
@@ -307,8 +348,8 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     if (!open) return;
     for (std::size_t j = 0; j < cand.against.size(); ++j) {
         const crowd::CandidateQuery& q = cand.against[j];
-        std::snprintf(label, sizeof label, "vs agent %d, clip %d (its #%d): %s###q%d_%zu", q.agent,
-                      committed_clip(v.record, q), q.index, q.hit ? "hit" : "clear", k, j);
+        std::snprintf(label, sizeof label, "vs %s: %s###q%d_%zu", query_target(v.record, q).c_str(),
+                      q.hit ? "hit" : "clear", k, j);
         const bool shown = v.opened_candidate == k && v.opened_query == int(j);
         if (ImGui::Selectable(label, shown) && v.graph) open_candidate_query(s, k, int(j), &ui.status);
     }
@@ -333,6 +374,13 @@ void crowd_panel(State& s, Ui& ui) {
     ImGui::SliderFloat("rate", &v.rate, 0.1f, 4.0f, "%.1f x");
     float t = float(s.scene.cursor);
     if (ImGui::SliderFloat("time", &t, 0.0f, float(double(r.frames) * r.dt), "%.2f s")) s.scene.cursor = double(t);
+    timeline_strip(s);
+    const auto count = [&](TimelineMark::Kind kind) {
+        return std::count_if(v.marks.begin(), v.marks.end(), [&](const auto& m) { return m.kind == kind; });
+    };
+    ImGui::TextColored(ImVec4(1.0f, 0.63f, 0.16f, 1.0f), "%ld fallbacks", long(count(TimelineMark::Fallback)));
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.92f, 0.16f, 0.16f, 1.0f), "%ld contact frames", long(count(TimelineMark::Contact)));
     if (ImGui::Button("from above")) ui.request_view = 1;
     ImGui::SameLine();
     if (ImGui::Button("space-time")) ui.request_view = 2;

@@ -119,6 +119,7 @@ render::Frame frame_of(const State& s) {
     f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
     if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
+    if (s.crowd) f.prisms = crowd_prisms(*s.crowd, s.scene.cursor);
     f.revision = s.revision;
     return f;
 }

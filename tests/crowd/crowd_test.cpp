@@ -1,14 +1,16 @@
-// Crowd runs on the committed graph, checked on their records by this test's own frame-by-frame scan.
+// Crowd runs on the committed graph, checked on their records by this test's own frame-by-frame scan and
+// by replaying their queries with the brute-force reference - never through the trees or the sweep.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "files.h"
-#include "mobb/crowd/broad_phase.h"
+#include "mobb/core/brute.h"
 #include "mobb/crowd/crowd.h"
 
 namespace mobb::crowd {
@@ -20,7 +22,8 @@ const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_lo
 
 struct Fixture {
     MotionGraph graph = load_graph(kGraph);
-    std::vector<Tree> trees = build_trees(graph, {});
+    NarrowPhase sweep = NarrowPhase::sweep(graph);
+    NarrowPhase mobb = NarrowPhase::trees(graph, {});
 };
 
 Fixture& fixture() {
@@ -28,39 +31,30 @@ Fixture& fixture() {
     return f;
 }
 
-CrowdRun run(int agents, double seconds, std::uint64_t seed, Selection select, bool log = false, int threads = 1) {
+const Path& path_of(int clip) { return fixture().graph.clips[std::size_t(clip)].path; }
+
+CrowdOptions wander(int agents, double seconds, std::uint64_t seed, Selection select = Selection::Avoid) {
     CrowdOptions o;
     o.agents = agents;
     o.seconds = seconds;
     o.seed = seed;
     o.select = select;
-    o.log_queries = log;
-    o.threads = threads;
-    return run_crowd(fixture().graph, fixture().trees, o);
+    // The paper's density, 12 m^2 per agent.
+    const double side = std::sqrt(12.0 * agents / 1.2);
+    o.world.x1 = side;
+    o.world.y1 = 1.2 * side;
+    return o;
 }
 
-// The broad-phase box of a placed clip (crowd.h: its root positions' box padded by its largest
-// radius), computed here from every sample, independently of the simulation's convex hulls.
-SpaceTimeBox box_of(int clip, const Placement& p, std::int64_t start) {
-    const Path& path = fixture().graph.clips[std::size_t(clip)].path;
-    const Rigid2 m = Rigid2::of(p);
-    SpaceTimeBox b{1e300, 1e300, -1e300, -1e300, start, start + std::int64_t(path.size())};
-    double r = 0;
-    for (const Sample& s : path.samples) {
-        const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
-        b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y);
-        b.x1 = std::max(b.x1, x), b.y1 = std::max(b.y1, y);
-        r = std::max(r, s.r);
-    }
-    b.x0 -= r, b.y0 -= r, b.x1 += r, b.y1 += r;
-    return b;
+CrowdRun run(const CrowdOptions& o, const NarrowPhase& narrow = fixture().sweep) {
+    return run_crowd(fixture().graph, narrow, o);
 }
 
 // Every counter of a summary but the times.
 std::vector<std::uint64_t> counters(const CrowdSummary& s) {
     return {s.choice_points, s.candidates,         s.queries,    s.hits,   s.tests2d,   s.tests3d,
             s.samples,       s.root_rejected,      s.time_pairs, s.pruned, s.fallbacks, s.outside,
-            s.contacts,      s.contacts_unexcused, s.reevaluated};
+            s.contacts,      s.contacts_unexcused, s.reevaluated, s.escapes};
 }
 
 std::string logged_text(const std::vector<LoggedQuery>& log) {
@@ -73,18 +67,20 @@ std::string logged_text(const std::vector<LoggedQuery>& log) {
     return out.str();
 }
 
-// Contacts at every frame between every pair, not excused by a fallback clip of either agent.
-int unexcused_contacts(const Record& r, int& all) {
-    auto fallback = [&](int a, std::int64_t f) {
-        for (const PlacedClip& c : r.tracks[std::size_t(a)].clips) {
-            const std::int64_t n = std::int64_t(fixture().graph.clips[std::size_t(c.clip)].path.size());
-            if (c.start <= f && f < c.start + n) return c.fallback;
-        }
-        ADD_FAILURE() << "agent " << a << " has no clip at frame " << f;
-        return false;
-    };
-    int bad = 0;
-    all = 0;
+// The clip agent `a` plays at frame f (the test's own lookup).
+const PlacedClip& clip_at(const Record& r, int a, std::int64_t f) {
+    for (const PlacedClip& c : r.tracks[std::size_t(a)].clips)
+        if (c.start <= f && f < c.start + std::int64_t(path_of(c.clip).size())) return c;
+    throw std::logic_error("agent " + std::to_string(a) + " has no clip at frame " + std::to_string(f));
+}
+
+struct Scan {
+    int contacts = 0, outside_fallbacks = 0;
+};
+
+// Contacts at every frame between every pair of agents, by brute force over all pairs.
+Scan scan_contacts(const Record& r) {
+    Scan out;
     for (std::int64_t f = 0; f < r.frames; ++f)
         for (std::size_t a = 0; a < r.tracks.size(); ++a)
             for (std::size_t b = a + 1; b < r.tracks.size(); ++b) {
@@ -92,38 +88,67 @@ int unexcused_contacts(const Record& r, int& all) {
                 const auto& q = r.tracks[b].samples[std::size_t(f)];
                 const double dx = p[1] - q[1], dy = p[2] - q[2], s = p[3] + q[3];
                 if (dx * dx + dy * dy >= s * s) continue;
-                ++all;
-                if (!fallback(int(a), f) && !fallback(int(b), f)) ++bad;
+                ++out.contacts;
+                if (!clip_at(r, int(a), f).fallback && !clip_at(r, int(b), f).fallback) ++out.outside_fallbacks;
             }
-    return bad;
+    return out;
 }
 
-TEST(Crowd, AvoidRunHasNoContactsOutsideFallbacks) {
-    const CrowdRun c = run(30, 20, 7, Selection::Avoid);
+// The record's samples are its clips' samples placed where the clips were committed.
+void expect_samples_follow_clips(const Record& r) {
+    for (std::size_t a = 0; a < r.tracks.size(); ++a)
+        for (std::int64_t f = 0; f < r.frames; f += 7) {
+            const PlacedClip& c = clip_at(r, int(a), f);
+            const Sample& s = path_of(c.clip).samples[std::size_t(f - c.start)];
+            const double cs = std::cos(c.place.theta), sn = std::sin(c.place.theta);
+            const auto& got = r.tracks[a].samples[std::size_t(f)];
+            EXPECT_NEAR(got[1], c.place.x + cs * s.x - sn * s.y, 1e-9);
+            EXPECT_NEAR(got[2], c.place.y + sn * s.x + cs * s.y, 1e-9);
+            EXPECT_EQ(got[3], s.r);
+        }
+}
+
+TEST(Crowd, WanderHasNoContactAndStaysInsideTheWalls) {
+    const CrowdRun c = run(wander(40, 20, 7));
     const Record& r = c.record;
-    ASSERT_EQ(r.tracks.size(), 30u);
+    ASSERT_EQ(r.tracks.size(), 40u);
     ASSERT_EQ(r.frames, 600);
     for (const AgentTrack& t : r.tracks) {
         ASSERT_EQ(t.samples.size(), 600u);
-        for (std::size_t f = 0; f < t.samples.size(); ++f) EXPECT_DOUBLE_EQ(t.samples[f][0], double(f) / 30.0);
+        for (std::size_t f = 0; f < t.samples.size(); ++f) {
+            const auto& s = t.samples[f];
+            EXPECT_DOUBLE_EQ(s[0], double(f) / 30.0);
+            // Walls: every disk inside the rectangle (touching allowed).
+            EXPECT_GE(s[1] - s[3], r.world.x0 - 1e-9);
+            EXPECT_LE(s[1] + s[3], r.world.x1 + 1e-9);
+            EXPECT_GE(s[2] - s[3], r.world.y0 - 1e-9);
+            EXPECT_LE(s[2] + s[3], r.world.y1 + 1e-9);
+        }
     }
-    int all = 0;
-    EXPECT_EQ(unexcused_contacts(r, all), 0);
-    EXPECT_EQ(std::uint64_t(all), c.summary.contacts);
+    expect_samples_follow_clips(r);
+    const Scan scan = scan_contacts(r);
+    EXPECT_EQ(scan.outside_fallbacks, 0);
+    EXPECT_EQ(std::uint64_t(scan.contacts), c.summary.contacts);
     EXPECT_EQ(c.summary.contacts_unexcused, 0u);
     EXPECT_GT(c.summary.queries, 0u);
     EXPECT_GT(c.summary.pruned, 0u);
+    // The agents walk: most of the ground a graph clip covers, on average.
+    double length = 0;
+    for (const AgentTrack& t : r.tracks)
+        for (std::size_t f = 1; f < t.samples.size(); ++f)
+            length += std::hypot(t.samples[f][1] - t.samples[f - 1][1], t.samples[f][2] - t.samples[f - 1][2]);
+    EXPECT_GT(length / (40 * 20.0), 0.6) << "m/s";
 }
 
 TEST(Crowd, ClipsFollowTheGraphOnTheFrameGrid) {
-    const CrowdRun c = run(10, 15, 3, Selection::Avoid);
+    const CrowdRun c = run(wander(10, 15, 3));
     const MotionGraph& g = fixture().graph;
     for (const AgentTrack& t : c.record.tracks)
         for (std::size_t k = 1; k < t.clips.size(); ++k) {
             const PlacedClip &a = t.clips[k - 1], &b = t.clips[k];
             const auto& succ = g.clips[std::size_t(a.clip)].successors;
             EXPECT_NE(std::find(succ.begin(), succ.end(), b.clip), succ.end());
-            EXPECT_EQ(b.start, a.start + std::int64_t(g.clips[std::size_t(a.clip)].path.size()));
+            EXPECT_EQ(b.start, a.start + std::int64_t(path_of(a.clip).size()));
             EXPECT_EQ(b.place.t0, double(b.start) * g.dt());
             const Placement n = g.next(a.place, a.clip);
             EXPECT_NEAR(b.place.x, n.x, 1e-9);
@@ -132,40 +157,121 @@ TEST(Crowd, ClipsFollowTheGraphOnTheFrameGrid) {
 }
 
 TEST(Crowd, SameSeedSameRecord) {
-    const std::string a = record_to_text(run(20, 10, 42, Selection::Avoid).record, "");
-    const std::string b = record_to_text(run(20, 10, 42, Selection::Avoid).record, "");
-    const std::string c = record_to_text(run(20, 10, 43, Selection::Avoid).record, "");
+    const std::string a = record_to_text(run(wander(20, 10, 42)).record, "");
+    const std::string b = record_to_text(run(wander(20, 10, 42)).record, "");
+    const std::string c = record_to_text(run(wander(20, 10, 43)).record, "");
     EXPECT_EQ(a, b);
     EXPECT_NE(a, c);
 }
 
-TEST(Crowd, EveryTreeTypeGivesTheSameCrowd) {
-    CrowdOptions o;
-    o.agents = 25;
-    o.seconds = 10;
-    o.seed = 5;
-    // Same answers, so the same decisions; only the work counted differs.
+// Same answers, so the same decisions, whichever exact query answers them; only the work counted differs.
+TEST(Crowd, EveryNarrowPhaseGivesTheSameCrowd) {
     auto decisions = [](const Record& r) {
         std::string s;
         for (const ChoicePoint& c : r.choices) {
-            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + (c.fallback ? "F" : "") + ":" +
-                 std::to_string(c.queries) + " ";
+            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + c.outcome + ":" + std::to_string(c.queries) + " ";
             for (const Candidate& k : c.candidates) s += std::to_string(k.hits) + ",";
         }
         return s;
     };
-    const Record ref = run_crowd(fixture().graph, fixture().trees, o).record;
-    for (TreeType t : {TreeType::Umobb, TreeType::Hybrid1, TreeType::Hybrid2, TreeType::Mobb1, TreeType::Umobb1}) {
-        TreeOptions to;
-        to.type = t;
-        const Record r = run_crowd(fixture().graph, build_trees(fixture().graph, to), o).record;
-        EXPECT_EQ(decisions(r), decisions(ref)) << to_string(t);
-        EXPECT_TRUE(r.tracks.back().samples == ref.tracks.back().samples) << to_string(t);
+    for (Selection select : {Selection::Avoid, Selection::Random}) {
+        const CrowdOptions o = wander(25, 10, 5, select);
+        const Record ref = run(o).record;
+        EXPECT_EQ(ref.tree, "sweep");
+        for (TreeType t : {TreeType::Mobb, TreeType::Umobb, TreeType::Hybrid1, TreeType::Hybrid2, TreeType::Mobb1,
+                           TreeType::Umobb1}) {
+            TreeOptions to;
+            to.type = t;
+            const CrowdRun r = run(o, NarrowPhase::trees(fixture().graph, to));
+            EXPECT_EQ(r.record.tree, to_string(t));
+            EXPECT_EQ(decisions(r.record), decisions(ref)) << to_string(t);
+            EXPECT_TRUE(r.record.tracks.back().samples == ref.tracks.back().samples) << to_string(t);
+            EXPECT_GT(r.summary.tests2d + r.summary.tests3d, 0u) << "the trees count their box tests";
+        }
     }
 }
 
+// Each recorded query of a candidate's own clip (mine = 0) against another agent's clip replays to its
+// answer by brute force; held ground by the disks; the answers add up to the candidate's hits.
+TEST(Crowd, RecordedQueriesReplayByBruteForce) {
+    const CrowdRun c = run(wander(30, 15, 11));
+    const Record& r = c.record;
+    std::uint64_t replayed = 0, held = 0;
+    for (std::size_t n = 0; n < r.choices.size(); ++n) {
+        const ChoicePoint& cp = r.choices[n];
+        const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+        const auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
+        ASSERT_NE(at, own.end());
+        ASSERT_EQ(at->start, cp.frame);
+        for (const Candidate& k : cp.candidates) {
+            EXPECT_EQ(k.against.size(), std::size_t(k.queries));
+            int hits = 0;
+            for (const CandidateQuery& q : k.against) {
+                hits += q.hit;
+                ASSERT_NE(q.agent, cp.agent);
+                if (q.mine != 0 || q.agent < 0) continue;
+                if (q.piece >= 0) {
+                    const std::optional<FramedClip> other = query_clip(r, q);
+                    ASSERT_TRUE(other);
+                    EXPECT_LT(q.commit, int(n)) << "only what was committed before";
+                    EXPECT_EQ(collide_brute(path_of(k.clip), at->place, path_of(other->clip), other->place), q.hit)
+                        << "choice " << n;
+                    ++replayed;
+                } else if (q.commit >= 0) {
+                    const ChoicePoint& holder = r.choices[std::size_t(q.commit)];
+                    ASSERT_TRUE(holder.holds);
+                    bool hit = false;
+                    const double cs = std::cos(at->place.theta), sn = std::sin(at->place.theta);
+                    const Path& p = path_of(k.clip);
+                    for (std::size_t i = 0; i < p.size(); ++i) {
+                        if (cp.frame + std::int64_t(i) + 1 <= holder.hold_frame) continue;
+                        const Sample& s = p.samples[i];
+                        const double x = at->place.x + cs * s.x - sn * s.y, y = at->place.y + sn * s.x + cs * s.y;
+                        hit = hit || std::hypot(x - holder.hold[0], y - holder.hold[1]) < s.r + holder.hold[2] - 1e-9;
+                    }
+                    if (hit) {
+                        EXPECT_TRUE(q.hit) << "choice " << n;
+                    }
+                    ++held;
+                }
+            }
+            EXPECT_EQ(hits, k.hits);
+        }
+    }
+    EXPECT_GT(replayed, 100u);
+    EXPECT_GT(held, 10u);
+}
+
+// A candidate is taken only when its whole plan was free; those tried before it were not.
+TEST(Crowd, TakesTheFirstCandidateWithAFreePlan) {
+    const CrowdRun c = run(wander(40, 20, 13));
+    int taken = 0, skipped = 0;
+    for (const ChoicePoint& cp : c.record.choices) {
+        if (cp.outcome != "candidate") continue;
+        ASSERT_FALSE(cp.candidates.empty());
+        const Candidate& last = cp.candidates.back();
+        EXPECT_EQ(last.clip, cp.taken);
+        for (const CandidateQuery& q : last.against) {
+            // Routes tried before the one taken may have hit; the clip's own queries came first, all free.
+            if (q.mine == 0) {
+                EXPECT_FALSE(q.hit);
+            }
+        }
+        EXPECT_TRUE(cp.holds) << "a taken candidate reserves where it would stop";
+        ++taken;
+        for (std::size_t k = 0; k + 1 < cp.candidates.size(); ++k) {
+            EXPECT_GT(cp.candidates[k].hits, 0);
+            ++skipped;
+        }
+    }
+    EXPECT_GT(taken, 100);
+    EXPECT_GT(skipped, 0);
+}
+
 TEST(Crowd, RandomModeRunsEveryQuery) {
-    const CrowdRun c = run(30, 10, 1, Selection::Random, true);
+    CrowdOptions o = wander(30, 10, 1, Selection::Random);
+    o.log_queries = true;
+    const CrowdRun c = run(o, fixture().mobb);
     std::uint64_t per_candidate = 0;
     for (const ChoicePoint& cp : c.record.choices) {
         EXPECT_FALSE(cp.fallback);
@@ -173,16 +279,17 @@ TEST(Crowd, RandomModeRunsEveryQuery) {
     }
     EXPECT_EQ(per_candidate, c.summary.queries);
     EXPECT_EQ(c.queries.size(), c.summary.queries);
-    // Logged queries replay to the same answers.
+    EXPECT_FALSE(c.record.world.walls) << "the paper's timing workload has no walls";
     for (std::size_t k = 0; k < c.queries.size(); k += 7) {
         const LoggedQuery& q = c.queries[k];
-        EXPECT_EQ(collide(fixture().trees[std::size_t(q.clip_a)], q.pa, fixture().trees[std::size_t(q.clip_b)], q.pb),
-                  q.hit);
+        EXPECT_EQ(collide_brute(path_of(q.clip_a), q.pa, path_of(q.clip_b), q.pb), q.hit);
     }
 }
 
 TEST(Crowd, RecordRoundTripsThroughAFile) {
-    const CrowdRun c = run(5, 5, 9, Selection::Avoid);
+    CrowdOptions o = wander(8, 6, 9);
+    o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
+    const CrowdRun c = run(o);
     const std::string file = temp_file("crowd_record.json");
     {
         std::ofstream f(file);
@@ -192,66 +299,42 @@ TEST(Crowd, RecordRoundTripsThroughAFile) {
     std::remove(file.c_str());
     ASSERT_EQ(r.tracks.size(), c.record.tracks.size());
     EXPECT_EQ(r.frames, c.record.frames);
+    EXPECT_EQ(r.world.x1, o.world.x1);
+    EXPECT_TRUE(r.world.walls);
+    ASSERT_EQ(r.world.obstacles.size(), 1u);
+    EXPECT_EQ(r.world.obstacles[0].vertices, o.world.obstacles[0].vertices);
     EXPECT_EQ(r.tracks[2].samples[17], c.record.tracks[2].samples[17]);
     EXPECT_EQ(r.choices.size(), c.record.choices.size());
-    for (std::size_t k = 0; k < r.choices.size(); ++k)
-        for (std::size_t j = 0; j < r.choices[k].candidates.size(); ++j) {
-            const auto &x = r.choices[k].candidates[j].against, &y = c.record.choices[k].candidates[j].against;
-            ASSERT_EQ(x.size(), y.size());
-            for (std::size_t q = 0; q < x.size(); ++q)
-                EXPECT_TRUE(x[q].agent == y[q].agent && x[q].index == y[q].index && x[q].hit == y[q].hit);
-        }
-    EXPECT_EQ(frame_contacts(r).size(), c.summary.contacts);
-}
-
-// Each candidate's recorded queries name committed clips of other agents overlapping it in time, and
-// rerunning them gives the recorded answers, which add up to its hits.
-TEST(Crowd, RecordedQueriesReplayToTheirAnswers) {
-    const CrowdRun c = run(30, 15, 11, Selection::Avoid);
-    const MotionGraph& g = fixture().graph;
-    const Record& r = c.record;
-    std::uint64_t replayed = 0;
-    for (const ChoicePoint& cp : r.choices) {
-        const auto& own = r.tracks[std::size_t(cp.agent)].clips;
-        auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.start == cp.frame; });
-        ASSERT_NE(at, own.end());
-        for (const Candidate& k : cp.candidates) {
-            EXPECT_EQ(k.against.size(), std::size_t(k.queries));
-            int hits = 0;
-            for (const CandidateQuery& q : k.against) {
-                ASSERT_NE(q.agent, cp.agent);
-                const PlacedClip& other = r.tracks[std::size_t(q.agent)].clips[std::size_t(q.index)];
-                EXPECT_LT(other.commit, at->commit);
-                const bool hit = collide(fixture().trees[std::size_t(k.clip)], at->place,
-                                         fixture().trees[std::size_t(other.clip)], other.place);
-                EXPECT_EQ(hit, q.hit);
-                EXPECT_TRUE(times_overlap(at->place.t0, at->place.t0 + g.clips[std::size_t(k.clip)].path.duration(),
-                                          other.place.t0,
-                                          other.place.t0 + g.clips[std::size_t(other.clip)].path.duration()));
-                hits += q.hit;
-                ++replayed;
-            }
-            EXPECT_EQ(hits, k.hits);
+    for (std::size_t k = 0; k < r.choices.size(); ++k) {
+        const ChoicePoint &x = r.choices[k], &y = c.record.choices[k];
+        EXPECT_EQ(x.outcome, y.outcome);
+        EXPECT_EQ(x.escape.size(), y.escape.size());
+        EXPECT_EQ(x.hold, y.hold);
+        for (std::size_t j = 0; j < x.candidates.size(); ++j) {
+            const auto &a = x.candidates[j].against, &b = y.candidates[j].against;
+            ASSERT_EQ(a.size(), b.size());
+            for (std::size_t q = 0; q < a.size(); ++q)
+                EXPECT_TRUE(a[q].agent == b[q].agent && a[q].commit == b[q].commit && a[q].piece == b[q].piece &&
+                            a[q].mine == b[q].mine && a[q].hit == b[q].hit);
         }
     }
-    EXPECT_GT(replayed, 100u);
+    EXPECT_EQ(frame_contacts(r).size(), c.summary.contacts);
 }
 
 // The choice points of a frame run in parallel and are committed in agent order; any thread count
 // gives the very same record, logged queries (in the same order) and counters.
 TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
     for (Selection select : {Selection::Avoid, Selection::Random}) {
-        // Dense enough that choice points of one frame often meet (re-evaluations) and fallbacks occur.
-        const CrowdRun ref = run(60, 15, 21, select, true, 1);
+        // Dense enough that choice points of one frame often meet (re-evaluations).
+        CrowdOptions o = wander(60, 15, 21, select);
+        o.log_queries = true;
+        const CrowdRun ref = run(o);
         const std::string text = record_to_text(ref.record, summary_json(ref.summary));
         const std::string log = logged_text(ref.queries);
         EXPECT_GT(ref.summary.reevaluated, 0u) << to_string(select);
-        if (select == Selection::Avoid) {
-            EXPECT_GT(ref.summary.fallbacks, 0u);
-        }
-        EXPECT_EQ(ref.queries.size(), ref.summary.queries);
         for (int threads : {2, 3, 8}) {
-            const CrowdRun r = run(60, 15, 21, select, true, threads);
+            o.threads = threads;
+            const CrowdRun r = run(o);
             EXPECT_EQ(r.summary.threads, threads);
             EXPECT_TRUE(record_to_text(r.record, summary_json(r.summary)) == text)
                 << to_string(select) << ", " << threads << " threads";
@@ -261,61 +344,54 @@ TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
     }
 }
 
-// The outcome is that of taking the choice points one by one: each candidate queried exactly the
-// clips committed before its choice point (by other agents, still playing, boxes overlapping), in
-// commit order, up to its first hit when it stopped there.
-TEST(Crowd, EachChoiceSeesEveryEarlierCommit) {
-    for (Selection select : {Selection::Avoid, Selection::Random}) {
-        const CrowdRun c = run(60, 12, 4, select, false, 3);
-        const Record& r = c.record;
-        ASSERT_GT(c.summary.reevaluated, 0u);
-        // Committed clips in commit order: (commit, agent, index).
-        std::vector<std::array<std::int64_t, 3>> commits;
-        for (std::size_t a = 0; a < r.tracks.size(); ++a)
-            for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
-                commits.push_back({r.tracks[a].clips[k].commit, std::int64_t(a), std::int64_t(k)});
-        std::sort(commits.begin(), commits.end());
-        for (std::size_t n = 0; n < r.choices.size(); ++n) {
-            const ChoicePoint& cp = r.choices[n];
-            const auto& own = r.tracks[std::size_t(cp.agent)].clips;
-            const auto at =
-                std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
-            ASSERT_NE(at, own.end());
-            ASSERT_EQ(at->start, cp.frame);
-            for (const Candidate& k : cp.candidates) {
-                const SpaceTimeBox box = box_of(k.clip, at->place, cp.frame);
-                std::vector<std::pair<int, int>> expected;
-                for (const auto& [commit, b, index] : commits) {
-                    if (commit >= std::int64_t(n)) break;
-                    const PlacedClip& other = r.tracks[std::size_t(b)].clips[std::size_t(index)];
-                    if (b != cp.agent && box_of(other.clip, other.place, other.start).overlaps(box))
-                        expected.emplace_back(int(b), int(index));
-                }
-                ASSERT_LE(k.against.size(), expected.size());
-                for (std::size_t q = 0; q < k.against.size(); ++q) {
-                    EXPECT_EQ(k.against[q].agent, expected[q].first) << "choice " << n;
-                    EXPECT_EQ(k.against[q].index, expected[q].second) << "choice " << n;
-                }
-                const bool stopped =
-                    !k.against.empty() && k.against.back().hit && select == Selection::Avoid && !cp.fallback;
-                const bool skipped = k.outside && select == Selection::Avoid && !cp.fallback;
-                if (!stopped && !skipped) {
-                    EXPECT_EQ(k.against.size(), expected.size()) << "choice " << n;
-                }
+// Obstacles hold as the walls do: no sample disk of any agent overlaps one, checked here against the
+// polygon's dense sampling (its interior on a fine grid and its edges).
+TEST(Crowd, AgentsKeepClearOfObstacles) {
+    CrowdOptions o = wander(30, 20, 17);
+    o.world.obstacles = {Polygon::rectangle(5, 6, 6, 14), Polygon{{{12, 20}, {16, 22}, {13, 25}}}};
+    const CrowdRun c = run(o);
+    std::vector<std::array<double, 2>> dense;
+    for (const Polygon& p : o.world.obstacles) {
+        const auto b = bounds(p);
+        for (double x = b[0]; x <= b[2]; x += 0.02)
+            for (double y = b[1]; y <= b[3]; y += 0.02) {
+                // Inside by the crossing count (the test's own).
+                bool in = false;
+                const auto& v = p.vertices;
+                for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
+                    if ((v[i][1] > y) != (v[j][1] > y) &&
+                        x < (v[j][0] - v[i][0]) * (y - v[i][1]) / (v[j][1] - v[i][1]) + v[i][0])
+                        in = !in;
+                if (in) dense.push_back({x, y});
             }
-        }
     }
+    int near = 0;
+    for (const AgentTrack& t : c.record.tracks)
+        for (const auto& s : t.samples)
+            for (const auto& d : dense) {
+                const double dist = std::hypot(s[1] - d[0], s[2] - d[1]);
+                ASSERT_GE(dist, s[3] - 1e-9) << "a disk overlaps an obstacle at t = " << s[0];
+                near += dist < s[3] + 0.5;
+            }
+    EXPECT_GT(near, 0) << "agents come near the obstacles";
+    EXPECT_EQ(c.summary.contacts_unexcused, 0u);
 }
 
 TEST(Crowd, RejectsImpossibleWorlds) {
     CrowdOptions o;
     o.agents = 1000;
-    o.width = o.height = 5;
-    EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, o), std::invalid_argument);
+    o.world.x1 = o.world.y1 = 5;
+    EXPECT_THROW(run(o), std::invalid_argument);
     EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
     CrowdOptions none;
     none.threads = 0;
-    EXPECT_THROW(run_crowd(fixture().graph, fixture().trees, none), std::invalid_argument);
+    EXPECT_THROW(run(none), std::invalid_argument);
+    CrowdOptions walled;
+    walled.placed = {{{0.1, 5, 0, 0}, 0, std::nullopt}};  // against the wall
+    EXPECT_THROW(run(walled), std::invalid_argument);
+    CrowdOptions close;
+    close.placed = {{{5, 5, 0, 0}, 0, std::nullopt}, {{5.3, 5, 0, 0}, 0, std::nullopt}};
+    EXPECT_THROW(run(close), std::invalid_argument);
 }
 
 }  // namespace

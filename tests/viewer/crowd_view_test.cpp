@@ -29,13 +29,15 @@ std::string edited_copy(const std::string& from, const std::string& name,
     return out;
 }
 
+// Queries of the candidate clip against another agent's clip open; the others (held ground, walls,
+// the candidate's escape clips) are refused with the reason.
 TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
     const std::string record = crowd_record();
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 1.5f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
     const crowd::Record& r = s.crowd->record;
-    int opened = 0, hits = 0;
+    int opened = 0, hits = 0, refused = 0;
     for (std::size_t k = 0; k < r.choices.size(); ++k) {
         const crowd::ChoicePoint& c = r.choices[k];
         viewer::select_choice(s, -1, int(k));
@@ -44,18 +46,23 @@ TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
             const crowd::Candidate& cand = c.candidates[i];
             EXPECT_EQ(int(cand.against.size()), cand.queries) << "choice " << k << " candidate " << i;
             for (std::size_t j = 0; j < cand.against.size(); ++j) {
+                const crowd::CandidateQuery& q = cand.against[j];
                 std::string message;
-                ASSERT_TRUE(viewer::open_candidate_query(s, int(i), int(j), &message)) << message;
+                const bool traceable = q.mine == 0 && q.agent >= 0 && q.piece >= 0;
+                ASSERT_EQ(viewer::open_candidate_query(s, int(i), int(j), &message), traceable) << message;
+                if (!traceable) {
+                    EXPECT_NE(message.find("not a clip to trace"), std::string::npos) << message;
+                    ++refused;
+                    continue;
+                }
                 ASSERT_TRUE(s.queried);
                 EXPECT_FALSE(s.trace.empty());
-                EXPECT_EQ(s.answer, cand.against[j].hit)
-                    << "choice " << k << " candidate " << i << " query " << j << ": " << message;
+                EXPECT_EQ(s.answer, q.hit) << "choice " << k << " candidate " << i << " query " << j << ": " << message;
                 EXPECT_EQ(s.scene.step, 0);
                 EXPECT_EQ(s.crowd->opened_candidate, int(i));
                 EXPECT_EQ(s.crowd->opened_query, int(j));
-                // The query's other clip is the recorded agent's committed clip, where it was placed.
-                const crowd::PlacedClip& other =
-                    r.tracks[std::size_t(cand.against[j].agent)].clips[std::size_t(cand.against[j].index)];
+                // The query's other clip is where the record placed it.
+                const crowd::FramedClip other = *crowd::query_clip(r, q);
                 EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].x, other.place.x);
                 EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].t0, other.place.t0);
                 // Opening another query replaces the other clip instead of piling them up.
@@ -68,6 +75,7 @@ TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
     EXPECT_GT(opened, 20);
     EXPECT_GT(hits, 0);
     EXPECT_LT(hits, opened);
+    EXPECT_GT(refused, 0);
     viewer::select_choice(s, 0, -1);
     EXPECT_EQ(s.clips.size(), r.tracks.size());
     EXPECT_EQ(s.scene.query_a, -1);
@@ -130,16 +138,13 @@ TEST(CrowdSkeletons, SourcesLoadOnceAndOnlyWhenNeeded) {
     for (const auto& p : viewer::agent_skeletons(*s.crowd, 0.0, s.colors)) distinct.insert(p.animation);
     EXPECT_EQ(s.crowd->poses->loaded(), int(distinct.size()));
     EXPECT_LT(s.crowd->poses->loaded(), int(s.crowd->graph->sources.size()));
+    // Posing again at the same time loads nothing more and reuses the same animations.
     const auto first = viewer::agent_skeletons(*s.crowd, 1.0, s.colors);
     const int loaded = s.crowd->poses->loaded();
-    const auto again = viewer::agent_skeletons(*s.crowd, 1.0 + s.crowd->record.dt, s.colors);
+    const auto again = viewer::agent_skeletons(*s.crowd, 1.0, s.colors);
     EXPECT_EQ(s.crowd->poses->loaded(), loaded);
     ASSERT_EQ(first.size(), again.size());
-    for (std::size_t a = 0; a < first.size(); ++a) {
-        if (first[a].place.x == again[a].place.x) {
-            EXPECT_EQ(first[a].animation, again[a].animation);
-        }
-    }
+    for (std::size_t a = 0; a < first.size(); ++a) EXPECT_EQ(first[a].animation, again[a].animation);
     // The layer off: frame_of poses nobody.
     s.scene.layers.skeletons = false;
     EXPECT_TRUE(viewer::frame_of(s).posed.empty());
@@ -179,6 +184,66 @@ TEST(CrowdSkeletons, MissingSourceNamesTheFile) {
     EXPECT_NE(problem.find("no_such_take.bvh"), std::string::npos) << problem;
     EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
     EXPECT_EQ(s.clips.size(), s.crowd->record.tracks.size());
+}
+
+// A scenario record draws its walls, its obstacles (filled) and a post per goal; contacts at the cursor
+// ring both disks on top; the timeline lists fallbacks and contact frames and jumps to them.
+TEST(CrowdOverlay, WallsObstaclesGoalsAndContacts) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty());
+    State s = viewer::load_crowd_state(record, 1.5f);
+    crowd::Record& r = s.crowd->record;
+    const double end = double(r.frames) * r.dt;
+    auto prisms = viewer::crowd_prisms(*s.crowd, 1.0);
+    ASSERT_EQ(prisms.size(), 1 + r.world.obstacles.size() + 2);  // walls, the door's two posts, two goals
+    EXPECT_EQ(prisms[0].ground.size(), 4u);
+    EXPECT_EQ(prisms[0].ground[2][0], r.world.x1);
+    EXPECT_EQ(prisms[1].ground, r.world.obstacles[0].vertices);
+    EXPECT_GT(prisms[1].fill, 0.0f);
+    for (const auto& p : prisms) {
+        EXPECT_EQ(p.t0, 0.0);
+        EXPECT_EQ(p.t1, end);
+        EXPECT_FALSE(p.on_top);
+    }
+    EXPECT_NEAR(prisms[3].ground[0][0], (*r.tracks[0].goal)[0] + 0.15, 1e-12);
+    EXPECT_TRUE(s.crowd->marks.empty()) << "a passed scenario: no fallback, no contact";
+    // Two contacts: agent 1 put onto agent 0 at frames 40 and 41.
+    for (std::size_t f : {40u, 41u}) {
+        r.tracks[1].samples[f][1] = r.tracks[0].samples[f][1];
+        r.tracks[1].samples[f][2] = r.tracks[0].samples[f][2];
+    }
+    r.choices[5].fallback = true;
+    s.crowd->contacts = crowd::frame_contacts(r);
+    s.crowd->marks = viewer::timeline_marks(*s.crowd);
+    prisms = viewer::crowd_prisms(*s.crowd, 40.5 * r.dt);
+    ASSERT_EQ(prisms.size(), 1 + r.world.obstacles.size() + 2 + 2);
+    EXPECT_TRUE(prisms.back().on_top);
+    EXPECT_EQ(prisms.back().t0, 40.5 * r.dt);
+    EXPECT_EQ(viewer::crowd_prisms(*s.crowd, 42.5 * r.dt).size(), 1 + r.world.obstacles.size() + 2);
+    const auto& marks = s.crowd->marks;
+    ASSERT_EQ(marks.size(), 3u);
+    int contacts = 0, fallbacks = 0;
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+        if (k) {
+            EXPECT_LE(marks[k - 1].frame, marks[k].frame);
+        }
+        (marks[k].kind == viewer::TimelineMark::Contact ? contacts : fallbacks) += 1;
+    }
+    EXPECT_EQ(contacts, 2);
+    EXPECT_EQ(fallbacks, 1);
+    // Jumping: to the nearest mark within reach, the cursor inside its frame.
+    const viewer::TimelineMark* near = viewer::nearest_mark(marks, 44, 5);
+    ASSERT_TRUE(near);
+    EXPECT_EQ(near->frame, 41);
+    EXPECT_EQ(viewer::nearest_mark(marks, 60, 5), nullptr);
+    viewer::jump_to(s, *near);
+    EXPECT_EQ(std::int64_t(s.scene.cursor / r.dt), 41);
+    EXPECT_EQ(s.crowd->agent, 0);
+    const viewer::TimelineMark* fallback = viewer::nearest_mark(marks, r.choices[5].frame, 0);
+    ASSERT_TRUE(fallback);
+    viewer::jump_to(s, *fallback);
+    EXPECT_EQ(s.crowd->choice, 5);
+    EXPECT_EQ(s.crowd->agent, r.choices[5].agent);
 }
 
 }  // namespace

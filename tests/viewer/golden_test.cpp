@@ -190,13 +190,18 @@ TEST(Golden, CrowdSkeletons) {
     EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
 }
 
+/// Whether a query of a candidate is its clip hitting another agent's clip (one the trace can open).
+bool clip_hit(const crowd::CandidateQuery& q) { return q.hit && q.mine == 0 && q.agent >= 0 && q.piece >= 0; }
+
 /// The first choice point after the start that found a clear clip (no fallback) among a few candidates,
-/// one of them rejected (so the Crowd panel stays short), or -1.
+/// one of them rejected by another agent's clip (so the Crowd panel stays short), or -1.
 int small_rejection(const crowd::Record& r) {
     for (std::size_t n = 0; n < r.choices.size(); ++n) {
         const auto& c = r.choices[n];
         if (c.frame > 0 && !c.fallback && c.candidates.size() <= 6 &&
-            std::any_of(c.candidates.begin(), c.candidates.end(), [](const auto& k) { return k.hits > 0; }))
+            std::any_of(c.candidates.begin(), c.candidates.end(), [](const auto& k) {
+                return std::any_of(k.against.begin(), k.against.end(), clip_hit);
+            }))
             return int(n);
     }
     return -1;
@@ -236,10 +241,14 @@ TEST(Golden, CrowdQueryOpened) {
     viewer::select_choice(s, -1, pick);
     const auto& c = r.choices[std::size_t(pick)];
     int k = 0;
-    while (c.candidates[std::size_t(k)].hits == 0) ++k;
+    auto has_clip_hit = [&](int i) {
+        const auto& a = c.candidates[std::size_t(i)].against;
+        return std::any_of(a.begin(), a.end(), clip_hit);
+    };
+    while (!has_clip_hit(k)) ++k;
     const auto& against = c.candidates[std::size_t(k)].against;
     int j = 0;
-    while (std::size_t(j) < against.size() && !against[std::size_t(j)].hit) ++j;
+    while (std::size_t(j) < against.size() && !clip_hit(against[std::size_t(j)])) ++j;
     ASSERT_LT(std::size_t(j), against.size());
     std::string message;
     ASSERT_TRUE(viewer::open_candidate_query(s, k, j, &message)) << message;
@@ -249,6 +258,32 @@ TEST(Golden, CrowdQueryOpened) {
     viewer::frame_all(s, 1024.0f / 640.0f);
     s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
     check_image("crowd_query", viewer::render_headless(s, {1024, 640, true}));
+}
+
+/// A scenario record (doorway two-way: walls, the wall with its door, two goals) in space-time, and the
+/// same with a contact drawn at the cursor: the record's two agents moved onto each other at one frame.
+TEST(Golden, CrowdScenario) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty()) << "mobb crowd --scenario failed";
+    State s = viewer::load_crowd_state(record, 640.0f / 480.0f);
+    s.scene.layers.skeletons = false;  // no mocap needed
+    const auto& r = s.crowd->record;
+    ASSERT_EQ(r.world.obstacles.size(), 2u);
+    ASSERT_TRUE(r.tracks[0].goal && r.tracks[1].goal);
+    s.scene.cursor = 0.5 * double(r.frames) * r.dt;
+    check_image("crowd_scenario", viewer::render_headless(s, {640, 480, false}));
+    // Agent 1 moved onto agent 0 at one frame: both disks ringed red there.
+    const auto frame = std::size_t(r.frames / 3);
+    auto& moved = s.crowd->record.tracks[1].samples[frame];
+    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
+    moved[2] = r.tracks[0].samples[frame][2];
+    s.crowd->contacts = crowd::frame_contacts(r);
+    ASSERT_EQ(s.crowd->contacts.size(), 1u);
+    ++s.revision;
+    s.scene.cursor = (double(frame) + 0.5) * r.dt;
+    s.camera.top();
+    viewer::frame_all(s, 640.0f / 480.0f);
+    check_image("crowd_scenario_contact", viewer::render_headless(s, {640, 480, false}));
 }
 
 /// The comparator must catch a real change: the level-1 scene with one more box level drawn.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <unistd.h>
@@ -45,6 +46,23 @@ inline std::string crowd_record() {
         return Record{std::system(cmd.c_str()) == 0 ? out : std::string()};
     }();
     return record.path;
+}
+
+/// A record of the shipped scenario `name` (seed 1), made once per test process.
+inline std::string scenario_record(const std::string& name) {
+    struct Made : std::map<std::string, std::string> {
+        ~Made() {
+            for (const auto& [n, path] : *this)
+                if (!path.empty()) std::remove(path.c_str());
+        }
+    };
+    static Made made;
+    if (made.count(name)) return made[name];
+    const std::string out = std::string(MOBB_TEST_OUT) + "/scenario_" + name + "_" + std::to_string(getpid()) + ".json";
+    const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
+                            "\" --scenario \"" + MOBB_SOURCE_DIR + "/assets/scenarios/" + name + ".json\" --record \"" +
+                            out + "\" > /dev/null";
+    return made[name] = std::system(cmd.c_str()) == 0 ? out : std::string();
 }
 
 }  // namespace mobb::test

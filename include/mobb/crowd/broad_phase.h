@@ -44,6 +44,8 @@ public:
     /// are: no hashing there (unless that takes more than kMaxFlatCells cells). Throws
     /// std::invalid_argument unless cell > 0 and the sizes are >= 0.
     BroadPhase(double cell, double width, double height);
+    /// The same over [x0, x1] x [y0, y1]. Throws std::invalid_argument unless cell > 0, x0 <= x1, y0 <= y1.
+    BroadPhase(double cell, double x0, double y0, double x1, double y1);
 
     /// Adds (or replaces) item `id` >= 0; throws std::invalid_argument for a negative id. Ids index a
     /// table, so keep them dense.
@@ -79,7 +81,8 @@ private:
         int id = 0, owner = -1;
     };
     using Cell = std::vector<Entry>;
-    std::int64_t index(double x) const;
+    std::int64_t index_x(double x) const;
+    std::int64_t index_y(double y) const;
     template <class F>
     void cells(const SpaceTimeBox& box, F&& f) const;
     Cell& cell(std::int64_t ix, std::int64_t iy);
@@ -92,6 +95,7 @@ private:
     }
 
     double cell_;
+    double x0_ = 0, y0_ = 0;  // origin of the cells
     // Emptied cells keep their (empty) arrays: agents walk back and forth over the same ground, and
     // reusing the arrays saves an allocation per cell per clip.
     std::int64_t nx_ = 0, ny_ = 0;  // flat cells: ix in [0, nx), iy in [0, ny)

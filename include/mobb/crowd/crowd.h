@@ -1,7 +1,9 @@
 // Graph-driven crowd simulation with space-time collision queries at choice points (paper section 5).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,34 +11,39 @@
 #include "mobb/core/query.h"
 #include "mobb/core/tree.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/narrow_phase.h"
+#include "mobb/crowd/policy.h"
 #include "mobb/crowd/record.h"
+#include "mobb/crowd/world.h"
 
 namespace mobb::crowd {
 
-/// How an agent picks its next clip at a choice point.
-enum class Selection {
-    Avoid,   ///< first candidate (random order) inside the world and free of collisions; else fewest collisions
-    Random,  ///< a random successor, but every candidate's queries still run (the paper's timing experiment)
+/// An agent placed by a scenario.
+struct AgentSpec {
+    Placement start;                             ///< x, y (metres), heading theta (radians); t0 unused
+    double start_time = 0;                       ///< seconds: it stands at its start until then
+    std::optional<std::array<double, 2>> goal;   ///< metres
 };
-const char* to_string(Selection s);
-Selection parse_selection(const std::string& name);  ///< "avoid" | "random"; throws std::invalid_argument
 
 struct CrowdOptions {
-    int agents = 100;
-    double width = 30, height = 40;  ///< world rectangle [0, W] x [0, H], metres
-    double seconds = 120;            ///< simulated; frames = round(seconds / dt)
+    int agents = 100;                 ///< placed at random when `placed` is empty
+    World world;                      ///< default [0, 30] x [0, 40], walled
+    double seconds = 120;             ///< simulated; frames = round(seconds / dt)
     std::uint64_t seed = 1;
     Selection select = Selection::Avoid;
-    double cell = 4.0;         ///< broad-phase grid cell, metres
-    bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
+    double cell = 4.0;                ///< broad-phase grid cell, metres
+    bool log_queries = false;         ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;
+    std::vector<AgentSpec> placed;    ///< the agents of a scenario (then `agents` is ignored)
+    double goal_radius = 1.0;         ///< metres: a goal agent this close to its goal stops there
 };
 
-/// One narrow-phase query of a run: candidate clip a at pa against committed clip b at pb.
+/// One clip-against-clip narrow-phase query of a run: clip a at pa (the candidate's, or an escape clip of
+/// the route tried) against clip b at pb (another agent's, committed or reserved).
 struct LoggedQuery {
-    int choice = 0, candidate = 0;  ///< indices into Record::choices and its candidates
+    int choice = 0, candidate = 0;    ///< indices into Record::choices and its candidates
     int clip_a = 0, clip_b = 0;
     Placement pa, pb;
     bool hit = false;
@@ -48,8 +55,9 @@ struct CrowdSummary {
     std::uint64_t tests2d = 0, tests3d = 0, samples = 0;
     /// Queries whose only box test (if any) was the roots' and that tested no samples.
     std::uint64_t root_rejected = 0;
-    std::uint64_t time_pairs = 0;                        ///< (candidate, committed clip) pairs overlapping in time
+    std::uint64_t time_pairs = 0;                        ///< (candidate, committed piece) pairs overlapping in time
     std::uint64_t pruned = 0;                            ///< of those, skipped by the broad phase
+    std::uint64_t escapes = 0;                           ///< choice points where the agent took its own escape
     std::uint64_t fallbacks = 0, outside = 0;            ///< fallback clips taken; of them, clips leaving the world
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
     std::uint64_t reevaluated = 0;  ///< choice points evaluated again: a commit earlier in their frame was near
@@ -78,20 +86,27 @@ struct CrowdRun {
 /// One tree per graph clip, built once.
 std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& options);
 
-/// Runs the crowd (paper section 5). Deterministic for a seed, whatever options.threads. Agents start
-/// at random positions at least 2 r_max apart (r_max: the largest r of the graph) and r_max from the
-/// walls, with random headings; each first choice point offers the successors of a random clip. The
-/// random draws of a choice point (candidate order, first clip, random pick) come from its own stream
-/// of (seed, agent, frame). Choice points take effect in order of frame, then agent: those of one frame
-/// are evaluated in parallel against the clips committed before that frame, then committed in agent
-/// order, and one whose candidates overlap a clip committed earlier in its frame is evaluated again
-/// first, so the outcome equals one-by-one evaluation. A candidate is tested against the committed
-/// clips of the other agents whose space-time boxes overlap its own (BroadPhase; a box spans the
-/// clip's frames and its root positions padded by its largest radius r); committed clips
-/// checked at every commit guarantee, outside fallbacks, no contact at any frame. Throws
-/// std::invalid_argument for bad options (threads < 1 included), a graph clip without successors or
-/// a world too small for the agents. `progress` (may be empty) receives the simulated fraction done.
-CrowdRun run_crowd(const MotionGraph& graph, const std::vector<Tree>& trees, const CrowdOptions& options,
+/// Runs the crowd (paper section 5). Deterministic for a seed, whatever options.threads.
+///
+/// Agents: a scenario's (options.placed), or options.agents at random positions inside the world, apart
+/// and clear of the obstacles, with random headings; each first choice point offers the successors of a
+/// random clip. The random draws of a choice point (candidate order, first clip, random pick) come from
+/// its own stream of (seed, agent, frame); the policy (policy.h) then orders the candidates.
+///
+/// Avoid and goal: a candidate is taken only when its plan is free - the clip, the clips that would stop
+/// the agent after it and the ground it would then hold (escape.h) - of every other agent's plan, of the
+/// obstacles and of the world's walls; the first such candidate in the policy's order is taken, and when
+/// there is none the agent follows its own escape, which the others planned around. So, outside
+/// fallbacks (no escape left), no two agents ever touch and no disk crosses a wall. Random: a random
+/// successor; every candidate's queries still run; no escapes, no walls (the paper's timing workload).
+///
+/// Choice points take effect in order of frame, then agent: those of one frame are evaluated in
+/// parallel against the state at the start of the frame, then committed in agent order, and one that a
+/// commit earlier in its frame could change is evaluated again first, so the outcome equals one-by-one
+/// evaluation. Throws std::invalid_argument for bad options (threads < 1 included), a graph clip without
+/// successors or without a clip in place, or a world too small for the agents. `progress` (may be empty)
+/// receives the simulated fraction done.
+CrowdRun run_crowd(const MotionGraph& graph, const NarrowPhase& narrow, const CrowdOptions& options,
                    const std::function<void(double)>& progress = {});
 
 }  // namespace mobb::crowd

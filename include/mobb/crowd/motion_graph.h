@@ -9,6 +9,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "mobb/core/path.h"
+#include "mobb/io/load.h"
 
 namespace mobb::crowd {
 
@@ -21,7 +22,9 @@ public:
 /// One input file as the graph used it.
 struct GraphSource {
     std::string file;     ///< relative to the data folder (io::data_dir()) when inside it, else as given
-    int frame_begin = 0;  ///< file frames dropped at the start (a stray T-pose frame: root jump > trim_jump)
+    int frame_begin = 0;  ///< file frames dropped at the start (a stray T-pose frame: root jump > trim_jump,
+                          ///< or the range asked for)
+    int frame_end = -1;   ///< the range asked for ends before this file frame; -1: the file's end
     int samples = 0;      ///< samples after trimming and resampling to the graph's fps
 };
 
@@ -40,7 +43,25 @@ struct GraphClip {
     double exit_x = 0, exit_y = 0, exit_heading = 0;
     std::vector<int> successors;    ///< clip ids
     std::vector<double> distances;  ///< pose distance (metres) of each edge, below the threshold
+    /// An idle clip (ClipKind::Idle) loops in place: its exit is snapped to the identity, and this is
+    /// how far its root really moved (metres) and turned (radians) over the clip in its take.
+    double idle_drift = 0, idle_turn = 0;
 };
+
+/// What a clip does, from its path and its exit alone (kind_of).
+enum class ClipKind {
+    Walk,     ///< moves: from its start to its exit at least kWalking metres per second
+    Slow,     ///< moves slower: starting, stopping
+    InPlace,  ///< the root stays within kInPlaceReach of its start and the next clip starts within kInPlaceExit
+    Idle,     ///< stands still and loops on itself: in place, within kIdleReach, a successor of itself, exit
+              ///< snapped to the identity by the graph's builder - the ground an agent holds (escape.h)
+};
+inline constexpr double kWalking = 0.6;                            // metres per second
+inline constexpr double kInPlaceReach = 0.25, kInPlaceExit = 0.2;  // metres
+inline constexpr double kIdleReach = 0.15, kIdleExit = 0.05;       // metres (exit: before the snap)
+inline constexpr double kIdleTurn = 0.1;                           // radians (before the snap)
+ClipKind kind_of(const GraphClip& clip, int id);
+const char* to_string(ClipKind kind);
 
 struct MotionGraph {
     double fps = 30;                  ///< every clip shares dt = 1 / fps
@@ -57,6 +78,8 @@ struct MotionGraph {
     /// Placement of a successor of `clip` placed at p: chained through its exit transform; starts at
     /// p.t0 + samples * dt (the caller may recompute t0 on the global frame grid).
     Placement next(const Placement& p, int clip) const;
+    /// The same with the placement's rotation evaluated once (m = Rigid2::of(p)), for many clips.
+    Placement next(const Placement& p, const Rigid2& m, int clip) const;
 };
 
 struct GraphBuildOptions {
@@ -68,15 +91,22 @@ struct GraphBuildOptions {
     int hubs = 2;            ///< hub poses whose matches are the transition points (Snap-Together Motion)
 };
 
-/// Builds the graph: pose distances between all frames of all inputs; hub poses chosen greedily (the
-/// frame whose matches add the most new cut candidates, as Snap-Together Motion's common poses); the
-/// transition points are the local minima, along each input, of the distance to a hub that are under
-/// the threshold; clips cut between them (dynamic programming for lengths near target_clip, cutting
-/// elsewhere only when needed); edges where the exit pose of one clip is within the threshold of the
-/// first pose of another; and the largest strongly connected component. Throws io::LoadError for a bad
-/// file, GraphError when nothing connects. Progress lines go to `log` when not null.
+/// Builds the graph from inputs "FILE", or "FILE:A:B" for frames [A, B) of the file: pose distances
+/// between all frames of all inputs; hub poses chosen greedily (the frame whose matches add the most new
+/// cut candidates, as Snap-Together Motion's common poses); the transition points are the local minima,
+/// along each input, of the distance to a hub that are under the threshold; clips cut between them
+/// (dynamic programming for lengths near target_clip, cutting elsewhere only when needed); edges where
+/// the exit pose of one clip is within the threshold of the first pose of another; the largest strongly
+/// connected component; and idle clips (a standing stretch that follows itself, ClipKind) get the
+/// identity as their exit, so they loop in place. Throws io::LoadError for a bad file, GraphError for a
+/// bad range or when nothing connects. Progress lines go to `log` when not null.
 MotionGraph build_motion_graph(const std::vector<std::string>& files, const GraphBuildOptions& options,
                                std::ostream* log = nullptr);
+
+/// Source `source` of a graph loaded as the graph was built from it: its frame range, resampled to the
+/// graph's fps. Throws io::LoadError naming the file, or GraphError when its sample count differs from
+/// the graph's (a different file).
+io::Clip load_graph_source(const MotionGraph& graph, int source);
 
 /// The committed graph: assets/graphs/cmu_locomotion.json under the working directory if it exists,
 /// else in the source tree this was built from.

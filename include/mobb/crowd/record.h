@@ -1,33 +1,45 @@
-// The record of a crowd run (`mobb crowd --record FILE`): where every agent is at every global frame,
-// which clips it played, and what was decided at every choice point. The viewer draws it.
+// The record of a crowd run (`mobb crowd --record FILE`): the world, where every agent is at every
+// global frame, which clips it played, and what was decided at every choice point. The viewer draws it.
 //
 // JSON layout (units: metres, seconds, radians; frames are global, frame k starts at t = k * dt):
 //   {
-//     "format": "mobb crowd record", "version": 1,
-//     "graph": FILE, "dt": s, "frames": F, "world": [W, H], "agents": N, "seed": K,
-//     "tree": "mobb" | ..., "select": "avoid" | "random",
-//     "summary": { see CrowdSummary in crowd.h },
+//     "format": "mobb crowd record", "version": 2,
+//     "graph": FILE, "dt": s, "frames": F, "agents": N, "seed": K, "tree": "sweep" | "mobb" | ...,
+//     "select": "avoid" | "random" | "goal", "scenario": NAME (when one ran),
+//     "world": [W, H] for [0, W] x [0, H], or [x0, y0, x1, y1]; "walls": bool,
+//     "obstacles": [ [[x, y], ...], ... ],            // polygons
+//     "summary": { see CrowdSummary in crowd.h }, "metrics": { see metrics.h },
 //     "tracks": [ {                                   // one per agent, index = agent id
+//        "goal": [x, y] (goal agents only),
 //        "clips": [ {"clip": id, "start": frame, "place": [x, y, theta, t0], "fallback": bool,
-//                    "commit": n}, ... ],              // commit: global order of the choice
+//                    "commit": n}, ... ],              // commit: the choice point that took it
 //        "samples": [ [t, x, y, r], ... ]             // F samples: the world disk at frames 0..F-1
 //     }, ... ],
-//     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "fallback": bool,
-//                   "queries": q, "tests2d": n, "tests3d": n, "samples": n, "pruned": n,
+//     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "outcome": "candidate" | "escape" |
+//                   "arrived" | "fallback", "fallback": bool, "queries": q, "tests2d": n, "tests3d": n,
+//                   "samples": n, "pruned": n,
+//                   "plan": {"escape": [[clip, frame, x, y, theta], ...], "hold": [x, y, r, frame]},
 //                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h,
-//                                    "against": [ [agent, index, hit], ... ]}, ... ]}, ... ]
+//                                    "against": [ [agent, commit, piece, mine, hit], ... ]}, ... ]}, ... ]
 //   }
-// A candidate's "hits" counts the committed clips it collides with; in avoid mode the queries of a
-// candidate stop at its first hit unless every candidate failed (then all are counted for the fallback).
-// "against" lists its queries in the order run: the other agent, the index of that agent's committed
-// clip in its track's "clips", and the answer (0 or 1).
+// A candidate's "hits" counts what it collides with among the queries run: in the avoiding modes its
+// queries stop at its first hit (and run in full at a fallback); in random mode they all run. "against"
+// lists its queries in the order run: the other agent, the choice point whose plan holds the piece met
+// (its index in "choices"; -1 for the ground it held where it started, a disk of the first choice
+// point's hold radius) and the piece (0 its clip, 1, 2, ... its escape clips, -1 its held ground),
+// the piece of the candidate's own plan that asked ("mine": 0 the candidate clip, 1, 2, ... the escape
+// clips of the route being tried, -1 the ground it would then hold) and the answer (0 or 1); for a wall or an obstacle the agent is -1 and the commit is the solid's index
+// (the obstacles in order, then the four walls when walled). "outside": in random mode the candidate's
+// root leaves the world; otherwise it met a wall or an obstacle.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mobb/core/path.h"
+#include "mobb/crowd/world.h"
 
 namespace mobb::crowd {
 
@@ -40,20 +52,31 @@ struct PlacedClip {
     std::int64_t commit = 0;  ///< order of the choice point that committed it
 };
 
-/// One narrow-phase query of a candidate: against clip `index` of agent `agent`'s track.
+/// One narrow-phase query of a candidate: piece `mine` of the candidate's plan against piece `piece` of
+/// the plan of choice point `commit`, agent `agent`'s (the layout note says which piece is which; agent
+/// -1: solid `commit`).
 struct CandidateQuery {
     int agent = 0;
-    int index = 0;
+    int commit = 0;
+    int piece = 0;
+    int mine = 0;  ///< 0: the candidate clip; 1, 2, ...: the escape clips of the route tried; -1: its held ground
     bool hit = false;
 };
 
 struct Candidate {
     int clip = 0;
-    bool outside = false;                 ///< leaves the world: some root position is farther outside the rectangle
-                                          ///< than the clip's start (0 when it starts inside)
+    bool outside = false;                 ///< random mode: some root position is farther outside the rectangle
+                                          ///< than the clip's start; otherwise: it met a wall or an obstacle
     int queries = 0;                      ///< narrow-phase queries run for it
-    int hits = 0;                         ///< committed clips it collides with (see the layout note)
+    int hits = 0;                         ///< what it collides with among them (see the layout note)
     std::vector<CandidateQuery> against;  ///< its queries, in the order run
+};
+
+/// A clip placed in the world from global frame `frame` on.
+struct FramedClip {
+    int clip = 0;
+    std::int64_t frame = 0;
+    Placement place;
 };
 
 struct ChoicePoint {
@@ -61,22 +84,28 @@ struct ChoicePoint {
     std::int64_t frame = 0;
     std::vector<Candidate> candidates;  ///< in the order tested
     int taken = 0;                      ///< clip id
+    std::string outcome = "candidate";  ///< "candidate", "escape", "arrived" or "fallback"
     bool fallback = false;
     std::uint64_t queries = 0, tests2d = 0, tests3d = 0, samples = 0;
-    std::uint64_t pruned = 0;  ///< time-overlapping committed clips the broad phase skipped
+    std::uint64_t pruned = 0;          ///< time-overlapping committed pieces the broad phase skipped
+    std::vector<FramedClip> escape;    ///< reserved after the clip taken: the clips that would stop the agent,
+    bool holds = false;                ///< then the held ground:
+    std::array<double, 3> hold{};      ///< x, y, r (metres)
+    std::int64_t hold_frame = 0;       ///< from this frame on
 };
 
 /// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].
 struct AgentTrack {
     std::vector<PlacedClip> clips;
     std::vector<std::array<double, 4>> samples;
+    std::optional<std::array<double, 2>> goal;  ///< metres (goal agents)
 };
 
 struct Record {
-    std::string graph, tree, select;
+    std::string graph, tree, select, scenario;
     double dt = 1.0 / 30.0;
     std::int64_t frames = 0;
-    double width = 0, height = 0;  ///< the world rectangle [0, W] x [0, H]
+    World world;
     std::uint64_t seed = 0;
     std::vector<AgentTrack> tracks;
     std::vector<ChoicePoint> choices;
@@ -93,8 +122,13 @@ struct Contact {
 /// independently of the trees. Ordered by frame, then a, then b.
 std::vector<Contact> frame_contacts(const Record& record);
 
-/// JSON text of a record (see the layout above); `summary` is inserted as given.
-std::string record_to_text(const Record& record, const std::string& summary_json);
+/// The clip a query was against: piece `piece` of choice point `commit`'s plan (the clip taken, or one of
+/// its escape clips); nothing for held ground and solids. Throws std::out_of_range for a bad query.
+std::optional<FramedClip> query_clip(const Record& record, const CandidateQuery& query);
+
+/// JSON text of a record (see the layout above); `summary` and `metrics` (JSON objects) are inserted as
+/// given.
+std::string record_to_text(const Record& record, const std::string& summary_json, const std::string& metrics_json = "");
 
 /// Reads a record file. Throws std::runtime_error "FILE: ..." on any problem.
 Record load_record(const std::string& file);

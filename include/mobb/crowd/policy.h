@@ -1,0 +1,70 @@
+// How an agent picks its next clip at a choice point: the order its candidates are tried in (the first
+// whose plan is free of collisions is taken) and when it stops for good. A new policy is one new file
+// implementing Policy, plus its line in make_policy (policy.cpp).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mobb/core/path.h"
+#include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/world.h"
+
+namespace mobb::crowd {
+
+enum class Selection {
+    Avoid,   ///< wander: candidates in random order, moving ones first; the first free plan is taken
+    Random,  ///< a random successor whatever it collides with; every candidate's queries still run (the
+             ///< paper's timing experiment: no escapes, no walls)
+    Goal,    ///< candidates by how close they bring the agent to its goal (around obstacles); stop there
+};
+const char* to_string(Selection s);
+/// "avoid" | "random" | "goal"; throws std::invalid_argument naming them.
+Selection parse_selection(const std::string& name);
+
+/// An agent at a choice point, as a policy sees it.
+struct ChoiceSite {
+    int agent = 0;
+    Placement base;                              ///< where the next clip starts (t0: its start time)
+    std::optional<std::array<double, 2>> goal;   ///< metres
+    int waited = 0;                              ///< choice points in a row it could not move on (escapes)
+    bool arrived = false;                        ///< Policy::arrived(): order() puts the ways to stop first
+    /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
+    /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
+    std::vector<std::array<double, 2>> neighbours;
+};
+
+class Policy {
+public:
+    virtual ~Policy() = default;
+    virtual Selection kind() const = 0;
+    /// Puts `candidates` (successor clips, already in the random order of the choice point's own stream)
+    /// in the order they are tried.
+    virtual void order(const ChoiceSite& site, std::vector<int>& candidates) const = 0;
+    /// Whether the agent has arrived: it then stops as soon as a clip standing in place is free, and stays
+    /// for good.
+    virtual bool arrived(const ChoiceSite&) const { return false; }
+    /// How far around the agent its neighbours are gathered for order() (0: not at all).
+    virtual double neighbourhood() const { return 0; }
+    /// An agent stopped for good at (x, y), holding a disk of radius r: the others plan around it. Called
+    /// in commit order, never while choice points are evaluated.
+    virtual void settled(double /*x*/, double /*y*/, double /*r*/) {}
+};
+
+/// What the policies may need: the graph (clips' ends, which clips stay in place), the world, and the
+/// goals (navigation fields around the obstacles are built for Goal). `in_place` has one flag per clip.
+struct PolicyContext {
+    const MotionGraph& graph;
+    const World& world;
+    const std::vector<char>& in_place;
+    std::vector<std::array<double, 2>> goals;   ///< every goal of the run (Goal)
+    double goal_radius = 1.0;                   ///< metres: arrived within this of the goal
+    double clearance = 0.45;                    ///< metres kept from obstacles by the navigation field
+};
+
+std::unique_ptr<Policy> make_policy(Selection kind, const PolicyContext& context);
+
+}  // namespace mobb::crowd

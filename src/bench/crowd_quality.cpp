@@ -1,0 +1,219 @@
+// The crowd quality workload (crowd_quality.h).
+#include "crowd_quality.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bar_chart.h"
+#include "machine.h"
+#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/scenario.h"
+#include "mobb/util/json_text.h"
+
+namespace mobb::bench {
+
+namespace {
+
+using util::fixed;
+
+// Before the escapes: 10,013 contact agent-pair frames at 100 agents, 30 x 40 m, 60 s, seed 11.
+constexpr double kContactsBefore = 10013.0 / 60.0;  // per simulated second
+
+WanderRow run_wander(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, const CrowdQualityOptions::Wander& w,
+                     std::uint64_t seed, int threads) {
+    crowd::CrowdOptions o;
+    o.agents = w.agents;
+    o.world.x1 = w.width;
+    o.world.y1 = w.height;
+    o.seconds = w.seconds;
+    o.seed = seed;
+    o.threads = threads;
+    const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
+    return {w.agents, w.width, w.height, w.seconds, seed, crowd::crowd_metrics(run.record, g, o.goal_radius),
+            run.summary.escapes, run.summary.cd_us_per_agent_second()};
+}
+
+ScenarioRow run_scenario(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, const std::string& file,
+                         std::uint64_t seed, int threads) {
+    const crowd::Scenario s = crowd::load_scenario(file);
+    crowd::CrowdOptions o = crowd::scenario_options(s);
+    o.seed = seed;
+    o.threads = threads;
+    const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
+    return {s.name, std::filesystem::path(file).filename().string(), int(s.agents.size()), s.time_limit, seed,
+            crowd::crowd_metrics(run.record, g, o.goal_radius)};
+}
+
+// A count or a share (printed as a number), or a cost ratio (printed with "x").
+Target at_most(const std::string& what, double goal, double measured, const std::string& detail, bool ratio = false) {
+    Target t;
+    t.what = what;
+    t.goal = goal;
+    t.measured = measured;
+    t.at_most = true;
+    t.ratio = ratio;
+    t.detail = detail;
+    return t;
+}
+
+Target at_least(const std::string& what, double goal, double measured, const std::string& detail) {
+    Target t;
+    t.what = what;
+    t.goal = goal;
+    t.measured = measured;
+    t.detail = detail;
+    return t;
+}
+
+void add_wander_targets(CrowdQualityTable& t, const CrowdQualityOptions& o) {
+    double fallbacks = 0, big_fallbacks = 0, unexcused = 0, contacts = 0, outside = 0, speed = 1e300, idle = 0, longest = 0,
+           cost = 0;
+    bool big = false;
+    for (const WanderRow& r : t.wander) {
+        const crowd::CrowdMetrics& m = r.metrics;
+        if (r.agents <= 1000) {
+            fallbacks = std::max(fallbacks, m.fallback_share);
+            unexcused += double(m.contacts_outside_fallbacks);
+            contacts = std::max(contacts, double(m.contacts) / r.seconds);
+            outside += double(m.samples_outside + m.obstacle_contacts);
+        } else {
+            big = true;
+            big_fallbacks = std::max(big_fallbacks, m.fallback_share);
+            cost = std::max(cost, r.cd_us_per_agent_second);
+        }
+        speed = std::min(speed, m.speed_ratio);
+        idle = std::max(idle, m.idle_share);
+        longest = std::max(longest, m.longest_idle);
+    }
+    const std::string seeds = "worst of seeds " + std::to_string(o.seeds.size());
+    t.targets.push_back(at_most("wander 100 and 1,000 agents: fallbacks <= 0.5 % of choice points (%)", 0.5,
+                                100 * fallbacks, seeds));
+    t.targets.push_back(at_most("wander 100 and 1,000 agents: contacts outside fallbacks", 0, unexcused, "all runs"));
+    t.targets.push_back(at_most("wander: contact agent-pair frames per simulated second, 100x fewer than before (" +
+                                    fixed(kContactsBefore, 1) + ")",
+                                kContactsBefore / 100, contacts, seeds));
+    t.targets.push_back(at_most("wander: samples outside the world or on a wall", 0, outside, "all runs"));
+    t.targets.push_back(at_most("wander 10,000 agents: fallbacks <= 0.5 % (%)", 0.5, 100 * big_fallbacks, seeds));
+    t.targets.back().known = big;
+    t.targets.push_back(at_least("wander: mean ground speed / the graph's mean clip speed >= 0.8", 0.8, speed, seeds));
+    t.targets.push_back(at_most("wander: idle share of agent time <= 10 % (%)", 10, 100 * idle, seeds));
+    t.targets.push_back(at_most("wander: longest idle stretch <= 5 s", 5, longest, seeds));
+    Target c = at_most("CD per agent per simulated second at 10,000 agents <= 2x before (" + fixed(o.baseline_us, 2) +
+                           " us, MOBB tree, 1 thread)",
+                       2, cost / o.baseline_us, fixed(cost, 2) + " us, 1 thread, circle sweep", true);
+    c.known = big && cost > 0;
+    t.targets.push_back(c);
+}
+
+void add_scenario_target(CrowdQualityTable& t) {
+    int passed = 0;
+    std::string failed;
+    for (const ScenarioRow& r : t.scenarios) {
+        passed += r.metrics.passed;
+        if (!r.metrics.passed) failed += (failed.empty() ? "" : ", ") + r.name + " seed " + std::to_string(r.seed);
+    }
+    Target s = at_least("scenarios passed (every agent at its goal in time, no contact)", double(t.scenarios.size()),
+                        passed, failed.empty() ? "every run" : "failed: " + failed);
+    s.ratio = false;
+    t.targets.push_back(s);
+}
+
+}  // namespace
+
+CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::function<void(double)>& progress) {
+    const crowd::MotionGraph g = crowd::load_graph(o.graph);
+    const crowd::NarrowPhase narrow = crowd::NarrowPhase::sweep(g);
+    CrowdQualityTable t;
+    const double total = double(o.seeds.size() * (o.wander.size() + o.scenarios.size()));
+    double done = 0;
+    for (const auto& w : o.wander)
+        for (std::uint64_t seed : o.seeds) {
+            t.wander.push_back(run_wander(g, narrow, w, seed, o.threads));
+            if (progress) progress(++done / total);
+        }
+    for (const std::string& file : o.scenarios)
+        for (std::uint64_t seed : o.seeds) {
+            t.scenarios.push_back(run_scenario(g, narrow, file, seed, o.threads));
+            if (progress) progress(++done / total);
+        }
+    add_wander_targets(t, o);
+    add_scenario_target(t);
+    t.notes["graph"] = o.graph + " (" + std::to_string(g.clips.size()) + " clips)";
+    t.notes["selection"] = "wander: mobb crowd --select avoid (walled world, no wrap); scenarios: mobb crowd --scenario";
+    t.notes["narrow phase"] = "circle sweep (ClipIndex + collide_sweep), " + std::to_string(o.threads) + " thread(s)";
+    t.notes["idle"] = "ground speed over a 1 s window below 0.25 m/s; an agent at its goal no longer counts";
+    t.notes["cpu"] = cpu_name();
+    return t;
+}
+
+std::string crowd_quality_markdown(const CrowdQualityTable& t) {
+    std::ostringstream out;
+    out << "### Wandering crowds (avoid, walled world)\n\n"
+        << "| agents | world (m) | s | seed | choice points | fallbacks % | escapes | contacts | outside | speed / graph | "
+           "idle % | longest idle s | CD us / agent / s |\n"
+        << "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const WanderRow& r : t.wander) {
+        const crowd::CrowdMetrics& m = r.metrics;
+        out << "| " << r.agents << " | " << fixed(r.width, 1) << " x " << fixed(r.height, 1) << " | " << fixed(r.seconds, 0)
+            << " | " << r.seed << " | " << m.choice_points << " | " << fixed(100 * m.fallback_share, 3) << " | "
+            << r.escapes << " | " << m.contacts << " | " << m.samples_outside + m.obstacle_contacts << " | "
+            << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1) << " | " << fixed(m.longest_idle, 1)
+            << " | " << fixed(r.cd_us_per_agent_second, 2) << " |\n";
+    }
+    out << "\n### Scenarios (goal-directed)\n\n"
+        << "| scenario | agents | seed | passed | reached | mean / last time to goal s (limit) | contacts | path / straight "
+           "| speed / graph | idle % | Composite01 | Composite02 |\n"
+        << "|---|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const ScenarioRow& r : t.scenarios) {
+        const crowd::CrowdMetrics& m = r.metrics;
+        out << "| " << r.name << " | " << r.agents << " | " << r.seed << " | " << (m.passed ? "yes" : "NO") << " | "
+            << m.reached << " / " << m.goal_agents << " | " << fixed(m.mean_time_to_goal, 1) << " / "
+            << fixed(m.max_time_to_goal, 1) << " (" << fixed(r.time_limit, 0) << ") | " << m.contacts << " | "
+            << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1) << " | "
+            << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " |\n";
+    }
+    out << "\nTargets (issue 10):\n\n";
+    for (const Target& g : t.targets) out << "- " << g.what << ": " << target_text(g) << " (" << g.detail << ")\n";
+    out << "\n";
+    for (const auto& [k, v] : t.notes) out << "- " << k << ": " << v << "\n";
+    return out.str();
+}
+
+std::string crowd_quality_json(const CrowdQualityTable& t) {
+    using J = nlohmann::ordered_json;
+    J j;
+    j["workload"] = "crowd";
+    J wander = J::array();
+    for (const WanderRow& r : t.wander)
+        wander.push_back({{"agents", r.agents}, {"world", {r.width, r.height}}, {"seconds", r.seconds}, {"seed", r.seed},
+                          {"escapes", r.escapes}, {"cd_us_per_agent_second", util::rounded(r.cd_us_per_agent_second, 4)},
+                          {"metrics", J::parse(crowd::metrics_json(r.metrics))}});
+    J scenarios = J::array();
+    for (const ScenarioRow& r : t.scenarios)
+        scenarios.push_back({{"scenario", r.name}, {"file", r.file}, {"agents", r.agents}, {"time_limit", r.time_limit},
+                             {"seed", r.seed}, {"metrics", J::parse(crowd::metrics_json(r.metrics))}});
+    J targets = J::array();
+    for (const Target& g : t.targets)
+        targets.push_back({{"target", g.what}, {"goal", g.goal}, {"measured", g.known ? J(util::rounded(g.measured, 4)) : J()},
+                           {"met", g.met()}, {"text", target_text(g)}, {"detail", g.detail}});
+    j["targets"] = targets;
+    j["notes"] = t.notes;
+    j["wander"] = wander;
+    j["scenarios"] = scenarios;
+    return util::readable_json(j);
+}
+
+void write_crowd_quality_png(const CrowdQualityTable& t, const std::string& file) {
+    std::vector<Bar> bars;
+    for (const WanderRow& r : t.wander)
+        bars.push_back({"wander " + std::to_string(r.agents) + " seed " + std::to_string(r.seed) + " idle %",
+                        100 * r.metrics.idle_share});
+    for (const ScenarioRow& r : t.scenarios)
+        bars.push_back({r.name + " seed " + std::to_string(r.seed) + " last goal s", r.metrics.max_time_to_goal});
+    write_bar_chart(file, "Crowd quality: idle % of agent time (wander), seconds to the last goal (scenarios)", bars, "");
+}
+
+}  // namespace mobb::bench

@@ -1,0 +1,35 @@
+// The escape an agent keeps open: every clip it commits to comes with a way to stop - a short chain of
+// successor clips ending in an idle clip (ClipKind::Idle: standing, looping in place) - and the ground
+// where it would then stand, held for as long as it does (a disk in space-time from then on). Other
+// agents plan around both, so an agent can always fall back on its own escape instead of walking into
+// someone (Lau and Kuffner's behaviour planning keeps such a safe option; Snap-Together Motion's hub
+// poses make the stops reachable).
+#pragma once
+#include <vector>
+
+#include "mobb/crowd/motion_graph.h"
+
+namespace mobb::crowd {
+
+struct EscapeTable {
+    std::vector<ClipKind> kind;                          ///< per clip
+    std::vector<char> in_place;                          ///< per clip: InPlace or Idle
+    std::vector<double> footprint;                       ///< per clip: max over samples of |p_i - p_0| + r_i
+    /// Per clip: successor chains c1..ck, ck idle (k = 1 when a successor already is), the shortest first,
+    /// then one clip longer, at most max_routes of them; none when an idle clip is more than max_steps
+    /// clips away.
+    std::vector<std::vector<std::vector<int>>> routes;
+    double hold_radius = 0;                              ///< hold_of() the largest idle clip: any idle clip fits
+    /// How far held ground stays from walls and obstacles: room for any clip in place (turning on the
+    /// spot) and a margin, so an agent that stops can always turn and walk away.
+    double wall_clearance = 0;
+
+    /// The held ground's radius for idle clip `idle`: its footprint (it loops exactly in place), a
+    /// micrometre wider so that placing it cannot round a disk out.
+    double hold_of(int idle) const { return footprint[std::size_t(idle)] * (1 + 1e-9) + 1e-6; }
+
+    /// Throws std::invalid_argument when the graph has no idle clip.
+    static EscapeTable build(const MotionGraph& graph, int max_steps = 3, int max_routes = 16);
+};
+
+}  // namespace mobb::crowd

@@ -1,0 +1,47 @@
+// Distance to a goal around the obstacles: a grid over the world whose cells hold the length of the
+// shortest 8-connected path to the goal through cells clear of every solid (Dijkstra). The goal
+// policy ranks candidate clips by it.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "mobb/crowd/world.h"
+
+namespace mobb::crowd {
+
+/// Which cells of the world an agent's centre may cross: those whose centre is `clearance` metres clear
+/// of every solid (World::solids()) and of the disks blocked since.
+class NavGrid {
+public:
+    NavGrid(const World& world, double clearance, double cell = 0.25);
+
+    /// Blocks the cells whose centre lies within r + clearance of (x, y): an agent standing there for good.
+    void block_disk(double x, double y, double r);
+
+    double x0 = 0, y0 = 0, cell = 0.25, clearance = 0;
+    int nx = 1, ny = 1;
+    std::vector<char> free;  ///< [ix * ny + iy]
+};
+
+class NavField {
+public:
+    NavField(const NavGrid& grid, std::array<double, 2> goal);
+
+    /// Path length (metres) from (x, y) to the goal: the value of the cell holding the point, plus the
+    /// straight distance to that cell's centre; kUnreachable for blocked or cut-off cells and outside.
+    double distance(double x, double y) const;
+
+    /// The direction (radians) in which distance() falls fastest at (x, y), from central differences half a
+    /// cell apart; the straight direction to the goal where the field has no slope to read.
+    double downhill(double x, double y) const;
+
+    static constexpr double kUnreachable = 1e9;
+
+private:
+    double x0_, y0_, cell_;
+    int nx_, ny_;
+    std::array<double, 2> goal_;
+    std::vector<double> value_;
+};
+
+}  // namespace mobb::crowd

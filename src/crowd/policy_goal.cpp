@@ -1,0 +1,95 @@
+// Goal-directed agents: candidates ranked by an estimate of the time to the goal from where they end -
+// the clip's own duration, the path length to the goal around the obstacles (a navigation field per
+// goal) at walking speed, the turn still needed to face down that path - plus a cost for ending close to
+// where the neighbours will be. Clips that stand idle come last. An agent that could not move on for a
+// few choice points tries its candidates in random order instead, which breaks the deadlocks of agents
+// meeting head-on. Within the goal radius the agent stops: standing idle first.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "mobb/core/angle.h"
+#include "mobb/crowd/policy.h"
+#include "nav_field.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+class GoalPolicy : public Policy {
+public:
+    explicit GoalPolicy(const PolicyContext& c)
+        : graph_(c.graph), radius_(c.goal_radius), grid_(c.world, c.clearance) {
+        for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
+        for (const auto& g : c.goals) fields_.emplace(g, NavField(grid_, g));
+    }
+
+    Selection kind() const override { return Selection::Goal; }
+
+    void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
+        if (!site.goal) return;
+        const Rigid2 m = Rigid2::of(site.base);
+        std::vector<std::pair<double, int>> scored;
+        for (int c : candidates) scored.emplace_back(site.arrived ? stop_cost(site, m, c) : cost(site, m, c), c);
+        std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t k = 0; k < scored.size(); ++k) candidates[k] = scored[k].second;
+    }
+
+    double neighbourhood() const override { return 6.0; }
+
+    // Agents standing at their goals are obstacles for the others' paths.
+    void settled(double x, double y, double r) override {
+        grid_.block_disk(x, y, r);
+        for (auto& [goal, field] : fields_) field = NavField(grid_, goal);
+    }
+
+    bool arrived(const ChoiceSite& site) const override {
+        return site.goal && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < radius_;
+    }
+
+private:
+    static constexpr double kWalking = 1.3;   // metres per second
+    static constexpr double kTurning = 1.3;   // radians per second, turning on the spot
+    static constexpr double kPersonal = 2.0;  // metres: nearer than this to a neighbour costs
+    static constexpr double kCrowding = 1.2;  // seconds per metre inside that distance
+    static constexpr int kPatience = 3;       // choice points in a row without moving on before making room
+
+    // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
+    // cost for ending close to where the neighbours will be.
+    static double seconds(const NavField& field, const Placement& end, const std::vector<std::array<double, 2>>& near) {
+        const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
+        double t = field.distance(end.x, end.y) / kWalking + turn / kTurning;
+        for (const auto& n : near) t += kCrowding * std::max(0.0, kPersonal - std::hypot(end.x - n[0], end.y - n[1]));
+        return t;
+    }
+
+    // Walking on: the estimated time to the goal; standing idle last. A stuck agent (kPatience) keeps the
+    // stream's random order instead, which moves it out of the way of the agents it waits for.
+    double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
+        const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
+        if (site.waited >= kPatience) return idle;
+        const Placement end = graph_.next(site.base, m, c);
+        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site.neighbours);
+    }
+
+    // At the goal: standing idle first, then turning in place, then the clips that end nearest to it.
+    double stop_cost(const ChoiceSite& site, const Rigid2& m, int c) const {
+        const ClipKind kind = kinds_[std::size_t(c)];
+        if (kind == ClipKind::Idle) return 0;
+        const Placement end = graph_.next(site.base, m, c);
+        const double d = std::hypot(end.x - (*site.goal)[0], end.y - (*site.goal)[1]);
+        return (kind == ClipKind::InPlace ? 1e3 : 1e6) + d;
+    }
+
+    const MotionGraph& graph_;
+    std::vector<ClipKind> kinds_;
+    double radius_;
+    NavGrid grid_;
+    std::map<std::array<double, 2>, NavField> fields_;
+};
+
+}  // namespace
+
+std::unique_ptr<Policy> goal_policy(const PolicyContext& context) { return std::make_unique<GoalPolicy>(context); }
+
+}  // namespace mobb::crowd

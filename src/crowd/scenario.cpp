@@ -1,0 +1,147 @@
+#include "mobb/crowd/scenario.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "mobb/core/angle.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& where, const std::string& message) {
+    throw std::runtime_error(where + ": " + message);
+}
+
+void only_keys(const json& j, const std::string& where, const std::set<std::string>& keys) {
+    if (!j.is_object()) fail(where, "expected an object");
+    for (const auto& item : j.items())
+        if (!keys.count(item.key())) fail(where + "." + item.key(), "unknown key");
+}
+
+double number(const json& v, const std::string& where) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(where, "expected a finite number");
+    return v.get<double>();
+}
+
+std::vector<double> numbers(const json& v, std::size_t n, const std::string& where) {
+    if (!v.is_array() || v.size() != n) fail(where, "expected " + std::to_string(n) + " numbers");
+    std::vector<double> out;
+    for (std::size_t k = 0; k < n; ++k) out.push_back(number(v[k], where + "[" + std::to_string(k) + "]"));
+    return out;
+}
+
+Polygon obstacle(const json& j, const std::string& where) {
+    only_keys(j, where, {"rectangle", "polygon"});
+    if (j.contains("rectangle")) {
+        const auto r = numbers(j["rectangle"], 4, where + ".rectangle");
+        if (!(r[0] < r[2] && r[1] < r[3])) fail(where + ".rectangle", "expected [x0, y0, x1, y1] with x0 < x1, y0 < y1");
+        return Polygon::rectangle(r[0], r[1], r[2], r[3]);
+    }
+    if (!j.contains("polygon") || !j["polygon"].is_array() || j["polygon"].size() < 2)
+        fail(where, "expected \"rectangle\" or \"polygon\" (two or more [x, y])");
+    Polygon p;
+    for (std::size_t k = 0; k < j["polygon"].size(); ++k) {
+        const auto v = numbers(j["polygon"][k], 2, where + ".polygon[" + std::to_string(k) + "]");
+        p.vertices.push_back({v[0], v[1]});
+    }
+    return p;
+}
+
+AgentSpec agent(const json& j, const World& w, const std::string& where) {
+    only_keys(j, where, {"start", "heading", "start_time", "goal"});
+    if (!j.contains("start") || !j.contains("goal")) fail(where, "needs \"start\" and \"goal\"");
+    const auto s = numbers(j["start"], 2, where + ".start");
+    const auto g = numbers(j["goal"], 2, where + ".goal");
+    if (!w.inside(s[0], s[1])) fail(where + ".start", "outside the world");
+    if (!w.inside(g[0], g[1])) fail(where + ".goal", "outside the world");
+    AgentSpec a;
+    const double heading = j.contains("heading") ? radians(number(j["heading"], where + ".heading"))
+                                                 : std::atan2(g[1] - s[1], g[0] - s[0]);
+    a.start = {s[0], s[1], heading, 0.0};
+    a.goal = std::array<double, 2>{g[0], g[1]};
+    if (j.contains("start_time")) {
+        a.start_time = number(j["start_time"], where + ".start_time");
+        if (a.start_time < 0) fail(where + ".start_time", "must not be negative");
+    }
+    return a;
+}
+
+}  // namespace
+
+Scenario parse_scenario(const json& j, const std::string& where) {
+    only_keys(j, where, {"name", "description", "source", "world", "walls", "obstacles", "time_limit", "agents"});
+    Scenario s;
+    const auto text = [&](const char* key) {
+        if (!j.contains(key)) return std::string();
+        if (!j[key].is_string()) fail(where + "." + key, "expected a string");
+        return j[key].get<std::string>();
+    };
+    s.name = text("name");
+    s.description = text("description");
+    s.source = text("source");
+    if (!j.contains("world")) fail(where, "needs \"world\": [x0, y0, x1, y1]");
+    const auto w = numbers(j["world"], 4, where + ".world");
+    if (!(w[0] < w[2] && w[1] < w[3])) fail(where + ".world", "expected [x0, y0, x1, y1] with x0 < x1, y0 < y1");
+    s.world = {w[0], w[1], w[2], w[3], true, {}};
+    if (j.contains("walls")) {
+        if (!j["walls"].is_boolean()) fail(where + ".walls", "expected true or false");
+        s.world.walls = j["walls"].get<bool>();
+    }
+    if (j.contains("obstacles")) {
+        if (!j["obstacles"].is_array()) fail(where + ".obstacles", "expected an array");
+        for (std::size_t k = 0; k < j["obstacles"].size(); ++k)
+            s.world.obstacles.push_back(obstacle(j["obstacles"][k], where + ".obstacles[" + std::to_string(k) + "]"));
+    }
+    if (!j.contains("time_limit")) fail(where, "needs \"time_limit\" (seconds)");
+    s.time_limit = number(j["time_limit"], where + ".time_limit");
+    if (!(s.time_limit > 0)) fail(where + ".time_limit", "must be positive");
+    if (!j.contains("agents") || !j["agents"].is_array() || j["agents"].empty())
+        fail(where, "needs \"agents\": a non-empty array");
+    for (std::size_t k = 0; k < j["agents"].size(); ++k)
+        s.agents.push_back(agent(j["agents"][k], s.world, where + ".agents[" + std::to_string(k) + "]"));
+    return s;
+}
+
+Scenario load_scenario(const std::string& file) {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error(file + ": cannot open scenario file");
+    const json j = json::parse(in, nullptr, false);
+    if (j.is_discarded()) throw std::runtime_error(file + ": not valid JSON");
+    return parse_scenario(j, file);
+}
+
+CrowdOptions scenario_options(const Scenario& scenario) {
+    CrowdOptions o;
+    o.world = scenario.world;
+    o.placed = scenario.agents;
+    o.agents = int(scenario.agents.size());
+    o.seconds = scenario.time_limit;
+    o.select = Selection::Goal;
+    return o;
+}
+
+std::string default_scenario_folder() {
+    const std::string local = "assets/scenarios";
+    if (std::filesystem::is_directory(local)) return local;
+    return std::string(MOBB_SOURCE_DIR) + "/" + local;
+}
+
+std::vector<std::string> scenario_files(const std::string& folder) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+        if (e.path().extension() == ".json") out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace mobb::crowd

@@ -1,0 +1,147 @@
+// The selection policies on the committed graph: the order each puts a choice point's candidates in,
+// and when a goal agent stops.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "mobb/crowd/policy.h"
+
+namespace mobb::crowd {
+namespace {
+
+const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+
+struct Fixture {
+    MotionGraph graph = load_graph(kGraph);
+    std::vector<ClipKind> kinds;
+    std::vector<char> in_place;
+    std::vector<int> all;  // every clip, as the candidates of a choice point
+    Fixture() {
+        for (int k = 0; k < int(graph.clips.size()); ++k) {
+            kinds.push_back(kind_of(graph.clips[std::size_t(k)], k));
+            in_place.push_back(kinds.back() == ClipKind::InPlace || kinds.back() == ClipKind::Idle);
+            all.push_back(k);
+        }
+    }
+};
+
+const Fixture& fixture() {
+    static const Fixture f;
+    return f;
+}
+
+std::vector<int> ordered(const Policy& p, const ChoiceSite& site) {
+    std::vector<int> c = fixture().all;
+    p.order(site, c);
+    EXPECT_TRUE(std::is_permutation(c.begin(), c.end(), fixture().all.begin())) << "order() only reorders";
+    return c;
+}
+
+Placement end_of(const ChoiceSite& site, int clip) { return fixture().graph.next(site.base, clip); }
+
+TEST(Policy, RandomKeepsTheStreamOrder) {
+    World w;
+    const Fixture& f = fixture();
+    const auto p = make_policy(Selection::Random, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    std::vector<int> c = {5, 2, 9, 1};
+    p->order({0, {10, 10, 0, 0}, std::nullopt, 0, false, {}}, c);
+    EXPECT_EQ(c, (std::vector<int>{5, 2, 9, 1}));
+    EXPECT_EQ(p->kind(), Selection::Random);
+}
+
+TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
+    World w;  // [0, 30] x [0, 40]
+    const Fixture& f = fixture();
+    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    // In the open: every walking clip before every slow one, before every clip in place.
+    const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, 0, false, {}};
+    auto rank = [&](int c) {
+        const ClipKind k = f.kinds[std::size_t(c)];
+        return k == ClipKind::Walk ? 0 : k == ClipKind::Slow ? 1 : 2;
+    };
+    const std::vector<int> c = ordered(*p, open);
+    for (std::size_t k = 1; k < c.size(); ++k) EXPECT_LE(rank(c[k - 1]), rank(c[k])) << "position " << k;
+    // Stable within a rank: the stream's random order is kept.
+    std::vector<int> walks;
+    for (int x : f.all)
+        if (rank(x) == 0) walks.push_back(x);
+    EXPECT_TRUE(std::equal(walks.begin(), walks.end(), c.begin()));
+    // Facing the wall 2 m ahead: the first clips walk back into the open, away from it.
+    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, 0, false, {}};
+    const std::vector<int> d = ordered(*p, wall);
+    const Placement first = end_of(wall, d.front());
+    EXPECT_LT(std::cos(first.theta), std::cos(end_of(wall, walks.front()).theta) + 1e-12);
+    int toward = 0;
+    for (int x : f.all)
+        if (rank(x) == 0 && std::abs(std::remainder(end_of(wall, x).theta, 2 * 3.14159265358979)) < 0.2) ++toward;
+    ASSERT_GT(toward, 0);
+    for (std::size_t k = 0; k < d.size() && rank(d[k]) == 0; ++k) {
+        const Placement e = end_of(wall, d[k]);
+        const bool into_wall = std::cos(e.theta) > 0.99;
+        if (into_wall) {
+            // Walks into the wall come after those that do not.
+            for (std::size_t j = k + 1; j < d.size() && rank(d[j]) == 0; ++j) EXPECT_GT(std::cos(end_of(wall, d[j]).theta), 0.0);
+            break;
+        }
+    }
+}
+
+TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
+    World w;
+    w.x1 = 20;
+    w.y1 = 20;
+    const Fixture& f = fixture();
+    const std::array<double, 2> goal{18, 10};
+    const auto p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {goal}, 1.0, 0.45});
+    const ChoiceSite site{0, {5, 10, 0, 0}, goal, 0, false, {}};
+    const std::vector<int> c = ordered(*p, site);
+    const double before = std::hypot(goal[0] - 5, goal[1] - 10);
+    const Placement e = end_of(site, c.front());
+    EXPECT_LT(std::hypot(goal[0] - e.x, goal[1] - e.y), before - 0.5);
+    EXPECT_EQ(f.kinds[std::size_t(c.back())], ClipKind::Idle) << "standing comes last";
+    // A neighbour where that clip ends moves it down the order.
+    ChoiceSite crowded = site;
+    crowded.neighbours.push_back({e.x, e.y});
+    const std::vector<int> d = ordered(*p, crowded);
+    EXPECT_NE(d.front(), c.front());
+    // Arrived within the goal radius, not outside.
+    EXPECT_TRUE(p->arrived({0, {17.3, 10.5, 0, 0}, goal, 0, false, {}}));
+    EXPECT_FALSE(p->arrived({0, {16.9, 10, 0, 0}, goal, 0, false, {}}));
+    EXPECT_FALSE(p->arrived({0, {17.3, 10.5, 0, 0}, std::nullopt, 0, false, {}}));
+}
+
+// The goal straight ahead behind a wall: the first clips veer left, toward the way around it (its open
+// end at y > 14), much more than with no wall, where they head straight on.
+TEST(Policy, GoalFindsTheWayAroundAnObstacle) {
+    World open;
+    open.x1 = 20;
+    open.y1 = 20;
+    World walled = open;
+    walled.obstacles.push_back(Polygon::rectangle(8, 0, 9, 14));
+    const Fixture& f = fixture();
+    const std::array<double, 2> goal{15, 10};
+    const ChoiceSite site{0, {4, 10, 0, 0}, goal, 0, false, {}};
+    auto mean_turn = [&](const Policy& p) {
+        const std::vector<int> c = ordered(p, site);
+        double sum = 0;
+        for (int k = 0; k < 4; ++k) sum += end_of(site, c[std::size_t(k)]).theta / 4;
+        return sum;
+    };
+    const auto straight = make_policy(Selection::Goal, {f.graph, open, f.in_place, {goal}, 1.0, 0.45});
+    const auto around = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, 0.45});
+    EXPECT_LT(std::abs(mean_turn(*straight)), 0.15);
+    EXPECT_GT(mean_turn(*around), 0.3);
+    // Agents standing in the gap for good close it: the order changes.
+    const auto blocked = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, 0.45});
+    for (double y = 14.5; y < 20; y += 0.5) blocked->settled(8.5, y, 0.5);
+    EXPECT_NE(ordered(*blocked, site), ordered(*around, site));
+}
+
+TEST(Policy, ParsesTheirNames) {
+    for (Selection s : {Selection::Avoid, Selection::Random, Selection::Goal}) EXPECT_EQ(parse_selection(to_string(s)), s);
+    EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mobb::crowd
