@@ -29,7 +29,11 @@ struct PairQuery {
     float c = 1, s = 0, tx = 0, ty = 0, margin = 0;
 
     PairQuery(const ClipIndex& ia, const Placement& qa, const ClipIndex& ib, const Placement& qb, SamplePair* h)
-        : a(ia), b(ib), pa(qa), pb(qb), hit(h), ta(Rigid2::of(qa)), tb(Rigid2::of(qb)) {
+        : PairQuery(ia, qa, Rigid2::of(qa), ib, qb, Rigid2::of(qb), h) {}
+    /// With the rotations of the placements given (Rigid2::of(qa), Rigid2::of(qb)).
+    PairQuery(const ClipIndex& ia, const Placement& qa, const Rigid2& ra, const ClipIndex& ib, const Placement& qb,
+              const Rigid2& rb, SamplePair* h)
+        : a(ia), b(ib), pa(qa), pb(qb), hit(h), ta(ra), tb(rb) {
         // R_a^T R_b and R_a^T (t_b - t_a), from the very cos/sin the exact test uses.
         rel.c = ta.c * tb.c + ta.s * tb.s;
         rel.s = ta.c * tb.s - ta.s * tb.c;

@@ -85,8 +85,13 @@ bool sweep(const detail::PairQuery& q, const detail::Diagonals& diag) {
 }  // namespace
 
 bool collide_sweep(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb, SamplePair* hit) {
+    return collide_sweep(a, pa, Rigid2::of(pa), b, pb, Rigid2::of(pb), hit);
+}
+
+bool collide_sweep(const ClipIndex& a, const Placement& pa, const Rigid2& ta, const ClipIndex& b, const Placement& pb,
+                   const Rigid2& tb, SamplePair* hit) {
     if (hit) *hit = {};
-    detail::PairQuery q(a, pa, b, pb, hit);
+    detail::PairQuery q(a, pa, ta, b, pb, tb, hit);
     if (!q.passes_root_test()) return false;
     detail::Diagonals diag;
     if (!detail::diagonals(q, diag)) return detail::general_scan(q);

@@ -66,7 +66,8 @@ void BroadPhase::put(Cell& c, const Entry& e) const {
 
 void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     if (!enroll(id, owner, box)) return;
-    cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), {box, id, owner}); });
+    const Entry e = entry(box, id, owner);
+    cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), e); });
 }
 
 void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) {
@@ -77,7 +78,7 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
         kept[k] = enroll(it.id, it.owner, it.box);
         if (!kept[k]) continue;
         cells(it.box, [&](std::int64_t ix, std::int64_t iy) {  // hashing is not thread-safe: here
-            if (!flat(ix, iy)) put(hashed_[key(ix, iy)], {it.box, it.id, it.owner});
+            if (!flat(ix, iy)) put(hashed_[key(ix, iy)], entry(it.box, it.id, it.owner));
         });
     }
     // Bands of columns: a cell belongs to one band, so each cell still receives its items in order.
@@ -87,12 +88,13 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
         for (std::size_t k = 0; k < items.size(); ++k) {
             const Insertion& it = items[k];
             if (!kept[k]) continue;
+            const Entry e = entry(it.box, it.id, it.owner);
             const std::int64_t ix0 = std::max(lo, index_x(it.box.x0)), ix1 = std::min(hi - 1, index_x(it.box.x1));
             const std::int64_t iy0 = std::max<std::int64_t>(0, index_y(it.box.y0)),
                                iy1 = std::min(ny_ - 1, index_y(it.box.y1));
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
                 for (std::int64_t iy = iy0; iy <= iy1; ++iy)
-                    put(flat_[std::size_t(ix * ny_ + iy)], {it.box, it.id, it.owner});
+                    put(flat_[std::size_t(ix * ny_ + iy)], e);
         }
     });
 }
@@ -122,14 +124,16 @@ void BroadPhase::remove(int id) {
 
 void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {
     out.clear();
+    const std::int64_t qx = index_x(box.x0), qy = index_y(box.y0);
     cells(box, [&](std::int64_t ix, std::int64_t iy) {
         const Cell* c = find(ix, iy);
         if (!c) return;
         for (const Entry& e : *c) {
             if (e.owner == owner || e.box.f1 <= expired_ || !e.box.overlaps(box)) continue;
             // An item spans several cells: report it only from the cell holding the lower corner of
-            // the two boxes' intersection, which both cover. No visited marks, so the query is const.
-            if (index_x(std::max(e.box.x0, box.x0)) != ix || index_y(std::max(e.box.y0, box.y0)) != iy) continue;
+            // the two boxes' intersection, which both cover (the query's first column, or the item's
+            // when it starts further on; rows alike). No visited marks, so the query is const.
+            if ((ix != qx && e.ix != ix) || (iy != qy && e.iy != iy)) continue;
             out.push_back(e.id);
         }
     });

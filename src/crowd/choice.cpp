@@ -19,16 +19,29 @@ double excursion(double x, double y, const World& w) { return std::max({0.0, w.x
 SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x + h.r, h.y + h.r, h.frame, kForever}; }
 
 // A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
-// f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap.
-bool clip_meets_hold(const MotionGraph& g, const PlannedClip& c, const Hold& h, QueryStats* stats) {
+// f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap. Blocks
+// of samples whose circle stays a millimetre clear of the disk are skipped (the exact test decides).
+bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const PlannedClip& c, const Hold& h,
+                     QueryStats* stats) {
     const Path& path = g.clips[std::size_t(c.clip)].path;
-    const Rigid2 m = Rigid2::of(c.place);
+    const Rigid2& m = c.m;
     const Rigid2 still{1, 0, 0, 0};
     const Sample disk{h.x, h.y, h.r};
-    const std::int64_t first = std::max<std::int64_t>(0, h.frame - c.frame);
-    for (std::int64_t i = first; i < std::int64_t(path.size()); ++i) {
-        if (stats) ++stats->samples;
-        if (samples_overlap(m, path.samples[std::size_t(i)], still, disk)) return true;
+    // The hold's centre in the clip's frame.
+    const double dx = h.x - m.tx, dy = h.y - m.ty, hx = m.c * dx + m.s * dy, hy = -m.s * dx + m.c * dy;
+    const auto n = std::int64_t(path.size()), block = std::int64_t(ClipOutline::kBlock);
+    for (std::int64_t i = std::max<std::int64_t>(0, h.frame - c.frame); i < n;) {
+        const auto& b = outline.blocks[std::size_t(i / block)];
+        const std::int64_t end = std::min(n, (i / block + 1) * block);
+        const double reach = b[2] + h.r + 1e-3;
+        if ((b[0] - hx) * (b[0] - hx) + (b[1] - hy) * (b[1] - hy) >= reach * reach) {
+            i = end;
+            continue;
+        }
+        for (; i < end; ++i) {
+            if (stats) ++stats->samples;
+            if (samples_overlap(m, path.samples[std::size_t(i)], still, disk)) return true;
+        }
     }
     return false;
 }
@@ -42,6 +55,15 @@ bool holds_meet(const Hold& a, const Hold& b) {
 
 ClipOutline outline_of(const Path& path) {
     ClipOutline out;
+    for (std::size_t i = 0; i < path.size(); i += ClipOutline::kBlock) {
+        const std::size_t end = std::min(path.size(), i + ClipOutline::kBlock);
+        double cx = 0, cy = 0, r = 0;
+        for (std::size_t j = i; j < end; ++j) cx += path.samples[j].x, cy += path.samples[j].y;
+        cx /= double(end - i), cy /= double(end - i);
+        for (std::size_t j = i; j < end; ++j)
+            r = std::max(r, std::hypot(path.samples[j].x - cx, path.samples[j].y - cy) + path.samples[j].r);
+        out.blocks.push_back({cx, cy, r});
+    }
     std::vector<std::array<double, 2>> pts;
     for (const Sample& s : path.samples) {
         pts.push_back({s.x, s.y});
@@ -100,18 +122,23 @@ Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, con
 }
 
 bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats) {
-    if (other.kind == Piece::Solid) {
-        const Polygon& solid = s.solids[std::size_t(other.commit)];
-        // Held ground keeps room to turn on the spot from the walls, so a stop is never a trap.
-        if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.escapes.wall_clearance);
-        const PlannedClip& c = mine.clip;
-        return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.place, solid);
+    if (mine.kind == Piece::Clip && other.kind == Piece::Clip) {
+        const PlannedClip &a = mine.clip, &b = other.clip;
+        return s.narrow(a.clip, a.place, a.m, b.clip, b.place, b.m, stats);
     }
-    if (mine.kind == Piece::Clip && other.kind == Piece::Clip)
-        return s.narrow(mine.clip.clip, mine.clip.place, other.clip.clip, other.clip.place, stats);
-    if (mine.kind == Piece::Clip) return clip_meets_hold(s.graph, mine.clip, other.hold, stats);
-    if (other.kind == Piece::Clip) return clip_meets_hold(s.graph, other.clip, mine.hold, stats);
+    if (mine.kind == Piece::Clip)
+        return clip_meets_hold(s.graph, s.outlines[std::size_t(mine.clip.clip)], mine.clip, other.hold, stats);
+    if (other.kind == Piece::Clip)
+        return clip_meets_hold(s.graph, s.outlines[std::size_t(other.clip.clip)], other.clip, mine.hold, stats);
     return holds_meet(mine.hold, other.hold);
+}
+
+bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
+    const Polygon& solid = s.solids[std::size_t(k)];
+    // Held ground keeps room to turn on the spot from the walls, so a stop is never a trap.
+    if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.escapes.wall_clearance);
+    const PlannedClip& c = mine.clip;
+    return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.m, solid);
 }
 
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
@@ -131,6 +158,7 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
     }
     if (order.empty()) throw std::invalid_argument("crowd: a graph clip has no successors");
     base_.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
+    base_m_ = Rigid2::of(base_);
     for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng.below(int(k)))]);
     random_pick_ = rng.below(int(order.size()));
     order_.clear();
@@ -144,7 +172,9 @@ void Choice::order(const CrowdState& s) {
     ChoiceSite site{agent_, base_, a.goal, a.waited, false, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
     arriving_ = site.arrived;
-    if (const double reach = s.policy.neighbourhood(); reach > 0) {
+    const double reach = s.policy.neighbourhood();
+    if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
+    if (reach > 0) {
         const SpaceTimeBox around{base_.x - reach, base_.y - reach, base_.x + reach, base_.y + reach, frame_,
                                   frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
         queried_boxes_.push_back(around);
@@ -156,14 +186,14 @@ void Choice::order(const CrowdState& s) {
                 site.neighbours.push_back({0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
         }
     }
-    std::vector<int> next = drawn_;
-    s.policy.order(site, next);
-    if (next != order_) placed_.clear();
-    order_ = std::move(next);
+    next_ = drawn_;
+    s.policy.order(site, next_);
+    if (next_ != order_) placed_.clear();
+    std::swap(order_, next_);
 }
 
 const Placed& Choice::place(const CrowdState& s, int k) {
-    const Rigid2 m = Rigid2::of(base_);  // every candidate starts there
+    const Rigid2& m = base_m_;
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
         // The random mode ranks candidates leaving the world; the others meet the walls instead.
@@ -177,84 +207,131 @@ const Placed& Choice::place(const CrowdState& s, int k) {
 
 PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame) {
     const std::int64_t frames = std::int64_t(s.graph.clips[std::size_t(clip)].path.size());
-    return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box};
+    return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box, m};
 }
 
-// The queries of one piece of candidate k's plan against everything else live in the broad phase.
-bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
+void Choice::record_query(int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
     Candidate& cand = point_.candidates[std::size_t(k)];
+    ++cand.queries;
+    ++point_.queries;
+    point_.tests2d += st.tests2d;
+    point_.tests3d += st.tests3d;
+    point_.samples += st.samples;
+    q.mine = mine.index;
+    cand.against.push_back(q);
+    if (q.hit) ++cand.hits;
+}
+
+// Walls and obstacles whose bounds the piece's box reaches (held ground's reaches as far as it keeps
+// clear of them), tested directly: they are few and never change.
+bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
     const Hold& h = mine.hold;
-    // Held ground's box reaches the solids it keeps clear of.
     const SpaceTimeBox box = mine.kind == Piece::Held
                                  ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
                                  : mine.clip.box;
-    queried_boxes_.push_back(box);
-    s.broad.query(box, agent_, near_);
-    near_total_ += near_.size();
     bool free = true;
-    for (int id : near_) {
-        const Piece& other = s.pieces[std::size_t(id)];
-        QueryStats st;
-        const bool hit = pieces_collide(s, mine, other, &st);
-        ++cand.queries;
-        ++point_.queries;
-        point_.tests2d += st.tests2d;
-        point_.tests3d += st.tests3d;
-        point_.samples += st.samples;
-        if (!hit && st.tests2d + st.tests3d <= 1 && st.samples == 0) ++root_rejected_;
-        cand.against.push_back({other.agent, other.commit, other.index, mine.index, hit});
-        if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
-            log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
+    for (int i = 0; i < int(s.solids.size()); ++i) {
+        const auto& b = s.solid_bounds[std::size_t(i)];
+        if (box.x1 < b[0] || box.x0 > b[2] || box.y1 < b[1] || box.y0 > b[3]) continue;
+        const bool hit = meets_solid(s, mine, i);
+        record_query(k, mine, {-1, i, 0, 0, hit}, {});
         if (!hit) continue;
-        ++cand.hits;
-        if (other.kind == Piece::Solid) cand.outside = true;
+        point_.candidates[std::size_t(k)].outside = true;
         free = false;
         if (stop_at_hit) return false;
     }
     return free;
 }
 
-// The plan of clip `c` along an escape route: its stopping clips chained after it on the frame grid, and
-// the held ground where the route's clip in place starts.
-Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route) {
+// The queries of one piece of candidate k's plan: the solids, then every other agent's piece live in
+// the broad phase.
+bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
+    bool free = free_of_solids(s, k, mine, stop_at_hit);
+    if (!free && stop_at_hit) return false;
+    const SpaceTimeBox box = mine.kind == Piece::Held ? hold_box(mine.hold) : mine.clip.box;
+    queried_boxes_.push_back(box);
+    s.broad.query(box, agent_, near_);
+    near_total_ += near_.size();
+    auto& against = point_.candidates[std::size_t(k)].against;
+    if (against.capacity() < against.size() + near_.size())
+        against.reserve(std::max(2 * against.capacity(), against.size() + near_.size()));
+    for (int id : near_) {
+        const Piece& other = s.pieces[std::size_t(id)];
+        QueryStats st;
+        const bool hit = pieces_collide(s, mine, other, &st);
+        if (!hit && mine.kind == Piece::Clip && other.kind == Piece::Clip && st.tests2d + st.tests3d <= 1 &&
+            st.samples == 0)
+            ++root_rejected_;
+        record_query(k, mine, {other.agent, other.commit, other.index, 0, hit}, st);
+        if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
+            log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
+        if (!hit) continue;
+        free = false;
+        if (stop_at_hit) return false;
+    }
+    return free;
+}
+
+namespace {
+
+// The plan of clip `c` along an escape route, built piece by piece: its stopping clips chained after it
+// on the frame grid, then the held ground where the route's idle clip starts. Each piece goes to
+// `accept` as it is placed, and the plan stops at the first it refuses; returns whether none was.
+template <class Accept>
+bool build_plan(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route, Plan& plan, Accept&& accept) {
+    // (The route's first i + 1 clips place its i-th piece: a refused escape clip refuses every route
+    // sharing that prefix, which the caller skips.)
     const MotionGraph& g = s.graph;
-    Plan plan;
-    plan.escape.reserve(route.size() - 1);
+    plan.escape.clear();
+    plan.hold.reset();
     int prev = c.clip;
     Placement p = c.place;
-    Rigid2 m = Rigid2::of(p);
+    Rigid2 m = c.m;
     std::int64_t f = c.frame + std::int64_t(g.clips[std::size_t(prev)].path.size());
+    Piece piece;
     for (std::size_t i = 0; i < route.size(); ++i) {
         p = g.next(p, m, prev);
         p.t0 = double(f) * g.dt();
         if (i + 1 == route.size()) break;  // the idle clip: the held ground starts with it
         m = Rigid2::of(p);
-        plan.escape.push_back(frame_clip(s, route[i], p, m, f));
+        piece.index = int(i) + 1;
+        piece.clip = frame_clip(s, route[i], p, m, f);
+        plan.escape.push_back(piece.clip);
+        if (!accept(piece)) return false;
         prev = route[i];
         f += std::int64_t(g.clips[std::size_t(prev)].path.size());
     }
     plan.hold = Hold{p.x, p.y, s.escapes.hold_of(route.back()), f};
+    piece.kind = Piece::Held;
+    piece.index = -1;
+    piece.hold = *plan.hold;
+    return accept(piece);
+}
+
+}  // namespace
+
+Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route) {
+    Plan plan;
+    build_plan(s, c, route, plan, [](const Piece&) { return true; });
     return plan;
 }
 
-// Whether every piece of candidate k's plan is free of the others (its clip was tested already).
-bool Choice::plan_free(const CrowdState& s, int k, const Plan& plan) {
-    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
-        Piece piece;
-        piece.index = int(i) + 1;
-        piece.clip = plan.escape[i];
-        if (!free_of_others(s, k, piece, true)) return false;
-    }
-    Piece held;
-    held.kind = Piece::Held;
-    held.index = -1;
-    held.hold = *plan.hold;
-    return free_of_others(s, k, held, true);
+// Whether candidate k's plan along `route` is free of the others (its clip was tested already), tested
+// piece by piece as it is built. When an escape clip is not, `refused` is the route's prefix that
+// placed it (its length; 0 otherwise).
+bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
+                        std::size_t& refused) {
+    refused = 0;
+    return build_plan(s, c, route, plan, [&](const Piece& piece) {
+        if (free_of_others(s, k, piece, true)) return true;
+        if (piece.kind == Piece::Clip) refused = std::size_t(piece.index);
+        return false;
+    });
 }
 
 void Choice::take(int k, Outcome how) {
     const Placed& c = placed_[std::size_t(k)];
-    taken_ = {c.clip, c.place, frame_, c.box};
+    taken_ = {c.clip, c.place, frame_, c.box, base_m_};
     outcome_ = how;
     point_.taken = c.clip;
 }
@@ -303,7 +380,7 @@ bool Choice::hold_on(const CrowdState& s) {
     std::sort(options.begin(), options.end());
     for (int c : options) {
         if (!inside_hold(s, c, base_, h)) continue;
-        taken_ = frame_clip(s, c, base_, Rigid2::of(base_), frame_);
+        taken_ = frame_clip(s, c, base_, base_m_, frame_);
         plan_ = Plan{{}, h};
         outcome_ = Outcome::Escape;
         point_.taken = c;
@@ -323,7 +400,7 @@ void Choice::fall_back(const CrowdState& s) {
         if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
         point_.candidates[std::size_t(k)] = {c.clip, false, 0, 0, {}};
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box};
+        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         free_of_others(s, k, mine, false);
         const Candidate& cand = point_.candidates[std::size_t(k)];
         const std::pair<int, int> key{cand.outside ? 1 : 0, cand.hits};
@@ -340,7 +417,7 @@ void Choice::evaluate_random(const CrowdState& s) {
         const Placed& c = place(s, k);
         point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box};
+        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         free_of_others(s, k, mine, false);
         point_.candidates.back().outside = c.outside;  // the random mode's meaning: leaves the world
     }
@@ -370,15 +447,20 @@ void Choice::evaluate(const CrowdState& s) {
         const Placed& c = place(s, k);
         point_.candidates.push_back({c.clip, false, 0, 0, {}});
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box};
+        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, true)) continue;
+        const std::vector<int>* refused_route = nullptr;
+        std::size_t refused = 0;
         for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
-            Plan plan = plan_along(s, mine.clip, route);
-            if (!plan_free(s, k, plan)) continue;
+            // The same escape clip at the same place as one refused already.
+            if (refused > 0 && route.size() > refused &&
+                std::equal(route.begin(), route.begin() + std::ptrdiff_t(refused), refused_route->begin()))
+                continue;
+            refused_route = &route;
+            if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
             // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
-            const bool stops = arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan.escape.empty();
+            const bool stops = arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan_.escape.empty();
             take(k, stops ? Outcome::Arrived : Outcome::Candidate);
-            plan_ = std::move(plan);
             return;
         }
     }
@@ -393,6 +475,14 @@ std::vector<SpaceTimeBox> Choice::boxes() const {
 }
 
 bool Choice::affected_by(const BatchGrid& chosen, int below) const {
+    if (queried_boxes_.empty()) return false;
+    // Their union first: most choice points are far from every other of their frame.
+    SpaceTimeBox all = queried_boxes_.front();
+    for (const SpaceTimeBox& b : queried_boxes_) {
+        all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.f0 = std::min(all.f0, b.f0);
+        all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1), all.f1 = std::max(all.f1, b.f1);
+    }
+    if (!chosen.any_before(all, below)) return false;
     for (const SpaceTimeBox& b : queried_boxes_)
         if (chosen.any_before(b, below)) return true;
     return false;

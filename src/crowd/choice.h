@@ -27,6 +27,10 @@ namespace mobb::crowd {
 struct ClipOutline {
     std::vector<std::array<double, 2>> hull;
     double r_max = 0;
+    /// Per kBlock samples in order, a circle (x, y, radius) holding their disks: held ground far from
+    /// one skips its samples.
+    std::vector<std::array<double, 3>> blocks;
+    static constexpr std::size_t kBlock = 8;
 };
 ClipOutline outline_of(const Path& path);
 std::vector<ClipOutline> outlines_of(const MotionGraph& g);
@@ -52,12 +56,14 @@ struct Hold {
     std::int64_t frame = 0;
 };
 
-/// A graph clip at its place in the world, from global frame `frame` on, with its box (place_clip).
+/// A graph clip at its place in the world, from global frame `frame` on, with its box (place_clip) and
+/// its rotation m = Rigid2::of(place), computed once for every query it takes part in.
 struct PlannedClip {
     int clip = 0;
     Placement place;
     std::int64_t frame = 0;
     SpaceTimeBox box;
+    Rigid2 m;
 };
 
 /// What an agent reserves beyond the clip it plays: the clips that would stop it, then the held ground.
@@ -66,12 +72,12 @@ struct Plan {
     std::optional<Hold> hold;
 };
 
-/// One thing in the broad phase, by id: a clip an agent committed to or reserved, its held ground, or
-/// a solid (an obstacle or a wall).
+/// One thing in the broad phase, by id: a clip an agent committed to or reserved, or its held ground.
+/// (Walls and obstacles are few and never change: choice points test them directly.)
 struct Piece {
-    enum Kind : std::uint8_t { Clip, Held, Solid } kind = Clip;
-    int agent = -1;       ///< owner (-1 for solids)
-    int commit = 0;       ///< the choice point (record order) whose plan holds it; the solid's index
+    enum Kind : std::uint8_t { Clip, Held } kind = Clip;
+    int agent = -1;       ///< owner
+    int commit = 0;       ///< the choice point (record order) whose plan holds it
     int index = 0;        ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
     PlannedClip clip;     ///< Clip
     Hold hold;            ///< Held
@@ -98,6 +104,7 @@ struct CrowdState {
     const Policy& policy;
     const CrowdOptions& options;
     const std::vector<Polygon>& solids;       ///< World::solids(), by solid index
+    const std::vector<std::array<double, 4>>& solid_bounds;  ///< bounds() of each
     const BroadPhase& broad;                  ///< pieces live now
     const std::vector<Agent>& agents;
     const std::vector<Piece>& pieces;         ///< by broad-phase id
@@ -144,9 +151,12 @@ public:
 
 private:
     void order(const CrowdState& s);
+    bool free_of_solids(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
+    void record_query(int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
     const Placed& place(const CrowdState& s, int k);
     bool free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
-    bool plan_free(const CrowdState& s, int k, const Plan& plan);
+    bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
+                    std::size_t& refused);
     void evaluate_random(const CrowdState& s);
     bool take_escape(const CrowdState& s);
     bool hold_on(const CrowdState& s);
@@ -157,7 +167,9 @@ private:
     std::int64_t frame_ = 0;
     std::vector<int> drawn_;                  // candidate clips in the stream's random order
     std::vector<int> order_;                  // the same in the policy's order, for the current evaluation
+    std::vector<int> next_;                   // scratch: the order being made
     Placement base_;                          // where and when the next clip starts
+    Rigid2 base_m_;                           // Rigid2::of(base_): every candidate starts there
     std::vector<Placed> placed_;              // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                     // random mode: index of the clip taken
     bool arriving_ = false;                   // at its goal: stops as soon as it can
@@ -178,9 +190,12 @@ PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const 
 /// on the frame grid, and the held ground where the route's clip in place starts.
 Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route);
 
-/// Whether piece `mine` of an agent's plan collides with `other` (another agent's piece or a solid):
-/// clips by the narrow phase; a clip and held ground by their samples overlapping the held disk from
-/// its first frame on; two held grounds by their disks; anything and a solid by disk_overlaps().
+/// Whether piece `mine` of an agent's plan collides with another agent's piece: clips by the narrow
+/// phase; a clip and held ground by their samples overlapping the held disk from its first frame on;
+/// two held grounds by their disks.
 bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats);
+/// Whether it meets solid k: a clip's samples by disk_overlaps(); held ground when the solid is nearer
+/// than EscapeTable::wall_clearance.
+bool meets_solid(const CrowdState& s, const Piece& mine, int k);
 
 }  // namespace mobb::crowd

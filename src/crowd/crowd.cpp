@@ -24,7 +24,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-constexpr std::int64_t kAlways = std::numeric_limits<std::int64_t>::min();
 constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
 
 void check(const CrowdOptions& o) {
@@ -35,6 +34,12 @@ void check(const CrowdOptions& o) {
 }
 
 bool reserves(const CrowdOptions& o) { return o.select != Selection::Random; }
+
+std::vector<std::array<double, 4>> bounds_of(const std::vector<Polygon>& solids) {
+    std::vector<std::array<double, 4>> out;
+    for (const Polygon& p : solids) out.push_back(bounds(p));
+    return out;
+}
 
 std::vector<std::array<double, 2>> goals_of(const CrowdOptions& o) {
     std::vector<std::array<double, 2>> out;
@@ -56,6 +61,7 @@ public:
           o_(o),
           escapes_(reserves(o) ? EscapeTable::build(g) : EscapeTable{}),
           solids_(reserves(o) ? o.world.solids() : std::vector<Polygon>{}),
+          solid_bounds_(bounds_of(solids_)),
           policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, 0.45})),
           pool_(o.threads),
           broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
@@ -65,7 +71,7 @@ public:
 
 private:
     CrowdState state() const {
-        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, broad_, agents_, pieces_};
+        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, solid_bounds_, broad_, agents_, pieces_};
     }
     double max_radius() const;
     void place_agents();
@@ -89,6 +95,7 @@ private:
     const CrowdOptions& o_;
     const EscapeTable escapes_;
     const std::vector<Polygon> solids_;
+    const std::vector<std::array<double, 4>> solid_bounds_;
     const std::unique_ptr<Policy> policy_;
     util::WorkerPool pool_;
     BroadPhase broad_;                             // pieces live now
@@ -168,31 +175,21 @@ void Simulation::place_agents() {
 SpaceTimeBox Simulation::box_of(const Piece& p) const {
     if (p.kind == Piece::Held) return {p.hold.x - p.hold.r, p.hold.y - p.hold.r, p.hold.x + p.hold.r, p.hold.y + p.hold.r,
                                        p.hold.frame, kForever};
-    if (p.kind == Piece::Solid) {
-        const auto b = bounds(solids_[std::size_t(p.commit)]);
-        return {b[0], b[1], b[2], b[3], kAlways, kForever};
-    }
     return p.clip.box;
 }
 
 int Simulation::add_piece(const Piece& piece, bool pending) {
     const int id = int(pieces_.size());
     pieces_.push_back(piece);
-    const BroadPhase::Insertion item{id, piece.agent < 0 ? -2 : piece.agent, box_of(piece)};
+    const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
     if (pending) pending_.push_back(item);
     else broad_.insert(item.id, item.owner, item.box);
     return id;
 }
 
-// The solids, and every agent's held ground where it starts: the escape of its first choice point.
-// Scenario agents must start apart, clear of the solids (checked here).
+// Every agent's held ground where it starts: the escape of its first choice point. Scenario agents must
+// start apart, clear of the solids (checked here).
 void Simulation::reserve_starts() {
-    for (int k = 0; k < int(solids_.size()); ++k) {
-        Piece s;
-        s.kind = Piece::Solid;
-        s.commit = k;
-        add_piece(s, false);
-    }
     for (int a = 0; a < int(agents_.size()); ++a) {
         Agent& agent = agents_[std::size_t(a)];
         const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};

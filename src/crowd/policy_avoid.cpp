@@ -3,6 +3,7 @@
 // keep walking while they can), and walking clips heading for a wall after those heading into the open
 // (a bias toward the interior that turns agents early, a few degrees per clip).
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <utility>
 
@@ -15,28 +16,52 @@ namespace {
 class AvoidPolicy : public Policy {
 public:
     explicit AvoidPolicy(const PolicyContext& c) : graph_(c.graph), world_(c.world) {
-        for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
+        for (int k = 0; k < int(graph_.clips.size()); ++k) {
+            const GraphClip& clip = graph_.clips[std::size_t(k)];
+            kinds_.push_back(kind_of(clip, k));
+            reach_.push_back(std::hypot(clip.exit_x, clip.exit_y));
+            farthest_ = std::max(farthest_, reach_.back());
+        }
     }
 
     Selection kind() const override { return Selection::Avoid; }
 
+    // A stable insertion sort by rank: a few dozen candidates, no allocation.
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
-        const Rigid2 m = Rigid2::of(site.base);
-        std::vector<std::pair<int, int>> ranked;  // (rank, clip), in the stream's order
-        for (int c : candidates) ranked.emplace_back(rank(site, m, c), c);
-        std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (std::size_t k = 0; k < ranked.size(); ++k) candidates[k] = ranked[k].second;
+        const Placement& b = site.base;
+        const double wall = std::min({b.x - world_.x0, world_.x1 - b.x, b.y - world_.y0, world_.y1 - b.y});
+        const Rigid2 m = wall < kOpenAhead + farthest_ ? Rigid2::of(b) : Rigid2{};  // used only then
+        struct Ranked {
+            int rank, clip;
+        };
+        Ranked buffer[256];
+        std::vector<Ranked> spill;
+        Ranked* ranked = buffer;
+        if (candidates.size() > std::size(buffer)) ranked = (spill.resize(candidates.size()), spill.data());
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            const Ranked x{rank(site, m, candidates[k], wall), candidates[k]};
+            std::size_t j = k;
+            for (; j > 0 && ranked[j - 1].rank > x.rank; --j) ranked[j] = ranked[j - 1];
+            ranked[j] = x;
+        }
+        for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k] = ranked[k].clip;
     }
 
 private:
-    static constexpr double kOpenAhead = 5.0;  // metres of ground ahead of a clip's end: "in the open"
+    static constexpr double kOpenAhead = 8.0;  // metres of ground ahead of a clip's end: "in the open"
+    static constexpr double kBand = 1.0;       // metres: walks toward a wall ranked in bands this wide
+    static constexpr int kBands = int(kOpenAhead / kBand);
 
-    // 0: walks and keeps going into the open; 1: walks toward a wall; 2: slow (starts, stops); 3: stays.
-    int rank(const ChoiceSite& site, const Rigid2& m, int clip) const {
+    // 0: walks and keeps going into the open; 1 .. kBands: walks toward a wall, the nearer the later;
+    // then slow clips (starts, stops); then those that stay in place. `wall`: the base's distance to the
+    // nearest wall (a clip ending farther than kOpenAhead from every wall is in the open).
+    int rank(const ChoiceSite& site, const Rigid2& m, int clip, double wall) const {
         const ClipKind kind = kinds_[std::size_t(clip)];
-        if (kind == ClipKind::InPlace || kind == ClipKind::Idle) return 3;
-        if (kind == ClipKind::Slow) return 2;
-        return ahead(site.base, graph_.next(site.base, m, clip)) < kOpenAhead ? 1 : 0;
+        if (kind == ClipKind::InPlace || kind == ClipKind::Idle) return kBands + 2;
+        if (kind == ClipKind::Slow) return kBands + 1;
+        if (wall - reach_[std::size_t(clip)] >= kOpenAhead) return 0;
+        const double room = ahead(site.base, graph_.next(site.base, m, clip));
+        return room >= kOpenAhead ? 0 : 1 + std::min(kBands - 1, int((kOpenAhead - room) / kBand));
     }
 
     // How far the agent could go on in the direction it moved from `from` to `to` before leaving the world.
@@ -55,6 +80,8 @@ private:
     const MotionGraph& graph_;
     const World& world_;
     std::vector<ClipKind> kinds_;  // per clip
+    std::vector<double> reach_;    // per clip: metres from its start to its exit
+    double farthest_ = 0;          // the largest of them
 };
 
 }  // namespace

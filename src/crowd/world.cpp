@@ -76,7 +76,10 @@ std::array<double, 4> bounds(const Polygon& poly) {
 }
 
 bool path_hits(const Path& path, const Placement& place, const Polygon& poly, std::size_t first) {
-    const Rigid2 m = Rigid2::of(place);
+    return path_hits(path, Rigid2::of(place), poly, first);
+}
+
+bool path_hits(const Path& path, const Rigid2& m, const Polygon& poly, std::size_t first) {
     for (std::size_t i = first; i < path.size(); ++i) {
         const Sample& s = path.samples[i];
         if (disk_overlaps(poly, m.apply_x(s.x, s.y), m.apply_y(s.x, s.y), s.r)) return true;

@@ -44,6 +44,7 @@ TEST(FastQueryTest, AgreesWithBruteForceOnRandomWalks) {
             ASSERT_EQ(collide_sweep(ia, pa, ib, pb, &hf), expected) << clip << " " << q;
             ASSERT_EQ(collide_scan(ia, pa, ib, pb, &hs), expected) << clip << " " << q;
             ASSERT_EQ(collide_sweep(ib, pb, ia, pa), expected) << clip << " " << q;
+            ASSERT_EQ(collide_sweep(ia, pa, Rigid2::of(pa), ib, pb, Rigid2::of(pb)), expected) << clip << " " << q;
             if (expected) {
                 expect_real_hit(a, pa, b, pb, hf);
                 expect_real_hit(a, pa, b, pb, hs);

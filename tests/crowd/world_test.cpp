@@ -100,11 +100,14 @@ TEST(World, PathHitsTestsEverySampleFromTheFirstOn) {
     for (int i = 0; i < 20; ++i) path.samples.push_back({0.1 * i, 0, 0.2});
     const Polygon pillar = Polygon::rectangle(1.5, -0.5, 2.5, 0.5);
     // Placed at x = 0 the samples reach 1.9 + 0.2: into the pillar from sample 14 (1.4 + 0.2 > 1.5) on.
-    EXPECT_TRUE(path_hits(path, {0, 0, 0, 0}, pillar));
-    EXPECT_TRUE(path_hits(path, {0, 0, 0, 0}, pillar, 14));
-    EXPECT_FALSE(path_hits(path, {0, 0, 0, 0}, pillar, 20));
-    EXPECT_FALSE(path_hits(path, {0, 0, kPi, 0}, pillar));  // turned around, it walks away
-    EXPECT_FALSE(path_hits(path, {0, 1.0, 0, 0}, pillar));   // 0.5 m beside it, r 0.2
+    const Placement origin{0, 0, 0, 0}, turned{0, 0, kPi, 0}, beside{0, 1.0, 0, 0};
+    EXPECT_TRUE(path_hits(path, origin, pillar));
+    EXPECT_TRUE(path_hits(path, origin, pillar, 14));
+    EXPECT_FALSE(path_hits(path, origin, pillar, 20));
+    EXPECT_FALSE(path_hits(path, turned, pillar));  // turned around, it walks away
+    EXPECT_FALSE(path_hits(path, beside, pillar));  // 0.5 m beside it, r 0.2
+    EXPECT_TRUE(path_hits(path, Rigid2::of(origin), pillar, 14));
+    EXPECT_FALSE(path_hits(path, Rigid2::of(turned), pillar));
 }
 
 TEST(World, WallsAreSolidsOutsideTheRectangle) {

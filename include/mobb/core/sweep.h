@@ -20,5 +20,9 @@ namespace mobb {
 /// On a hit, stores a colliding pair in `hit` (not necessarily the one brute force reports).
 bool collide_sweep(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb,
                    SamplePair* hit = nullptr);
+/// The same with the placements' rotations given, ta == Rigid2::of(pa) and tb == Rigid2::of(pb): a
+/// caller querying one placed clip against many computes each once (the crowd's choice points).
+bool collide_sweep(const ClipIndex& a, const Placement& pa, const Rigid2& ta, const ClipIndex& b, const Placement& pb,
+                   const Rigid2& tb, SamplePair* hit = nullptr);
 
 }  // namespace mobb

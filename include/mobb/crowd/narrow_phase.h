@@ -20,6 +20,9 @@ public:
 
     /// Graph clip a placed at pa against graph clip b placed at pb; adds tests to `stats` when not null.
     bool operator()(int a, const Placement& pa, int b, const Placement& pb, QueryStats* stats = nullptr) const;
+    /// The same with the placements' rotations given (ma == Rigid2::of(pa), mb == Rigid2::of(pb)).
+    bool operator()(int a, const Placement& pa, const Rigid2& ma, int b, const Placement& pb, const Rigid2& mb,
+                    QueryStats* stats = nullptr) const;
 
     /// "sweep", or the tree type's name.
     const char* name() const;

@@ -30,6 +30,8 @@ std::array<double, 4> bounds(const Polygon& polygon);
 /// Whether any sample of `path` placed at `place` overlaps the polygon (time plays no part: obstacles
 /// stand for ever). Samples [first, path.size()) only.
 bool path_hits(const Path& path, const Placement& place, const Polygon& polygon, std::size_t first = 0);
+/// The same with the placement's rotation given (m == Rigid2::of(place)).
+bool path_hits(const Path& path, const Rigid2& m, const Polygon& polygon, std::size_t first = 0);
 
 struct World {
     double x0 = 0, y0 = 0, x1 = 30, y1 = 40;  ///< the ground rectangle, metres
