@@ -7,8 +7,8 @@
 #   same build)
 #   QUERY_SET: the file of `mobb bench WORKLOAD --save-queries FILE`; without it the set is regenerated
 #   with the default options (one timed pass, output discarded). For scale it is the FILE prefix: the
-#   sets FILE.<agents> (a sample of each crowd's queries), on which "MOBB" (the crowd's own query,
-#   src/crowd/choice.cpp) and "circle sweep" (the library's fastest) are counted.
+#   sets FILE.<agents> (a sample of each crowd's clip-against-clip queries), on which "MOBB" (the paper's
+#   tree) and "circle sweep" (the library's fastest, the crowd's narrow phase) are counted.
 # Release build and valgrind needed. Only mobb_run_queries is measured (loading, preparing the method
 # excluded): the first N queries of the set, N = 5000 (300 for brute force and FCL, which are slow under
 # callgrind), or all when fewer.

@@ -4,8 +4,9 @@
 Usage: merge_callgrind.py RESULTS.json RESULTS.md COUNTS VALGRIND_VERSION
 COUNTS: lines "label<TAB>method<TAB>instructions<TAB>queries"; label "-" for the method tables, where
 "instructions_per_query", "callgrind_queries" and "x_sweep_instructions" (method / circle sweep) go to
-the rows of that method; for scale the label is the row's agent count, and the row gets the crowd's own
-query ("MOBB") as "instructions_per_query" and the circle sweep as "instructions_per_query_sweep". Adds
+the rows of that method; for scale the label is the row's agent count, and the row gets the paper's MOBB
+tree as "instructions_per_query" and the circle sweep (the crowd's own query) as
+"instructions_per_query_sweep". Adds
 a "callgrind" note and a Markdown table (replacing any earlier one)."""
 import json
 import sys
@@ -29,7 +30,7 @@ def write_json(path, data):
 
 
 def merge_scale(data, counts, version):
-    lines = ["| agents | MOBB (the crowd's query) instr / query | circle sweep instr / query | queries sampled |",
+    lines = ["| agents | MOBB (the paper's tree) instr / query | circle sweep (the crowd's query) instr / query | queries sampled |",
              "|---:|---:|---:|---:|"]
     for row in data["rows"]:
         label = str(row["agents"])

@@ -18,9 +18,9 @@ struct TableOutputs {
     std::string json, png;
     bool quiet = false;
 
-    void add_to(CLI::App& cmd) {
+    void add_to(CLI::App& cmd, const std::string& chart = "time per query") {
         cmd.add_option("--json", json, "Also write the table as JSON");
-        cmd.add_option("--png", png, "Also write a bar chart of time per query (PNG)");
+        cmd.add_option("--png", png, "Also write a bar chart of " + chart + " (PNG)");
         cmd.add_flag("--quiet", quiet, "No progress bar");
     }
     void write(const bench::BenchTable& t, std::ostream& out) const {
@@ -217,7 +217,7 @@ void add_crowd_quality(CLI::App& bench, int& exit_code) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->add_flag("--quick", *quick, "Smoke run: 30 and 60 agents for 20 s, two scenarios, one seed");
-    outputs->add_to(*cmd);
+    outputs->add_to(*cmd, "idle share (wander) and time to the last goal (scenarios)");
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
             bench::CrowdQualityOptions opt = *o;

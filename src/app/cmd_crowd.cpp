@@ -125,8 +125,13 @@ void add_crowd(CLI::App& app, int& exit_code) {
             const bool trees = cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit");
             const crowd::NarrowPhase narrow =
                 trees ? crowd::NarrowPhase::trees(g, tree->options()) : crowd::NarrowPhase::sweep(g);
-            crowd::CrowdRun run =
-                crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
+            crowd::CrowdRun run;
+            try {
+                run = crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
+            } catch (const std::invalid_argument& e) {
+                if (scenario->empty()) throw;
+                throw InputError(*scenario + ": " + e.what());  // its agents cannot start where it puts them
+            }
             run.record.graph = file;
             run.record.scenario = s.name;
             const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);

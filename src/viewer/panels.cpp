@@ -366,6 +366,7 @@ void crowd_panel(State& s, Ui& ui) {
     ImGui::SetNextWindowPos(ImVec2(416, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
     ImGui::SetNextWindowSize(ImVec2(316, 0), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Crowd")) return ImGui::End();
+    if (!r.scenario.empty()) ImGui::Text("scenario %s", r.scenario.c_str());
     ImGui::Text("%d agents, %.1f s, %s, seed %llu", v.agents, double(r.frames) * r.dt, r.select.c_str(),
                 static_cast<unsigned long long>(r.seed));
     if (ImGui::Button(v.playing ? "pause" : "play")) v.playing = !v.playing;

@@ -1,6 +1,7 @@
 // The crowd and benchmark subcommands as a user meets them: tables, records, exit codes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -94,6 +95,61 @@ TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
     EXPECT_FALSE(text[0].empty());
     EXPECT_TRUE(text[1] == text[0]);
     EXPECT_TRUE(text[2] == text[0]);
+}
+
+TEST(CrowdCli, ScenarioRunsToItsGoals) {
+    const std::string rec = temp_file("scenario.json");
+    const Result r = run("crowd --quiet --graph " + kGraph + " --scenario " + std::string(MOBB_SOURCE_DIR) +
+                         "/assets/scenarios/oncoming.json --record " + rec);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("scenario oncoming: 2 agents", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("2 of 2 reached"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("PASSED"), std::string::npos) << r.out;
+    const crowd::Record record = crowd::load_record(rec);
+    EXPECT_EQ(record.scenario, "oncoming");
+    EXPECT_EQ(record.select, "goal");
+    ASSERT_TRUE(record.tracks[0].goal);
+    const nlohmann::json j = nlohmann::json::parse(test::slurp(rec));
+    EXPECT_TRUE(j["metrics"]["passed"].get<bool>());
+    EXPECT_EQ(j["world"].size(), 4u);
+    std::remove(rec.c_str());
+}
+
+TEST(CrowdCli, BenchCrowdWritesItsTables) {
+    const std::string json = temp_file("crowd.json"), png = temp_file("crowd.png");
+    const Result r = run("bench crowd --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* part : {"### Wandering crowds", "### Scenarios", "Targets (issue 10)", "fallbacks <= 0.5 %"})
+        EXPECT_NE(r.out.find(part), std::string::npos) << part;
+    const nlohmann::json j = nlohmann::json::parse(test::slurp(json));
+    EXPECT_EQ(j["workload"], "crowd");
+    EXPECT_EQ(j["wander"].size(), 2u);
+    EXPECT_EQ(j["scenarios"].size(), 2u);
+    EXPECT_FALSE(j["targets"].empty());
+    EXPECT_TRUE(j["wander"][0]["metrics"].contains("idle_share"));
+    EXPECT_GT(test::slurp(png).size(), 1000u);
+    std::remove(json.c_str());
+    std::remove(png.c_str());
+}
+
+TEST(CrowdCli, ScenarioErrors) {
+    const std::string bad = temp_file("bad_scenario.json");
+    std::ofstream(bad) << R"({"world": [0, 0, 10, 10], "time_limit": 5,
+        "agents": [{"start": [3, 5], "goal": [8, 5]}, {"start": [3.5, 5], "goal": [8, 8]}]})";
+    Result r = run("crowd --quiet --graph " + kGraph + " --scenario " + bad);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.err.find("error: " + bad + ": "), 0u) << r.err;
+    EXPECT_NE(r.err.find("start closer than"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    std::ofstream(bad) << "{ not json";
+    r = run("crowd --quiet --graph " + kGraph + " --scenario " + bad);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find(bad + ": not valid JSON"), std::string::npos) << r.err;
+    r = run("crowd --quiet --graph " + kGraph + " --scenario " + bad + " --agents 5");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--agents does not go with --scenario"), std::string::npos) << r.err;
+    std::remove(bad.c_str());
 }
 
 TEST(CrowdCli, ErrorsAndExitCodes) {
