@@ -1,6 +1,7 @@
 // mobb bench ...: the paper's experiments and the performance workloads (src/bench).
 #include <algorithm>
 #include <fstream>
+#include <functional>
 #include <iostream>
 
 #include "cli.h"
@@ -23,14 +24,21 @@ struct TableOutputs {
         cmd.add_option("--png", png, "Also write a bar chart of " + chart + " (PNG)");
         cmd.add_flag("--quiet", quiet, "No progress bar");
     }
-    void write(const bench::BenchTable& t, std::ostream& out) const {
+    /// The JSON file, the chart (write_png(file) when asked for) and the Markdown on `out`.
+    void emit(const std::string& json_text, const std::function<void(const std::string&)>& write_png,
+              const std::string& markdown, std::ostream& out) const {
         if (!json.empty()) {
             std::ofstream f(json);
-            f << bench::table_json(t);
+            f << json_text;
             if (!f) throw InputError(json + ": cannot write");
         }
-        if (!png.empty()) bench::write_table_png(t, png);
-        out << bench::table_markdown(t);
+        if (!png.empty()) write_png(png);
+        out << markdown;
+    }
+    void write(const bench::BenchTable& t, std::ostream& out) const {
+        emit(
+            bench::table_json(t), [&](const std::string& file) { bench::write_table_png(t, file); },
+            bench::table_markdown(t), out);
     }
     std::function<void(double)> progress(const std::string& label) const {
         return quiet ? std::function<void(double)>() : progress_bar(label);
@@ -188,20 +196,17 @@ void add_scale(CLI::App& bench, int& exit_code) {
                 opt.repeats = 1;
             }
             const bench::ScaleTable t = bench::run_scale(opt, outputs->progress("scale"));
-            if (!outputs->json.empty()) {
-                std::ofstream f(outputs->json);
-                f << bench::scale_json(t);
-                if (!f) throw InputError(outputs->json + ": cannot write");
-            }
-            if (!outputs->png.empty()) bench::write_scale_png(t, outputs->png);
-            out << bench::scale_markdown(t);
+            outputs->emit(
+                bench::scale_json(t), [&](const std::string& file) { bench::write_scale_png(t, file); },
+                bench::scale_markdown(t), out);
         });
     });
 }
 
 void add_crowd_quality(CLI::App& bench, int& exit_code) {
-    auto* cmd = bench.add_subcommand("crowd", "The avoiding crowd: wander at the paper's density and every scenario, "
-                                              "several seeds, with their metrics and the crowd's targets");
+    auto* cmd = bench.add_subcommand("crowd",
+                                     "The avoiding crowd: wander at the paper's density and every scenario, "
+                                     "several seeds, with their metrics and the crowd's targets");
     auto o = std::make_shared<bench::CrowdQualityOptions>();
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
@@ -231,13 +236,9 @@ void add_crowd_quality(CLI::App& bench, int& exit_code) {
                 opt.seeds = {opt.seeds.front()};
             }
             const bench::CrowdQualityTable t = bench::run_crowd_quality(opt, outputs->progress("crowd"));
-            if (!outputs->json.empty()) {
-                std::ofstream f(outputs->json);
-                f << bench::crowd_quality_json(t);
-                if (!f) throw InputError(outputs->json + ": cannot write");
-            }
-            if (!outputs->png.empty()) bench::write_crowd_quality_png(t, outputs->png);
-            out << bench::crowd_quality_markdown(t);
+            outputs->emit(
+                bench::crowd_quality_json(t), [&](const std::string& file) { bench::write_crowd_quality_png(t, file); },
+                bench::crowd_quality_markdown(t), out);
         });
     });
 }

@@ -141,9 +141,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 if (!f) throw InputError(*record + ": cannot write");
             }
             if (!s.name.empty()) out << "scenario " << s.name << ": ";
-            out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, " << opt.seconds
-                << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase " << narrow.name()
-                << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size() << " clips)\n"
+            out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, "
+                << opt.seconds << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase "
+                << narrow.name() << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size()
+                << " clips)\n"
                 << crowd::summary_text(run.summary) << crowd::metrics_text(metrics);
         });
     });

@@ -22,8 +22,8 @@ using util::fixed;
 // Before the escapes: 10,013 contact agent-pair frames at 100 agents, 30 x 40 m, 60 s, seed 11.
 constexpr double kContactsBefore = 10013.0 / 60.0;  // per simulated second
 
-WanderRow run_wander(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, const CrowdQualityOptions::Wander& w,
-                     std::uint64_t seed, int threads) {
+WanderRow run_wander(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow,
+                     const CrowdQualityOptions::Wander& w, std::uint64_t seed, int threads) {
     crowd::CrowdOptions o;
     o.agents = w.agents;
     o.world.x1 = w.width;
@@ -32,8 +32,14 @@ WanderRow run_wander(const crowd::MotionGraph& g, const crowd::NarrowPhase& narr
     o.seed = seed;
     o.threads = threads;
     const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
-    return {w.agents, w.width, w.height, w.seconds, seed, crowd::crowd_metrics(run.record, g, o.goal_radius),
-            run.summary.escapes, run.summary.cd_us_per_agent_second()};
+    return {w.agents,
+            w.width,
+            w.height,
+            w.seconds,
+            seed,
+            crowd::crowd_metrics(run.record, g, o.goal_radius),
+            run.summary.escapes,
+            run.summary.cd_us_per_agent_second()};
 }
 
 ScenarioRow run_scenario(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, const std::string& file,
@@ -43,8 +49,8 @@ ScenarioRow run_scenario(const crowd::MotionGraph& g, const crowd::NarrowPhase& 
     o.seed = seed;
     o.threads = threads;
     const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
-    return {s.name, std::filesystem::path(file).filename().string(), int(s.agents.size()), s.time_limit, seed,
-            crowd::crowd_metrics(run.record, g, o.goal_radius)};
+    return {s.name, std::filesystem::path(file).filename().string(),   int(s.agents.size()), s.time_limit,
+            seed,   crowd::crowd_metrics(run.record, g, o.goal_radius)};
 }
 
 // A count or a share (printed as a number), or a cost ratio (printed with "x").
@@ -69,8 +75,8 @@ Target at_least(const std::string& what, double goal, double measured, const std
 }
 
 void add_wander_targets(CrowdQualityTable& t, const CrowdQualityOptions& o) {
-    double fallbacks = 0, big_fallbacks = 0, unexcused = 0, contacts = 0, outside = 0, speed = 1e300, idle = 0, longest = 0,
-           cost = 0;
+    double fallbacks = 0, big_fallbacks = 0, unexcused = 0, contacts = 0, outside = 0, speed = 1e300, idle = 0,
+           longest = 0, cost = 0;
     bool big = false;
     for (const WanderRow& r : t.wander) {
         const crowd::CrowdMetrics& m = r.metrics;
@@ -89,8 +95,8 @@ void add_wander_targets(CrowdQualityTable& t, const CrowdQualityOptions& o) {
         longest = std::max(longest, m.longest_idle);
     }
     const std::string seeds = "worst of seeds " + std::to_string(o.seeds.size());
-    t.targets.push_back(at_most("wander 100 and 1,000 agents: fallbacks <= 0.5 % of choice points (%)", 0.5,
-                                100 * fallbacks, seeds));
+    t.targets.push_back(
+        at_most("wander 100 and 1,000 agents: fallbacks <= 0.5 % of choice points (%)", 0.5, 100 * fallbacks, seeds));
     t.targets.push_back(at_most("wander 100 and 1,000 agents: contacts outside fallbacks", 0, unexcused, "all runs"));
     t.targets.push_back(at_most("wander: contact agent-pair frames per simulated second, 100x fewer than before (" +
                                     fixed(kContactsBefore, 1) + ")",
@@ -142,7 +148,8 @@ CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::fun
     add_wander_targets(t, o);
     add_scenario_target(t);
     t.notes["graph"] = o.graph + " (" + std::to_string(g.clips.size()) + " clips)";
-    t.notes["selection"] = "wander: mobb crowd --select avoid (walled world, no wrap); scenarios: mobb crowd --scenario";
+    t.notes["selection"] =
+        "wander: mobb crowd --select avoid (walled world, no wrap); scenarios: mobb crowd --scenario";
     t.notes["narrow phase"] = "circle sweep (ClipIndex + collide_sweep), " + std::to_string(o.threads) + " thread(s)";
     t.notes["idle"] = "ground speed over a 1 s window below 0.25 m/s; an agent at its goal no longer counts";
     t.notes["cpu"] = cpu_name();
@@ -152,19 +159,22 @@ CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::fun
 std::string crowd_quality_markdown(const CrowdQualityTable& t) {
     std::ostringstream out;
     out << "### Wandering crowds (avoid, walled world)\n\n"
-        << "| agents | world (m) | s | seed | choice points | fallbacks % | escapes | contacts | outside | speed / graph | "
+        << "| agents | world (m) | s | seed | choice points | fallbacks % | escapes | contacts | outside | speed / "
+           "graph | "
            "idle % | longest idle s | CD us / agent / s |\n"
         << "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const WanderRow& r : t.wander) {
         const crowd::CrowdMetrics& m = r.metrics;
-        out << "| " << r.agents << " | " << fixed(r.width, 1) << " x " << fixed(r.height, 1) << " | " << fixed(r.seconds, 0)
-            << " | " << r.seed << " | " << m.choice_points << " | " << fixed(100 * m.fallback_share, 3) << " | "
-            << r.escapes << " | " << m.contacts << " | " << m.samples_outside + m.obstacle_contacts << " | "
-            << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1) << " | " << fixed(m.longest_idle, 1)
-            << " | " << fixed(r.cd_us_per_agent_second, 2) << " |\n";
+        out << "| " << r.agents << " | " << fixed(r.width, 1) << " x " << fixed(r.height, 1) << " | "
+            << fixed(r.seconds, 0) << " | " << r.seed << " | " << m.choice_points << " | "
+            << fixed(100 * m.fallback_share, 3) << " | " << r.escapes << " | " << m.contacts << " | "
+            << m.samples_outside + m.obstacle_contacts << " | " << fixed(m.speed_ratio, 3) << " | "
+            << fixed(100 * m.idle_share, 1) << " | " << fixed(m.longest_idle, 1) << " | "
+            << fixed(r.cd_us_per_agent_second, 2) << " |\n";
     }
     out << "\n### Scenarios (goal-directed)\n\n"
-        << "| scenario | agents | seed | passed | reached | mean / last time to goal s (limit) | contacts | path / straight "
+        << "| scenario | agents | seed | passed | reached | mean / last time to goal s (limit) | contacts | path / "
+           "straight "
            "| speed / graph | idle % | Composite01 | Composite02 |\n"
         << "|---|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
     for (const ScenarioRow& r : t.scenarios) {
@@ -172,8 +182,8 @@ std::string crowd_quality_markdown(const CrowdQualityTable& t) {
         out << "| " << r.name << " | " << r.agents << " | " << r.seed << " | " << (m.passed ? "yes" : "NO") << " | "
             << m.reached << " / " << m.goal_agents << " | " << fixed(m.mean_time_to_goal, 1) << " / "
             << fixed(m.max_time_to_goal, 1) << " (" << fixed(r.time_limit, 0) << ") | " << m.contacts << " | "
-            << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1) << " | "
-            << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " |\n";
+            << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1)
+            << " | " << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " |\n";
     }
     out << "\nTargets (issue 10):\n\n";
     for (const Target& g : t.targets) out << "- " << g.what << ": " << target_text(g) << " (" << g.detail << ")\n";
@@ -188,17 +198,29 @@ std::string crowd_quality_json(const CrowdQualityTable& t) {
     j["workload"] = "crowd";
     J wander = J::array();
     for (const WanderRow& r : t.wander)
-        wander.push_back({{"agents", r.agents}, {"world", {r.width, r.height}}, {"seconds", r.seconds}, {"seed", r.seed},
-                          {"escapes", r.escapes}, {"cd_us_per_agent_second", util::rounded(r.cd_us_per_agent_second, 4)},
+        wander.push_back({{"agents", r.agents},
+                          {"world", {r.width, r.height}},
+                          {"seconds", r.seconds},
+                          {"seed", r.seed},
+                          {"escapes", r.escapes},
+                          {"cd_us_per_agent_second", util::rounded(r.cd_us_per_agent_second, 4)},
                           {"metrics", J::parse(crowd::metrics_json(r.metrics))}});
     J scenarios = J::array();
     for (const ScenarioRow& r : t.scenarios)
-        scenarios.push_back({{"scenario", r.name}, {"file", r.file}, {"agents", r.agents}, {"time_limit", r.time_limit},
-                             {"seed", r.seed}, {"metrics", J::parse(crowd::metrics_json(r.metrics))}});
+        scenarios.push_back({{"scenario", r.name},
+                             {"file", r.file},
+                             {"agents", r.agents},
+                             {"time_limit", r.time_limit},
+                             {"seed", r.seed},
+                             {"metrics", J::parse(crowd::metrics_json(r.metrics))}});
     J targets = J::array();
     for (const Target& g : t.targets)
-        targets.push_back({{"target", g.what}, {"goal", g.goal}, {"measured", g.known ? J(util::rounded(g.measured, 4)) : J()},
-                           {"met", g.met()}, {"text", target_text(g)}, {"detail", g.detail}});
+        targets.push_back({{"target", g.what},
+                           {"goal", g.goal},
+                           {"measured", g.known ? J(util::rounded(g.measured, 4)) : J()},
+                           {"met", g.met()},
+                           {"text", target_text(g)},
+                           {"detail", g.detail}});
     j["targets"] = targets;
     j["notes"] = t.notes;
     j["wander"] = wander;
@@ -213,7 +235,8 @@ void write_crowd_quality_png(const CrowdQualityTable& t, const std::string& file
                         100 * r.metrics.idle_share});
     for (const ScenarioRow& r : t.scenarios)
         bars.push_back({r.name + " seed " + std::to_string(r.seed) + " last goal s", r.metrics.max_time_to_goal});
-    write_bar_chart(file, "Crowd quality: idle % of agent time (wander), seconds to the last goal (scenarios)", bars, "");
+    write_bar_chart(file, "Crowd quality: idle % of agent time (wander), seconds to the last goal (scenarios)", bars,
+                    "");
 }
 
 }  // namespace mobb::bench

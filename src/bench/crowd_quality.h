@@ -15,7 +15,7 @@ namespace mobb::bench {
 
 struct CrowdQualityOptions {
     std::string graph;
-    std::vector<std::string> scenarios;      ///< scenario files
+    std::vector<std::string> scenarios;  ///< scenario files
     std::vector<std::uint64_t> seeds = {1, 2, 3};
     /// Wander sizes: agents, world W x H (metres), simulated seconds.
     struct Wander {
@@ -23,7 +23,7 @@ struct CrowdQualityOptions {
         double width = 30, height = 40, seconds = 120;
     };
     std::vector<Wander> wander = {{100, 30, 40, 120}, {1000, 94.9, 126.5, 120}, {10000, 300, 400, 60}};
-    int threads = 1;                         ///< per run (CD cost is measured on one thread)
+    int threads = 1;  ///< per run (CD cost is measured on one thread)
     /// CD microseconds per agent per simulated second of the crowd before the escapes, MOBB tree, at
     /// 10,000 agents on this machine (bench/results/README.md); the cost target is at most twice it.
     double baseline_us = 3.77;

@@ -84,9 +84,8 @@ struct Times {
 };
 
 // One run; returns its summary and record digest, and adds its times.
-CrowdSummary timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents,
-                       int threads, Times& times, int slot, std::string& digest,
-                       const std::function<void(double)>& progress) {
+CrowdSummary timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
+                       Times& times, int slot, std::string& digest, const std::function<void(double)>& progress) {
     const CrowdRun run = run_one(g, narrow, o, agents, threads, progress);
     times.sim[slot].push_back(run.summary.seconds);
     times.cd[slot].push_back(run.summary.cd_seconds);

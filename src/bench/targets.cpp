@@ -27,7 +27,9 @@ std::string target_text(const Target& t) {
     if (!t.known) return "not measured";
     const std::string rel = t.at_most ? "<= " : ">= ";
     const auto number = [](double x) { return fixed(x, x == std::floor(x) ? 0 : 2); };  // counts stay whole
-    if (!t.ratio) return "measured " + number(t.measured) + ", goal " + rel + number(t.goal) + ": " + (t.met() ? "met" : "MISSED");
+    if (!t.ratio)
+        return "measured " + number(t.measured) + ", goal " + rel + number(t.goal) + ": " +
+               (t.met() ? "met" : "MISSED");
     std::string s = "measured " + fixed(t.measured, 2) + "x, goal " + rel + fixed(t.goal, 1) + "x: ";
     if (t.met()) return s + "met";
     const double gap = t.at_most ? t.measured / t.goal : t.goal / std::max(t.measured, 1e-12);

@@ -93,8 +93,7 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
             const std::int64_t iy0 = std::max<std::int64_t>(0, index_y(it.box.y0)),
                                iy1 = std::min(ny_ - 1, index_y(it.box.y1));
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-                for (std::int64_t iy = iy0; iy <= iy1; ++iy)
-                    put(flat_[std::size_t(ix * ny_ + iy)], e);
+                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], e);
         }
     });
 }

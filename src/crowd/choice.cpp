@@ -175,15 +175,17 @@ void Choice::order(const CrowdState& s) {
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
     if (reach > 0) {
-        const SpaceTimeBox around{base_.x - reach, base_.y - reach, base_.x + reach, base_.y + reach, frame_,
-                                  frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
+        const SpaceTimeBox around{base_.x - reach, base_.y - reach,
+                                  base_.x + reach, base_.y + reach,
+                                  frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
         queried_boxes_.push_back(around);
         s.broad.query(around, agent_, near_);
         for (int id : near_) {
             const Piece& p = s.pieces[std::size_t(id)];
             if (p.kind == Piece::Held) site.neighbours.push_back({p.hold.x, p.hold.y});
             if (p.kind == Piece::Clip)
-                site.neighbours.push_back({0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
+                site.neighbours.push_back(
+                    {0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
         }
     }
     next_ = drawn_;
@@ -459,7 +461,8 @@ void Choice::evaluate(const CrowdState& s) {
             refused_route = &route;
             if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
             // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
-            const bool stops = arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan_.escape.empty();
+            const bool stops =
+                arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan_.escape.empty();
             take(k, stops ? Outcome::Arrived : Outcome::Candidate);
             return;
         }

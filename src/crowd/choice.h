@@ -76,23 +76,23 @@ struct Plan {
 /// (Walls and obstacles are few and never change: choice points test them directly.)
 struct Piece {
     enum Kind : std::uint8_t { Clip, Held } kind = Clip;
-    int agent = -1;       ///< owner
-    int commit = 0;       ///< the choice point (record order) whose plan holds it
-    int index = 0;        ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
-    PlannedClip clip;     ///< Clip
-    Hold hold;            ///< Held
+    int agent = -1;    ///< owner
+    int commit = 0;    ///< the choice point (record order) whose plan holds it
+    int index = 0;     ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
+    PlannedClip clip;  ///< Clip
+    Hold hold;         ///< Held
 };
 
 /// One agent of the simulation.
 struct Agent {
     Placement start;
-    std::int64_t start_frame = 0;             ///< stands at its start until then
+    std::int64_t start_frame = 0;  ///< stands at its start until then
     std::optional<std::array<double, 2>> goal;
-    std::vector<PlacedClip> clips;            ///< committed, in time order
-    Plan plan;                                ///< reserved beyond its last clip
-    std::vector<int> reserved;                ///< broad-phase ids of the plan's pieces
-    bool arrived = false;                     ///< reached its goal: stays for good
-    int waited = 0;                           ///< choice points in a row it followed its escape
+    std::vector<PlacedClip> clips;  ///< committed, in time order
+    Plan plan;                      ///< reserved beyond its last clip
+    std::vector<int> reserved;      ///< broad-phase ids of the plan's pieces
+    bool arrived = false;           ///< reached its goal: stays for good
+    int waited = 0;                 ///< choice points in a row it followed its escape
 };
 
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
@@ -103,11 +103,11 @@ struct CrowdState {
     const EscapeTable& escapes;
     const Policy& policy;
     const CrowdOptions& options;
-    const std::vector<Polygon>& solids;       ///< World::solids(), by solid index
+    const std::vector<Polygon>& solids;                      ///< World::solids(), by solid index
     const std::vector<std::array<double, 4>>& solid_bounds;  ///< bounds() of each
-    const BroadPhase& broad;                  ///< pieces live now
+    const BroadPhase& broad;                                 ///< pieces live now
     const std::vector<Agent>& agents;
-    const std::vector<Piece>& pieces;         ///< by broad-phase id
+    const std::vector<Piece>& pieces;  ///< by broad-phase id
 };
 
 /// How a choice point ended.
@@ -165,16 +165,16 @@ private:
 
     int agent_ = 0;
     std::int64_t frame_ = 0;
-    std::vector<int> drawn_;                  // candidate clips in the stream's random order
-    std::vector<int> order_;                  // the same in the policy's order, for the current evaluation
-    std::vector<int> next_;                   // scratch: the order being made
-    Placement base_;                          // where and when the next clip starts
-    Rigid2 base_m_;                           // Rigid2::of(base_): every candidate starts there
-    std::vector<Placed> placed_;              // order_[0 .. placed_.size()) placed
-    int random_pick_ = 0;                     // random mode: index of the clip taken
-    bool arriving_ = false;                   // at its goal: stops as soon as it can
-    std::vector<int> near_;                   // scratch: broad-phase ids of one query
-    std::vector<SpaceTimeBox> queried_boxes_; // every box the evaluation asked the broad phase about
+    std::vector<int> drawn_;                   // candidate clips in the stream's random order
+    std::vector<int> order_;                   // the same in the policy's order, for the current evaluation
+    std::vector<int> next_;                    // scratch: the order being made
+    Placement base_;                           // where and when the next clip starts
+    Rigid2 base_m_;                            // Rigid2::of(base_): every candidate starts there
+    std::vector<Placed> placed_;               // order_[0 .. placed_.size()) placed
+    int random_pick_ = 0;                      // random mode: index of the clip taken
+    bool arriving_ = false;                    // at its goal: stops as soon as it can
+    std::vector<int> near_;                    // scratch: broad-phase ids of one query
+    std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     std::uint64_t near_total_ = 0, root_rejected_ = 0;
     Outcome outcome_ = Outcome::Candidate;
     PlannedClip taken_;

@@ -98,16 +98,16 @@ private:
     const std::vector<std::array<double, 4>> solid_bounds_;
     const std::unique_ptr<Policy> policy_;
     util::WorkerPool pool_;
-    BroadPhase broad_;                             // pieces live now
-    std::vector<BroadPhase::Insertion> pending_;   // committed in this frame, not yet in broad_
-    std::vector<int> released_;                    // released in this frame, still in broad_
-    BatchGrid chosen_;                             // boxes of the current batch's plans, by position
-    std::vector<char> stale_;                      // per position: a plan chosen before may change it
-    std::vector<SpaceTimeBox> moved_;              // boxes of plans chosen again on re-evaluation
+    BroadPhase broad_;                            // pieces live now
+    std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
+    std::vector<int> released_;                   // released in this frame, still in broad_
+    BatchGrid chosen_;                            // boxes of the current batch's plans, by position
+    std::vector<char> stale_;                     // per position: a plan chosen before may change it
+    std::vector<SpaceTimeBox> moved_;             // boxes of plans chosen again on re-evaluation
     std::vector<Agent> agents_;
-    std::vector<Piece> pieces_;                    // by broad-phase id
-    std::vector<std::vector<int>> due_;            // per frame: agents at a choice point
-    std::vector<Choice> slots_;                    // one per choice point of a batch, reused
+    std::vector<Piece> pieces_;          // by broad-phase id
+    std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
+    std::vector<Choice> slots_;          // one per choice point of a batch, reused
     CrowdRun out_;
 };
 
@@ -123,7 +123,8 @@ double Simulation::max_radius() const {
 // cells at least `gap` wide, so a test reads the 3 x 3 cells around the position.
 void Simulation::place_at_random(double gap, double margin) {
     const World& w = o_.world;
-    if (w.width() <= 2 * margin || w.height() <= 2 * margin) throw std::invalid_argument("crowd: world smaller than an agent");
+    if (w.width() <= 2 * margin || w.height() <= 2 * margin)
+        throw std::invalid_argument("crowd: world smaller than an agent");
     const double cell = std::max(gap, std::sqrt(w.width() * w.height() / double(o_.agents)));
     const int nx = int(w.width() / cell) + 1, ny = int(w.height() / cell) + 1;
     std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));
@@ -145,14 +146,15 @@ void Simulation::place_at_random(double gap, double margin) {
         Placement p;
         bool ok = false;
         for (int attempt = 0; attempt < 100000 && !ok; ++attempt) {
-            p = {rng.uniform(w.x0 + margin, w.x1 - margin), rng.uniform(w.y0 + margin, w.y1 - margin), rng.uniform(-kPi, kPi),
-                 0.0};
+            p = {rng.uniform(w.x0 + margin, w.x1 - margin), rng.uniform(w.y0 + margin, w.y1 - margin),
+                 rng.uniform(-kPi, kPi), 0.0};
             ok = free_at(p);
         }
         if (!ok)
-            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " + std::to_string(gap) +
-                                        " m apart in the world");
-        grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(a);
+            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
+                                        std::to_string(gap) + " m apart in the world");
+        grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(
+            a);
         agents_.push_back({p, 0, std::nullopt, {}, {}, {}, false});
     }
 }
@@ -173,8 +175,9 @@ void Simulation::place_agents() {
 }
 
 SpaceTimeBox Simulation::box_of(const Piece& p) const {
-    if (p.kind == Piece::Held) return {p.hold.x - p.hold.r, p.hold.y - p.hold.r, p.hold.x + p.hold.r, p.hold.y + p.hold.r,
-                                       p.hold.frame, kForever};
+    if (p.kind == Piece::Held)
+        return {p.hold.x - p.hold.r, p.hold.y - p.hold.r, p.hold.x + p.hold.r,
+                p.hold.y + p.hold.r, p.hold.frame,        kForever};
     return p.clip.box;
 }
 
@@ -182,8 +185,10 @@ int Simulation::add_piece(const Piece& piece, bool pending) {
     const int id = int(pieces_.size());
     pieces_.push_back(piece);
     const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
-    if (pending) pending_.push_back(item);
-    else broad_.insert(item.id, item.owner, item.box);
+    if (pending)
+        pending_.push_back(item);
+    else
+        broad_.insert(item.id, item.owner, item.box);
     return id;
 }
 
@@ -219,7 +224,8 @@ void Simulation::gather(std::size_t n) {
     chosen_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         for (const SpaceTimeBox& b : slots_[i].boxes()) chosen_.add(int(i), b);
-        for (int id : agents_[std::size_t(slots_[i].agent())].reserved) chosen_.add(int(i), box_of(pieces_[std::size_t(id)]));
+        for (int id : agents_[std::size_t(slots_[i].agent())].reserved)
+            chosen_.add(int(i), box_of(pieces_[std::size_t(id)]));
     }
 }
 
@@ -238,7 +244,8 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     });
     gather(n);
     stale_.assign(n, 0);
-    pool_.for_each(n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
+    pool_.for_each(
+        n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
     moved_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         Choice& c = slots_[i];
@@ -360,8 +367,8 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     // About agents x frames / mean clip length choice points: reserving saves moving them while committing.
     std::size_t samples = 0;
     for (const GraphClip& c : g_.clips) samples += c.path.size();
-    const double expected =
-        double(agents_.size()) * (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
+    const double expected = double(agents_.size()) *
+                            (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
     out_.record.choices.reserve(std::size_t(expected * 1.2));
     pieces_.reserve(std::size_t(expected * (reserves(o_) ? 3.6 : 1.2)));
     std::int64_t reported = -1;

@@ -43,8 +43,10 @@ void routes_from(const MotionGraph& g, const std::vector<ClipKind>& kind, const 
         const bool idle = kind[std::size_t(s)] == ClipKind::Idle;
         if (length == 1 ? !idle : idle || steps[std::size_t(s)] < 0 || steps[std::size_t(s)] > length - 1) continue;
         chain.push_back(s);
-        if (length == 1) out.push_back(chain);
-        else routes_from(g, kind, steps, s, length - 1, max_routes, chain, out);
+        if (length == 1)
+            out.push_back(chain);
+        else
+            routes_from(g, kind, steps, s, length - 1, max_routes, chain, out);
         chain.pop_back();
     }
 }
@@ -61,9 +63,11 @@ EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_rout
         if (t.kind.back() == ClipKind::Idle) t.hold_radius = std::max(t.hold_radius, t.hold_of(c));
     }
     for (int c = 0; c < int(g.clips.size()); ++c)
-        if (t.in_place[std::size_t(c)]) t.wall_clearance = std::max(t.wall_clearance, t.footprint[std::size_t(c)] + 0.1);
+        if (t.in_place[std::size_t(c)])
+            t.wall_clearance = std::max(t.wall_clearance, t.footprint[std::size_t(c)] + 0.1);
     if (t.hold_radius == 0)
-        throw std::invalid_argument("crowd: the motion graph has no idle clip (standing, looping in place) to stop with");
+        throw std::invalid_argument(
+            "crowd: the motion graph has no idle clip (standing, looping in place) to stop with");
     const std::vector<int> steps = steps_to_idle(g, t.kind);
     t.routes.resize(g.clips.size());
     for (int c = 0; c < int(g.clips.size()); ++c) {

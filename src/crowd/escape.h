@@ -12,14 +12,14 @@
 namespace mobb::crowd {
 
 struct EscapeTable {
-    std::vector<ClipKind> kind;                          ///< per clip
-    std::vector<char> in_place;                          ///< per clip: InPlace or Idle
-    std::vector<double> footprint;                       ///< per clip: max over samples of |p_i - p_0| + r_i
+    std::vector<ClipKind> kind;     ///< per clip
+    std::vector<char> in_place;     ///< per clip: InPlace or Idle
+    std::vector<double> footprint;  ///< per clip: max over samples of |p_i - p_0| + r_i
     /// Per clip: successor chains c1..ck, ck idle (k = 1 when a successor already is), the shortest first,
     /// then one clip longer, at most max_routes of them; none when an idle clip is more than max_steps
     /// clips away.
     std::vector<std::vector<std::vector<int>>> routes;
-    double hold_radius = 0;                              ///< hold_of() the largest idle clip: any idle clip fits
+    double hold_radius = 0;  ///< hold_of() the largest idle clip: any idle clip fits
     /// How far held ground stays from walls and obstacles: room for any clip in place (turning on the
     /// spot) and a margin, so an agent that stops can always turn and walk away.
     double wall_clearance = 0;

@@ -34,7 +34,8 @@ std::int64_t idle_frames(const Samples& s, std::int64_t until, double dt, std::u
     std::int64_t run = 0, longest = 0;
     for (std::int64_t f = 0; f < until; ++f) {
         const std::int64_t a = std::max<std::int64_t>(0, f - half), b = std::min(n - 1, f + half);
-        const double d = std::hypot(s[std::size_t(b)][1] - s[std::size_t(a)][1], s[std::size_t(b)][2] - s[std::size_t(a)][2]);
+        const double d =
+            std::hypot(s[std::size_t(b)][1] - s[std::size_t(a)][1], s[std::size_t(b)][2] - s[std::size_t(a)][2]);
         if (b > a && d / (double(b - a) * dt) < CrowdMetrics::kIdleSpeed) {
             ++idle;
             longest = std::max(longest, ++run);
@@ -70,7 +71,8 @@ std::pair<double, double> effort(const Samples& s, double dt, double end) {
 
 // Collision episodes per agent (a contact with the same other agent or solid over consecutive frames
 // counts once, for each of the two agents), deeper than SteerSuite's 1 mm.
-std::vector<int> episodes(const Record& r, const std::vector<Contact>& contacts, const std::vector<std::vector<std::int64_t>>& solid_frames) {
+std::vector<int> episodes(const Record& r, const std::vector<Contact>& contacts,
+                          const std::vector<std::vector<std::int64_t>>& solid_frames) {
     std::vector<int> out(r.tracks.size(), 0);
     std::map<std::pair<int, int>, std::int64_t> last;  // pair -> last frame in contact
     for (const Contact& c : contacts) {
@@ -129,7 +131,8 @@ double graph_mean_speed(const MotionGraph& graph) {
     for (const GraphClip& c : graph.clips) {
         double length = 0;
         for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
-            length += std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x, c.path.samples[i + 1].y - c.path.samples[i].y);
+            length += std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x,
+                                 c.path.samples[i + 1].y - c.path.samples[i].y);
         sum += length / c.path.duration();
     }
     return graph.clips.empty() ? 0.0 : sum / double(graph.clips.size());
@@ -217,12 +220,13 @@ std::string metrics_json(const CrowdMetrics& m) {
 std::string metrics_text(const CrowdMetrics& m) {
     std::ostringstream out;
     out << "fallback share           " << 100.0 * m.fallback_share << " % of choice points\n"
-        << "contacts                 " << m.contacts << " agent-pair frames (deepest " << m.max_penetration
-        << " m), " << m.obstacle_contacts << " agent frames on walls or obstacles, " << m.samples_outside
+        << "contacts                 " << m.contacts << " agent-pair frames (deepest " << m.max_penetration << " m), "
+        << m.obstacle_contacts << " agent frames on walls or obstacles, " << m.samples_outside
         << " samples outside the world\n"
-        << "speed                    " << m.mean_speed << " m/s, " << m.speed_ratio << " of the graph's mean clip speed ("
-        << m.graph_speed << " m/s)\n"
-        << "idle                     " << 100.0 * m.idle_share << " % of agent time, longest " << m.longest_idle << " s\n";
+        << "speed                    " << m.mean_speed << " m/s, " << m.speed_ratio
+        << " of the graph's mean clip speed (" << m.graph_speed << " m/s)\n"
+        << "idle                     " << 100.0 * m.idle_share << " % of agent time, longest " << m.longest_idle
+        << " s\n";
     if (m.goal_agents > 0)
         out << "goals                    " << m.reached << " of " << m.goal_agents << " reached, mean "
             << m.mean_time_to_goal << " s, last " << m.max_time_to_goal << " s, path " << m.path_ratio

@@ -21,8 +21,8 @@ bool NarrowPhase::operator()(int a, const Placement& pa, int b, const Placement&
     return collide_sweep(index_[std::size_t(a)], pa, index_[std::size_t(b)], pb);
 }
 
-bool NarrowPhase::operator()(int a, const Placement& pa, const Rigid2& ma, int b, const Placement& pb,
-                             const Rigid2& mb, QueryStats* stats) const {
+bool NarrowPhase::operator()(int a, const Placement& pa, const Rigid2& ma, int b, const Placement& pb, const Rigid2& mb,
+                             QueryStats* stats) const {
     if (!trees_.empty()) return collide(trees_[std::size_t(a)], pa, trees_[std::size_t(b)], pb, stats);
     return collide_sweep(index_[std::size_t(a)], pa, ma, index_[std::size_t(b)], pb, mb);
 }

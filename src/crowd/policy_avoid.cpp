@@ -3,8 +3,8 @@
 // keep walking while they can), and walking clips heading for a wall after those heading into the open
 // (a bias toward the interior that turns agents early, a few degrees per clip).
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 #include "mobb/crowd/policy.h"

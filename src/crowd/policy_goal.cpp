@@ -18,8 +18,7 @@ namespace {
 
 class GoalPolicy : public Policy {
 public:
-    explicit GoalPolicy(const PolicyContext& c)
-        : graph_(c.graph), radius_(c.goal_radius), grid_(c.world, c.clearance) {
+    explicit GoalPolicy(const PolicyContext& c) : graph_(c.graph), radius_(c.goal_radius), grid_(c.world, c.clearance) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
         for (const auto& g : c.goals) fields_.emplace(g, NavField(grid_, g));
     }
@@ -69,7 +68,8 @@ private:
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
         if (site.waited >= kPatience) return idle;
         const Placement end = graph_.next(site.base, m, c);
-        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site.neighbours);
+        return idle + graph_.clips[std::size_t(c)].path.duration() +
+               seconds(fields_.at(*site.goal), end, site.neighbours);
     }
 
     // At the goal: standing idle first, then turning in place, then the clips that end nearest to it.

@@ -191,13 +191,11 @@ J choice_json(const ChoicePoint& c, double dt) {
         cands.push_back(
             {{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits}, {"against", against}});
     }
-    return {{"agent", c.agent},     {"frame", c.frame},
-            {"t", util::rounded(double(c.frame) * dt, 9)},
-            {"taken", c.taken},     {"outcome", c.outcome},
-            {"fallback", c.fallback}, {"queries", c.queries},
-            {"tests2d", c.tests2d}, {"tests3d", c.tests3d},
-            {"samples", c.samples}, {"pruned", c.pruned},
-            {"plan", plan_json(c)}, {"candidates", cands}};
+    return {{"agent", c.agent},     {"frame", c.frame},     {"t", util::rounded(double(c.frame) * dt, 9)},
+            {"taken", c.taken},     {"outcome", c.outcome}, {"fallback", c.fallback},
+            {"queries", c.queries}, {"tests2d", c.tests2d}, {"tests3d", c.tests3d},
+            {"samples", c.samples}, {"pruned", c.pruned},   {"plan", plan_json(c)},
+            {"candidates", cands}};
 }
 
 World world_of(const nlohmann::json& j) {
@@ -220,7 +218,8 @@ World world_of(const nlohmann::json& j) {
 
 AgentTrack track_of(const nlohmann::json& t, std::int64_t frames) {
     AgentTrack track;
-    if (t.contains("goal")) track.goal = std::array<double, 2>{t.at("goal").at(0).get<double>(), t.at("goal").at(1).get<double>()};
+    if (t.contains("goal"))
+        track.goal = std::array<double, 2>{t.at("goal").at(0).get<double>(), t.at("goal").at(1).get<double>()};
     for (const auto& c : t.at("clips")) {
         const auto& p = c.at("place");
         track.clips.push_back(
@@ -231,7 +230,8 @@ AgentTrack track_of(const nlohmann::json& t, std::int64_t frames) {
              c.at("commit").get<std::int64_t>()});
     }
     for (const auto& s : t.at("samples"))
-        track.samples.push_back({s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
+        track.samples.push_back(
+            {s.at(0).get<double>(), s.at(1).get<double>(), s.at(2).get<double>(), s.at(3).get<double>()});
     if (std::int64_t(track.samples.size()) != frames)
         throw std::runtime_error("a track has " + std::to_string(track.samples.size()) + " samples, expected " +
                                  std::to_string(frames));
@@ -242,7 +242,8 @@ void plan_of(const nlohmann::json& c, ChoicePoint& cp) {
     if (!c.contains("plan")) return;
     const auto& plan = c.at("plan");
     for (const auto& e : plan.at("escape"))
-        cp.escape.push_back({e.at(0).get<int>(), e.at(1).get<std::int64_t>(),
+        cp.escape.push_back({e.at(0).get<int>(),
+                             e.at(1).get<std::int64_t>(),
                              {e.at(2).get<double>(), e.at(3).get<double>(), e.at(4).get<double>(), 0.0}});
     if (plan.contains("hold")) {
         const auto& h = plan.at("hold");
@@ -267,8 +268,11 @@ ChoicePoint choice_of(const nlohmann::json& c, const Record& r) {
     plan_of(c, cp);
     for (auto& e : cp.escape) e.place.t0 = double(e.frame) * r.dt;
     for (const auto& k : c.at("candidates")) {
-        Candidate cand{k.at("clip").get<int>(), k.at("outside").get<bool>(), k.at("queries").get<int>(),
-                       k.at("hits").get<int>(), {}};
+        Candidate cand{k.at("clip").get<int>(),
+                       k.at("outside").get<bool>(),
+                       k.at("queries").get<int>(),
+                       k.at("hits").get<int>(),
+                       {}};
         for (const auto& q : k.at("against")) {
             const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>(), q.at(3).get<int>(),
                                     q.at(4).get<int>() != 0};

@@ -43,7 +43,8 @@ Polygon obstacle(const json& j, const std::string& where) {
     only_keys(j, where, {"rectangle", "polygon"});
     if (j.contains("rectangle")) {
         const auto r = numbers(j["rectangle"], 4, where + ".rectangle");
-        if (!(r[0] < r[2] && r[1] < r[3])) fail(where + ".rectangle", "expected [x0, y0, x1, y1] with x0 < x1, y0 < y1");
+        if (!(r[0] < r[2] && r[1] < r[3]))
+            fail(where + ".rectangle", "expected [x0, y0, x1, y1] with x0 < x1, y0 < y1");
         return Polygon::rectangle(r[0], r[1], r[2], r[3]);
     }
     if (!j.contains("polygon") || !j["polygon"].is_array() || j["polygon"].size() < 2)

@@ -30,7 +30,6 @@ bool inside(const Polygon& poly, double x, double y) {
     return in;
 }
 
-
 // An axis-aligned rectangle (walls, most obstacles): the distance by clamping.
 bool rectangle(const Polygon& poly, std::array<double, 4>& box) {
     const auto& v = poly.vertices;
@@ -38,7 +37,8 @@ bool rectangle(const Polygon& poly, std::array<double, 4>& box) {
     const bool a = v[0][1] == v[1][1] && v[1][0] == v[2][0] && v[2][1] == v[3][1] && v[3][0] == v[0][0];
     const bool b = v[0][0] == v[1][0] && v[1][1] == v[2][1] && v[2][0] == v[3][0] && v[3][1] == v[0][1];
     if (!a && !b) return false;
-    box = {std::min(v[0][0], v[2][0]), std::min(v[0][1], v[2][1]), std::max(v[0][0], v[2][0]), std::max(v[0][1], v[2][1])};
+    box = {std::min(v[0][0], v[2][0]), std::min(v[0][1], v[2][1]), std::max(v[0][0], v[2][0]),
+           std::max(v[0][1], v[2][1])};
     return true;
 }
 

@@ -57,7 +57,7 @@ struct PosedSkeleton {
 /// with `fill` > 0 its side faces too, that opaque.
 struct Prism {
     std::vector<std::array<double, 2>> ground;  ///< metres, in order; two points make a segment
-    double t0 = 0, t1 = 0;                       ///< seconds
+    double t0 = 0, t1 = 0;                      ///< seconds
     glm::vec3 color{0.3f};
     float fill = 0.0f;
     bool on_top = false;  ///< drawn over everything, thick (marks that must not hide in the stacks)

@@ -19,8 +19,9 @@ void add_edges(const Prism& p, double ts, const glm::vec4& color, Batch& out) {
         out.line(to_gl(a[0], a[1], p.t1, ts), to_gl(b[0], b[1], p.t1, ts), color);
         out.line(to_gl(a[0], a[1], p.t0, ts), to_gl(a[0], a[1], p.t1, ts), color);
     }
-    if (n == 2 && !flat) out.line(to_gl(p.ground[1][0], p.ground[1][1], p.t0, ts),
-                                  to_gl(p.ground[1][0], p.ground[1][1], p.t1, ts), color);
+    if (n == 2 && !flat)
+        out.line(to_gl(p.ground[1][0], p.ground[1][1], p.t0, ts), to_gl(p.ground[1][0], p.ground[1][1], p.t1, ts),
+                 color);
 }
 
 void add_faces(const Prism& p, double ts, Batch& out) {

@@ -52,8 +52,8 @@ CrowdRun run(const CrowdOptions& o, const NarrowPhase& narrow = fixture().sweep)
 
 // Every counter of a summary but the times.
 std::vector<std::uint64_t> counters(const CrowdSummary& s) {
-    return {s.choice_points, s.candidates,         s.queries,    s.hits,   s.tests2d,   s.tests3d,
-            s.samples,       s.root_rejected,      s.time_pairs, s.pruned, s.fallbacks, s.outside,
+    return {s.choice_points, s.candidates,         s.queries,     s.hits,   s.tests2d,   s.tests3d,
+            s.samples,       s.root_rejected,      s.time_pairs,  s.pruned, s.fallbacks, s.outside,
             s.contacts,      s.contacts_unexcused, s.reevaluated, s.escapes};
 }
 
@@ -169,7 +169,8 @@ TEST(Crowd, EveryNarrowPhaseGivesTheSameCrowd) {
     auto decisions = [](const Record& r) {
         std::string s;
         for (const ChoicePoint& c : r.choices) {
-            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + c.outcome + ":" + std::to_string(c.queries) + " ";
+            s += std::to_string(c.agent) + ":" + std::to_string(c.taken) + c.outcome + ":" + std::to_string(c.queries) +
+                 " ";
             for (const Candidate& k : c.candidates) s += std::to_string(k.hits) + ",";
         }
         return s;
@@ -200,7 +201,8 @@ TEST(Crowd, RecordedQueriesReplayByBruteForce) {
     for (std::size_t n = 0; n < r.choices.size(); ++n) {
         const ChoicePoint& cp = r.choices[n];
         const auto& own = r.tracks[std::size_t(cp.agent)].clips;
-        const auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
+        const auto at =
+            std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
         ASSERT_NE(at, own.end());
         ASSERT_EQ(at->start, cp.frame);
         for (const Candidate& k : cp.candidates) {

@@ -84,8 +84,9 @@ TEST(Metrics, FallbacksExcuseTheirContactsAndWallsCount) {
 
 TEST(Metrics, JsonHasEveryFigure) {
     const std::string j = metrics_json(crowd_metrics(passing(false), load_graph(kGraph)));
-    for (const char* key : {"fallback_share", "contacts", "max_penetration", "speed_ratio", "idle_share", "longest_idle",
-                            "reached", "mean_time_to_goal", "path_ratio", "composite01", "composite02", "passed"})
+    for (const char* key :
+         {"fallback_share", "contacts", "max_penetration", "speed_ratio", "idle_share", "longest_idle", "reached",
+          "mean_time_to_goal", "path_ratio", "composite01", "composite02", "passed"})
         EXPECT_NE(j.find(std::string("\"") + key + "\""), std::string::npos) << key;
 }
 

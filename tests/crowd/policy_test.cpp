@@ -81,7 +81,8 @@ TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
         const bool into_wall = std::cos(e.theta) > 0.99;
         if (into_wall) {
             // Walks into the wall come after those that do not.
-            for (std::size_t j = k + 1; j < d.size() && rank(d[j]) == 0; ++j) EXPECT_GT(std::cos(end_of(wall, d[j]).theta), 0.0);
+            for (std::size_t j = k + 1; j < d.size() && rank(d[j]) == 0; ++j)
+                EXPECT_GT(std::cos(end_of(wall, d[j]).theta), 0.0);
             break;
         }
     }
@@ -139,7 +140,8 @@ TEST(Policy, GoalFindsTheWayAroundAnObstacle) {
 }
 
 TEST(Policy, ParsesTheirNames) {
-    for (Selection s : {Selection::Avoid, Selection::Random, Selection::Goal}) EXPECT_EQ(parse_selection(to_string(s)), s);
+    for (Selection s : {Selection::Avoid, Selection::Random, Selection::Goal})
+        EXPECT_EQ(parse_selection(to_string(s)), s);
     EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
 }
 

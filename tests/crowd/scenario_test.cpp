@@ -71,17 +71,19 @@ TEST(Scenario, BadFilesNameThePlace) {
     const std::string agent = R"({"start": [1, 1], "goal": [5, 5]})";
     const std::string ok = R"({"name": "x", "world": [0, 0, 10, 10], "time_limit": 10, "agents": [)" + agent + "]}";
     EXPECT_EQ(error_of(ok), "");
-    EXPECT_EQ(error_of(R"({"world": [0, 0, 10, 10], "time_limit": 10, "agents": [{"start": [1, 1], "goal": [50, 5]}]})"),
-              "s.json.agents[0].goal: outside the world");
+    EXPECT_EQ(
+        error_of(R"({"world": [0, 0, 10, 10], "time_limit": 10, "agents": [{"start": [1, 1], "goal": [50, 5]}]})"),
+        "s.json.agents[0].goal: outside the world");
     EXPECT_EQ(error_of(R"({"world": [0, 0, 10, 10], "time_limit": 10, "agents": [], "colour": 1})"),
               "s.json.colour: unknown key");
     EXPECT_EQ(error_of(R"({"world": [0, 0, 10], "time_limit": 10, "agents": [)" + agent + "]}"),
               "s.json.world: expected 4 numbers");
     EXPECT_EQ(error_of(R"({"world": [0, 0, 10, 10], "time_limit": -1, "agents": [)" + agent + "]}"),
               "s.json.time_limit: must be positive");
-    EXPECT_EQ(error_of(R"({"world": [0, 0, 10, 10], "time_limit": 5, "obstacles": [{"polygon": [[1, 1]]}], "agents": [)" +
-                       agent + "]}"),
-              "s.json.obstacles[0]: expected \"rectangle\" or \"polygon\" (two or more [x, y])");
+    EXPECT_EQ(
+        error_of(R"({"world": [0, 0, 10, 10], "time_limit": 5, "obstacles": [{"polygon": [[1, 1]]}], "agents": [)" +
+                 agent + "]}"),
+        "s.json.obstacles[0]: expected \"rectangle\" or \"polygon\" (two or more [x, y])");
     const std::string file = test::temp_file("scenario_bad.json");
     std::ofstream(file) << "{ not json";
     try {

@@ -199,9 +199,8 @@ int small_rejection(const crowd::Record& r) {
     for (std::size_t n = 0; n < r.choices.size(); ++n) {
         const auto& c = r.choices[n];
         if (c.frame > 0 && !c.fallback && c.candidates.size() <= 6 &&
-            std::any_of(c.candidates.begin(), c.candidates.end(), [](const auto& k) {
-                return std::any_of(k.against.begin(), k.against.end(), clip_hit);
-            }))
+            std::any_of(c.candidates.begin(), c.candidates.end(),
+                        [](const auto& k) { return std::any_of(k.against.begin(), k.against.end(), clip_hit); }))
             return int(n);
     }
     return -1;

@@ -82,7 +82,9 @@ private:
         std::int64_t ix = 0, iy = 0;  // the cell of the box's lower corner (index_x(box.x0), index_y(box.y0))
     };
     using Cell = std::vector<Entry>;
-    Entry entry(const SpaceTimeBox& box, int id, int owner) const { return {box, id, owner, index_x(box.x0), index_y(box.y0)}; }
+    Entry entry(const SpaceTimeBox& box, int id, int owner) const {
+        return {box, id, owner, index_x(box.x0), index_y(box.y0)};
+    }
     std::int64_t index_x(double x) const;
     std::int64_t index_y(double y) const;
     template <class F>

@@ -20,30 +20,30 @@ namespace mobb::crowd {
 
 /// An agent placed by a scenario.
 struct AgentSpec {
-    Placement start;                             ///< x, y (metres), heading theta (radians); t0 unused
-    double start_time = 0;                       ///< seconds: it stands at its start until then
-    std::optional<std::array<double, 2>> goal;   ///< metres
+    Placement start;                            ///< x, y (metres), heading theta (radians); t0 unused
+    double start_time = 0;                      ///< seconds: it stands at its start until then
+    std::optional<std::array<double, 2>> goal;  ///< metres
 };
 
 struct CrowdOptions {
-    int agents = 100;                 ///< placed at random when `placed` is empty
-    World world;                      ///< default [0, 30] x [0, 40], walled
-    double seconds = 120;             ///< simulated; frames = round(seconds / dt)
+    int agents = 100;      ///< placed at random when `placed` is empty
+    World world;           ///< default [0, 30] x [0, 40], walled
+    double seconds = 120;  ///< simulated; frames = round(seconds / dt)
     std::uint64_t seed = 1;
     Selection select = Selection::Avoid;
-    double cell = 4.0;                ///< broad-phase grid cell, metres
-    bool log_queries = false;         ///< keep every narrow-phase query (for replays by the benchmarks)
+    double cell = 4.0;         ///< broad-phase grid cell, metres
+    bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;
-    std::vector<AgentSpec> placed;    ///< the agents of a scenario (then `agents` is ignored)
-    double goal_radius = 1.0;         ///< metres: a goal agent this close to its goal stops there
+    std::vector<AgentSpec> placed;  ///< the agents of a scenario (then `agents` is ignored)
+    double goal_radius = 1.0;       ///< metres: a goal agent this close to its goal stops there
 };
 
 /// One clip-against-clip narrow-phase query of a run: clip a at pa (the candidate's, or an escape clip of
 /// the route tried) against clip b at pb (another agent's, committed or reserved).
 struct LoggedQuery {
-    int choice = 0, candidate = 0;    ///< indices into Record::choices and its candidates
+    int choice = 0, candidate = 0;  ///< indices into Record::choices and its candidates
     int clip_a = 0, clip_b = 0;
     Placement pa, pb;
     bool hit = false;

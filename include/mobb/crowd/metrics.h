@@ -13,30 +13,30 @@ namespace mobb::crowd {
 struct CrowdMetrics {
     // Choices and collisions (contacts: agent pairs x frames, checked on the samples, frame_contacts()).
     std::uint64_t choice_points = 0, fallbacks = 0;
-    double fallback_share = 0;                     ///< fallbacks / choice points
+    double fallback_share = 0;  ///< fallbacks / choice points
     std::uint64_t contacts = 0, contacts_outside_fallbacks = 0;
-    double max_penetration = 0;                    ///< metres: the deepest contact, r_a + r_b - |p_a - p_b|
-    std::uint64_t samples_outside = 0;             ///< agent samples whose root is outside the world rectangle
-    std::uint64_t obstacle_contacts = 0;           ///< agent samples whose disk overlaps a wall or an obstacle
+    double max_penetration = 0;           ///< metres: the deepest contact, r_a + r_b - |p_a - p_b|
+    std::uint64_t samples_outside = 0;    ///< agent samples whose root is outside the world rectangle
+    std::uint64_t obstacle_contacts = 0;  ///< agent samples whose disk overlaps a wall or an obstacle
     // Motion: ground speed from the root's path; idle where it moves less than kIdleSpeed over kIdleWindow.
-    double mean_speed = 0;                         ///< m/s: path length / time, mean over agents
-    double graph_speed = 0;                        ///< m/s: the graph's clips' path length / duration, mean over clips
-    double speed_ratio = 0;                        ///< mean_speed / graph_speed
-    double idle_share = 0;                         ///< of agent time (an agent at its goal no longer counts)
-    double longest_idle = 0;                       ///< seconds: the longest idle stretch of any agent
+    double mean_speed = 0;    ///< m/s: path length / time, mean over agents
+    double graph_speed = 0;   ///< m/s: the graph's clips' path length / duration, mean over clips
+    double speed_ratio = 0;   ///< mean_speed / graph_speed
+    double idle_share = 0;    ///< of agent time (an agent at its goal no longer counts)
+    double longest_idle = 0;  ///< seconds: the longest idle stretch of any agent
     // Goals (agents with one).
-    int goal_agents = 0, reached = 0;              ///< reached: within the goal radius at some frame
+    int goal_agents = 0, reached = 0;                    ///< reached: within the goal radius at some frame
     double mean_time_to_goal = 0, max_time_to_goal = 0;  ///< seconds, over the agents that reached it
-    double path_ratio = 0;                         ///< path length to the goal / straight distance, mean over them
-    bool passed = false;                           ///< every goal agent reached its goal and no contact at any frame
+    double path_ratio = 0;  ///< path length to the goal / straight distance, mean over them
+    bool passed = false;    ///< every goal agent reached its goal and no contact at any frame
     // SteerSuite's benchmark scores (steerlib/src/CompositeTechnique01.cpp, CompositeTechnique02.cpp), lower
     // is better, on the tracks resampled to its 20 frames per second: Composite01 = 50 x mean unique
     // collisions (counted by both agents) + mean time enabled (to the goal, or the run) + mean sum over
     // frames of |v|^2 / 2; Composite02 adds the mean sum over frames of |dv| / dt.
     double composite01 = 0, composite02 = 0;
 
-    static constexpr double kIdleSpeed = 0.25;   ///< m/s
-    static constexpr double kIdleWindow = 1.0;   ///< seconds, centred on the frame
+    static constexpr double kIdleSpeed = 0.25;  ///< m/s
+    static constexpr double kIdleWindow = 1.0;  ///< seconds, centred on the frame
 };
 
 /// The metrics of a run of `graph` (goal radius: metres within which a goal counts as reached).

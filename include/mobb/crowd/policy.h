@@ -28,10 +28,10 @@ Selection parse_selection(const std::string& name);
 /// An agent at a choice point, as a policy sees it.
 struct ChoiceSite {
     int agent = 0;
-    Placement base;                              ///< where the next clip starts (t0: its start time)
-    std::optional<std::array<double, 2>> goal;   ///< metres
-    int waited = 0;                              ///< choice points in a row it could not move on (escapes)
-    bool arrived = false;                        ///< Policy::arrived(): order() puts the ways to stop first
+    Placement base;                             ///< where the next clip starts (t0: its start time)
+    std::optional<std::array<double, 2>> goal;  ///< metres
+    int waited = 0;                             ///< choice points in a row it could not move on (escapes)
+    bool arrived = false;                       ///< Policy::arrived(): order() puts the ways to stop first
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
     /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
     std::vector<std::array<double, 2>> neighbours;
@@ -60,9 +60,9 @@ struct PolicyContext {
     const MotionGraph& graph;
     const World& world;
     const std::vector<char>& in_place;
-    std::vector<std::array<double, 2>> goals;   ///< every goal of the run (Goal)
-    double goal_radius = 1.0;                   ///< metres: arrived within this of the goal
-    double clearance = 0.45;                    ///< metres kept from obstacles by the navigation field
+    std::vector<std::array<double, 2>> goals;  ///< every goal of the run (Goal)
+    double goal_radius = 1.0;                  ///< metres: arrived within this of the goal
+    double clearance = 0.45;                   ///< metres kept from obstacles by the navigation field
 };
 
 std::unique_ptr<Policy> make_policy(Selection kind, const PolicyContext& context);

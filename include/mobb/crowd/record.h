@@ -87,11 +87,11 @@ struct ChoicePoint {
     std::string outcome = "candidate";  ///< "candidate", "escape", "arrived" or "fallback"
     bool fallback = false;
     std::uint64_t queries = 0, tests2d = 0, tests3d = 0, samples = 0;
-    std::uint64_t pruned = 0;          ///< time-overlapping committed pieces the broad phase skipped
-    std::vector<FramedClip> escape;    ///< reserved after the clip taken: the clips that would stop the agent,
-    bool holds = false;                ///< then the held ground:
-    std::array<double, 3> hold{};      ///< x, y, r (metres)
-    std::int64_t hold_frame = 0;       ///< from this frame on
+    std::uint64_t pruned = 0;        ///< time-overlapping committed pieces the broad phase skipped
+    std::vector<FramedClip> escape;  ///< reserved after the clip taken: the clips that would stop the agent,
+    bool holds = false;              ///< then the held ground:
+    std::array<double, 3> hold{};    ///< x, y, r (metres)
+    std::int64_t hold_frame = 0;     ///< from this frame on
 };
 
 /// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].

@@ -35,8 +35,8 @@ bool path_hits(const Path& path, const Rigid2& m, const Polygon& polygon, std::s
 
 struct World {
     double x0 = 0, y0 = 0, x1 = 30, y1 = 40;  ///< the ground rectangle, metres
-    bool walls = true;                         ///< its edges are walls no disk may cross
-    std::vector<Polygon> obstacles;            ///< inside the rectangle
+    bool walls = true;                        ///< its edges are walls no disk may cross
+    std::vector<Polygon> obstacles;           ///< inside the rectangle
 
     double width() const { return x1 - x0; }
     double height() const { return y1 - y0; }
