@@ -73,7 +73,7 @@ struct Plan {
 };
 
 /// One thing in the broad phase, by id: a clip an agent committed to or reserved, or its held ground.
-/// (Walls and obstacles are few and never change: choice points test them directly.)
+/// (Walls and obstacles never change: they have a grid of their own, CrowdState::solid_grid.)
 struct Piece {
     enum Kind : std::uint8_t { Clip, Held } kind = Clip;
     int agent = -1;    ///< owner
@@ -103,9 +103,9 @@ struct CrowdState {
     const EscapeTable& escapes;
     const Policy& policy;
     const CrowdOptions& options;
-    const std::vector<Polygon>& solids;                      ///< World::solids(), by solid index
-    const std::vector<std::array<double, 4>>& solid_bounds;  ///< bounds() of each
-    const BroadPhase& broad;                                 ///< pieces live now
+    const std::vector<Polygon>& solids;  ///< World::solids(), by solid index
+    const BroadPhase& solid_grid;        ///< the solids' bounds, by solid index (owner -1)
+    const BroadPhase& broad;             ///< pieces live now
     const std::vector<Agent>& agents;
     const std::vector<Piece>& pieces;  ///< by broad-phase id
 };

@@ -35,10 +35,16 @@ void check(const CrowdOptions& o) {
 
 bool reserves(const CrowdOptions& o) { return o.select != Selection::Random; }
 
-std::vector<std::array<double, 4>> bounds_of(const std::vector<Polygon>& solids) {
-    std::vector<std::array<double, 4>> out;
-    for (const Polygon& p : solids) out.push_back(bounds(p));
-    return out;
+// The solids by index in a grid of their own: they never change, and a scenario may have many.
+BroadPhase solid_grid(const std::vector<Polygon>& solids, const CrowdOptions& o) {
+    BroadPhase grid(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1);
+    for (int k = 0; k < int(solids.size()); ++k) {
+        const auto b = bounds(solids[std::size_t(k)]);
+        grid.insert(k, -1,
+                    {b[0], b[1], b[2], b[3], std::numeric_limits<std::int64_t>::min(),
+                     std::numeric_limits<std::int64_t>::max()});
+    }
+    return grid;
 }
 
 std::vector<std::array<double, 2>> goals_of(const CrowdOptions& o) {
@@ -61,7 +67,7 @@ public:
           o_(o),
           escapes_(reserves(o) ? EscapeTable::build(g) : EscapeTable{}),
           solids_(reserves(o) ? o.world.solids() : std::vector<Polygon>{}),
-          solid_bounds_(bounds_of(solids_)),
+          solid_grid_(solid_grid(solids_, o)),
           policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, 0.45})),
           pool_(o.threads),
           broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
@@ -71,7 +77,7 @@ public:
 
 private:
     CrowdState state() const {
-        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, solid_bounds_, broad_, agents_, pieces_};
+        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, solid_grid_, broad_, agents_, pieces_};
     }
     double max_radius() const;
     void place_agents();
@@ -95,7 +101,7 @@ private:
     const CrowdOptions& o_;
     const EscapeTable escapes_;
     const std::vector<Polygon> solids_;
-    const std::vector<std::array<double, 4>> solid_bounds_;
+    const BroadPhase solid_grid_;
     const std::unique_ptr<Policy> policy_;
     util::WorkerPool pool_;
     BroadPhase broad_;                            // pieces live now
