@@ -1,7 +1,8 @@
 // Wandering without collisions: the candidates in the choice point's random order, except that walking
 // clips come before slow ones (starting, stopping) and those before clips that stay in place (so agents
-// keep walking while they can), and walking clips heading for a wall after those heading into the open
-// (a bias toward the interior that turns agents early, a few degrees per clip).
+// keep walking while they can); walks heading for a wall come after those heading into the open (a bias
+// toward the interior that turns agents early, a few degrees per clip); slow clips the faster first; and
+// near a wall, turns on the spot that end facing the open first.
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -22,6 +23,7 @@ public:
             reach_.push_back(std::hypot(clip.exit_x, clip.exit_y));
             farthest_ = std::max(farthest_, reach_.back());
         }
+        rank_slower_clips();
     }
 
     Selection kind() const override { return Selection::Avoid; }
@@ -52,15 +54,41 @@ private:
     static constexpr double kBand = 1.0;       // metres: walks toward a wall ranked in bands this wide
     static constexpr int kBands = int(kOpenAhead / kBand);
 
+    // Clips that do not walk, after every walk: slow ones (starts, stops) before those in place, each
+    // kind the faster first (an agent that must slow down keeps as much of its speed as it can).
+    void rank_slower_clips() {
+        std::vector<int> slower;
+        for (int k = 0; k < int(kinds_.size()); ++k)
+            if (kinds_[std::size_t(k)] != ClipKind::Walk) slower.push_back(k);
+        const auto key = [&](int k) {
+            const ClipKind kind = kinds_[std::size_t(k)];
+            const double duration = double(graph_.clips[std::size_t(k)].path.size()) * graph_.dt();
+            return std::pair{kind == ClipKind::Slow ? 0 : 1, -reach_[std::size_t(k)] / duration};
+        };
+        std::stable_sort(slower.begin(), slower.end(), [&](int a, int b) { return key(a) < key(b); });
+        slower_rank_.assign(kinds_.size(), 0);
+        for (std::size_t i = 0; i < slower.size(); ++i) slower_rank_[std::size_t(slower[i])] = kBands + 1 + int(i);
+    }
+
     // 0: walks and keeps going into the open; 1 .. kBands: walks toward a wall, the nearer the later;
-    // then slow clips (starts, stops); then those that stay in place. `wall`: the base's distance to the
-    // nearest wall (a clip ending farther than kOpenAhead from every wall is in the open).
+    // then the slower clips (rank_slower_clips). `wall`: the base's distance to the nearest wall (a clip
+    // ending farther than kOpenAhead from every wall is in the open).
     int rank(const ChoiceSite& site, const Rigid2& m, int clip, double wall) const {
         const ClipKind kind = kinds_[std::size_t(clip)];
-        if (kind == ClipKind::InPlace || kind == ClipKind::Idle) return kBands + 2;
-        if (kind == ClipKind::Slow) return kBands + 1;
+        if (kind == ClipKind::Slow) return slower_rank_[std::size_t(clip)];
+        if (kind != ClipKind::Walk) {
+            // Turning on the spot near a wall: facing the open first, so that a walk can follow.
+            if (wall - reach_[std::size_t(clip)] >= kOpenAhead) return slower_rank_[std::size_t(clip)];
+            const Placement end = graph_.next(site.base, m, clip);
+            const double room = ahead(end, {end.x + std::cos(end.theta), end.y + std::sin(end.theta), 0, 0});
+            return slower_rank_[std::size_t(clip)] + int(kinds_.size()) * band(room);
+        }
         if (wall - reach_[std::size_t(clip)] >= kOpenAhead) return 0;
-        const double room = ahead(site.base, graph_.next(site.base, m, clip));
+        return band(ahead(site.base, graph_.next(site.base, m, clip)));
+    }
+
+    // 0 with kOpenAhead metres of room ahead, else 1 .. kBands, the less room the higher.
+    static int band(double room) {
         return room >= kOpenAhead ? 0 : 1 + std::min(kBands - 1, int((kOpenAhead - room) / kBand));
     }
 
@@ -79,9 +107,10 @@ private:
 
     const MotionGraph& graph_;
     const World& world_;
-    std::vector<ClipKind> kinds_;  // per clip
-    std::vector<double> reach_;    // per clip: metres from its start to its exit
-    double farthest_ = 0;          // the largest of them
+    std::vector<ClipKind> kinds_;   // per clip
+    std::vector<double> reach_;     // per clip: metres from its start to its exit
+    std::vector<int> slower_rank_;  // per clip that does not walk: its rank
+    double farthest_ = 0;           // the largest of them
 };
 
 }  // namespace

@@ -88,6 +88,37 @@ TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
     }
 }
 
+// Mean ground speed of a clip from its start to its exit (m/s).
+double exit_speed(int clip) {
+    const GraphClip& c = fixture().graph.clips[std::size_t(clip)];
+    return std::hypot(c.exit_x, c.exit_y) / (double(c.path.size()) * fixture().graph.dt());
+}
+
+TEST(Policy, AvoidSlowsDownAsLittleAsItCanAndTurnsToTheOpen) {
+    World w;  // [0, 30] x [0, 40]
+    const Fixture& f = fixture();
+    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    // In the open: the slow clips the faster first.
+    const std::vector<int> c = ordered(*p, {0, {15, 20, 0.3, 0}, std::nullopt, 0, false, {}});
+    std::vector<double> slow;
+    for (int x : c)
+        if (f.kinds[std::size_t(x)] == ClipKind::Slow) slow.push_back(exit_speed(x));
+    ASSERT_GT(slow.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(slow.rbegin(), slow.rend()));
+    // Facing the wall 2 m ahead: clips in place that end facing away from it before those facing it.
+    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, 0, false, {}};
+    bool faced_wall = false, turned_after = false, turned = false;
+    for (int x : ordered(*p, wall)) {
+        if (f.kinds[std::size_t(x)] != ClipKind::InPlace) continue;
+        const double facing = std::cos(end_of(wall, x).theta);
+        turned = turned || facing < -0.5;
+        turned_after = turned_after || (faced_wall && facing < -0.5);
+        faced_wall = faced_wall || facing > 0.9;
+    }
+    ASSERT_TRUE(turned && faced_wall) << "the graph turns on the spot both ways";
+    EXPECT_FALSE(turned_after);
+}
+
 TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     World w;
     w.x1 = 20;
