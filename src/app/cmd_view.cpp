@@ -87,7 +87,7 @@ void add_render(CLI::App& app, int& exit_code) {
         std::string scene, out, crowd;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1;
-        bool ui = false, bench = false, top = false;
+        bool ui = false, help = false, bench = false, top = false;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
@@ -110,6 +110,7 @@ void add_render(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(16, 8192));
     cmd->add_option("--step", a->step, "Trace step to show (default: the scene's)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--ui", a->ui, "Also draw the ImGui panels");
+    cmd->add_flag("--shortcuts", a->help, "With --ui: the Shortcuts window open too (F1 in the viewer)");
     cmd->add_flag("--bench", a->bench, "Print frames per second instead of writing an image");
     cmd->add_option("--bench-frames", a->bench_frames, "Frames timed by --bench")->check(CLI::Range(1, 100000));
     cmd->callback([a, &exit_code] {
@@ -143,7 +144,7 @@ void add_render(CLI::App& app, int& exit_code) {
                         << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
                     return;
                 }
-                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));
+                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help}));
                 out << a->out << "\n";
                 return;
             }
@@ -165,7 +166,7 @@ void add_render(CLI::App& app, int& exit_code) {
                     << " frames per second\n";
                 return;
             }
-            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui}));
+            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help}));
             out << a->out << "\n";
         });
     });

@@ -16,7 +16,7 @@ namespace {
 
 /// The panels drawn into the current framebuffer without any window: ImGui's OpenGL3 backend works
 /// in any context once the display size is set by hand.
-void draw_ui(State& state, int width, int height) {
+void draw_ui(State& state, int width, int height, bool help) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -27,6 +27,7 @@ void draw_ui(State& state, int width, int height) {
     ImGui_ImplOpenGL3_Init("#version 330 core");
     Ui ui;
     ui.window_size = {width, height};
+    ui.show_help = help;
     // Two frames: the first lays windows out (auto-sized ones measure themselves), the second draws.
     for (int pass = 0; pass < 2; ++pass) {
         ImGui_ImplOpenGL3_NewFrame();
@@ -47,7 +48,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     render::Renderer renderer;
     target.bind();
     renderer.draw(frame_of(state), state.camera, options.width, options.height);
-    if (options.ui) draw_ui(state, options.width, options.height);
+    if (options.ui) draw_ui(state, options.width, options.height, options.help);
     return target.read();
 }
 

@@ -10,7 +10,8 @@ namespace mobb::viewer {
 
 struct HeadlessOptions {
     int width = 960, height = 540;
-    bool ui = false;  ///< also draw the ImGui panels
+    bool ui = false;    ///< also draw the ImGui panels
+    bool help = false;  ///< with ui: the Shortcuts window open too
 };
 
 /// Renders the state into an image. Throws std::runtime_error when no context can be made.

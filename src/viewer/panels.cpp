@@ -8,6 +8,7 @@
 
 #include "crowd_view.h"
 #include "mobb/core/angle.h"
+#include "shortcuts.h"
 
 namespace mobb::viewer {
 
@@ -62,6 +63,9 @@ void scene_panel(State& s, Ui& ui) {
     if (ImGui::Button("top")) ui.request_view = 1;
     ImGui::SameLine();
     if (ImGui::Button("side")) ui.request_view = 2;
+    ImGui::SameLine();
+    if (ImGui::Button("?")) ui.show_help = !ui.show_help;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("shortcuts (F1)");
     char path[256];
     std::snprintf(path, sizeof path, "%s", ui.save_path.c_str());
     if (ImGui::InputText("##path", path, sizeof path)) ui.save_path = path;
@@ -479,6 +483,7 @@ void draw_panels(State& s, Ui& ui) {
     fit_panel(s, ui);
     pick_panel(s, ui);
     crowd_panel(s, ui);
+    shortcuts_window(ui);
 }
 
 }  // namespace mobb::viewer

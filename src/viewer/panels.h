@@ -38,7 +38,8 @@ struct Ui {
     std::string save_path = "scene.json";
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
-    int request_view = 0;  ///< 1 top, 2 side
+    int request_view = 0;    ///< 1 top, 2 side
+    bool show_help = false;  ///< the Shortcuts window (F1 or ?)
 };
 
 /// The viewer's compact dark style (call once after ImGui::CreateContext).

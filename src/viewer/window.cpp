@@ -11,6 +11,7 @@
 #include "panels.h"
 #include "picking.h"
 #include "renderer.h"
+#include "shortcuts.h"
 
 namespace mobb::viewer {
 
@@ -75,13 +76,10 @@ void mouse(State& s, Ui& ui, Input& in) {
 }
 
 void keyboard(State& s, Ui& ui) {
-    if (ImGui::GetIO().WantCaptureKeyboard) return;
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) ui.playing = !ui.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) go_to_step(s, ui, shown_step(s) + 1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) go_to_step(s, ui, shown_step(s) - 1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) ui.request_frame_all = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_T, false)) ui.request_view = 1;
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) ui.request_view = 2;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard) return;
+    for (const Shortcut& k : shortcuts())
+        if (k.shift == io.KeyShift && ImGui::IsKeyPressed(k.key, k.repeat)) run_command(k.command, s, ui);
 }
 
 void apply_requests(State& s, Ui& ui, float aspect) {

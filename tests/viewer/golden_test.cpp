@@ -26,6 +26,7 @@ struct Case {
     std::string scene;
     std::function<void(State&)> edit = [](State&) {};
     bool ui = false;
+    bool help = false;  ///< with ui: the Shortcuts window open
     int width = 320, height = 240;
 };
 
@@ -35,7 +36,7 @@ render::Image render_case(const Case& c) {
     const Scene scene = viewer::load_scene(test_scene(c.scene));
     State state = viewer::load_state(scene, float(c.width) / float(c.height));
     c.edit(state);
-    return viewer::render_headless(state, {c.width, c.height, c.ui});
+    return viewer::render_headless(state, {c.width, c.height, c.ui, c.help});
 }
 
 bool updating() {
@@ -155,6 +156,15 @@ TEST(Golden, UiPanels) {
                s.scene.layers.trace = true;
            }};
     c.ui = true;
+    c.width = 1024;
+    c.height = 640;
+    check_golden(c);
+}
+
+/// The Shortcuts window (F1 or ?) over the panels: every key and gesture of the viewer listed.
+TEST(Golden, ShortcutsWindow) {
+    Case c{"ui_shortcuts", "walks.json"};
+    c.ui = c.help = true;
     c.width = 1024;
     c.height = 640;
     check_golden(c);

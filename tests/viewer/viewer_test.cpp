@@ -1,5 +1,6 @@
 // Viewer logic without a window: picking disks, stepping and playing a trace.
 #include <cmath>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 #include "picking.h"
 #include "render_test_util.h"
 #include "scene.h"
+#include "shortcuts.h"
 #include "state.h"
 
 namespace mobb::test {
@@ -65,3 +67,46 @@ TEST(TracePlayer, StepsClampAndMoveTheCursor) {
 
 }  // namespace
 }  // namespace mobb::test
+
+namespace mobb::viewer {
+namespace {
+
+TEST(Shortcuts, NoTwoShareAKey) {
+    const std::vector<Shortcut>& keys = shortcuts();
+    ASSERT_FALSE(keys.empty());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        for (std::size_t j = i + 1; j < keys.size(); ++j)
+            EXPECT_FALSE(keys[i].key == keys[j].key && keys[i].shift == keys[j].shift)
+                << keys[i].keys << " and " << keys[j].keys << " share a key";
+}
+
+TEST(Shortcuts, EveryCommandHasAKeyAndTheHelpListsIt) {
+    std::set<Command> bound;
+    for (const Shortcut& k : shortcuts()) {
+        bound.insert(k.command);
+        EXPECT_STRNE(k.keys, "");
+        EXPECT_STRNE(k.what, "");
+    }
+    EXPECT_EQ(bound.size(), std::size_t(Command::ToggleHelp) + 1);
+    for (const Gesture& g : gestures()) EXPECT_STRNE(g.what, "");
+}
+
+TEST(Shortcuts, CommandsSetTheirRequests) {
+    State s;
+    Ui ui;
+    run_command(Command::TopView, s, ui);
+    EXPECT_EQ(ui.request_view, 1);
+    run_command(Command::SideView, s, ui);
+    EXPECT_EQ(ui.request_view, 2);
+    run_command(Command::FrameAll, s, ui);
+    EXPECT_TRUE(ui.request_frame_all);
+    run_command(Command::ToggleHelp, s, ui);
+    EXPECT_TRUE(ui.show_help);
+    run_command(Command::TogglePlay, s, ui);
+    EXPECT_TRUE(ui.playing);
+    run_command(Command::ToggleHelp, s, ui);
+    EXPECT_FALSE(ui.show_help);
+}
+
+}  // namespace
+}  // namespace mobb::viewer

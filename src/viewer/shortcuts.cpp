@@ -1,0 +1,70 @@
+#include "shortcuts.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace mobb::viewer {
+
+const std::vector<Shortcut>& shortcuts() {
+    static const std::vector<Shortcut> table = {
+        {GLFW_KEY_SPACE, false, false, Command::TogglePlay, "Space", "play / pause the trace"},
+        {GLFW_KEY_RIGHT, false, true, Command::StepForward, "Right", "next trace step"},
+        {GLFW_KEY_LEFT, false, true, Command::StepBack, "Left", "previous trace step"},
+        {GLFW_KEY_F, false, false, Command::FrameAll, "F", "frame everything"},
+        {GLFW_KEY_T, false, false, Command::TopView, "T", "view from the top (space-time seen along t)"},
+        {GLFW_KEY_S, false, false, Command::SideView, "S", "view from the side"},
+        {GLFW_KEY_F1, false, false, Command::ToggleHelp, "F1", "show / hide this window"},
+        {GLFW_KEY_SLASH, true, false, Command::ToggleHelp, "Shift+/ (?)", "show / hide this window"},
+    };
+    return table;
+}
+
+const std::vector<Gesture>& gestures() {
+    static const std::vector<Gesture> table = {
+        {"drag", "orbit"},
+        {"Shift+drag, middle drag", "pan"},
+        {"wheel", "zoom"},
+        {"click", "pick a disk (Picked panel)"},
+        {"Ctrl+drag", "move a clip on its ground plane (the query reruns)"},
+    };
+    return table;
+}
+
+void run_command(Command command, State& s, Ui& ui) {
+    switch (command) {
+        case Command::TogglePlay: ui.playing = !ui.playing; break;
+        case Command::StepForward: go_to_step(s, ui, shown_step(s) + 1); break;
+        case Command::StepBack: go_to_step(s, ui, shown_step(s) - 1); break;
+        case Command::FrameAll: ui.request_frame_all = true; break;
+        case Command::TopView: ui.request_view = 1; break;
+        case Command::SideView: ui.request_view = 2; break;
+        case Command::ToggleHelp: ui.show_help = !ui.show_help; break;
+    }
+}
+
+void shortcuts_window(Ui& ui) {
+    if (!ui.show_help) return;
+    const ImVec2 centre(0.5f * float(ui.window_size.x), 0.5f * float(ui.window_size.y));
+    ImGui::SetNextWindowPos(centre, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+    if (ImGui::Begin("Shortcuts", &ui.show_help, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+            for (const Shortcut& k : shortcuts()) {
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(k.keys);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(k.what);
+            }
+            for (const Gesture& g : gestures()) {
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(g.input);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(g.what);
+            }
+            ImGui::EndTable();
+        }
+        ImGui::TextDisabled("keys act when no panel has the keyboard");
+    }
+    ImGui::End();
+}
+
+}  // namespace mobb::viewer
