@@ -13,12 +13,8 @@ bool collide_brute(const Path& a, const Placement& pa, const Path& b, const Plac
     bool found = false;
     for (std::int64_t i = 0; i < n && !found; ++i) {
         const double s0 = sample_time(pa, a.dt, i), s1 = sample_time(pa, a.dt, i + 1);
-        // Candidate window of b's samples, two wider than arithmetic says; the exact predicate decides.
-        const double lo = std::floor((s0 - pb.t0) / b.dt) - 2, hi = std::ceil((s1 - pb.t0) / b.dt) + 2;
-        if (!(hi >= 0 && lo < double(m))) continue;
-        const std::int64_t k0 = std::max<std::int64_t>(0, std::int64_t(std::max(lo, -1.0)));
-        const std::int64_t k1 = std::min<std::int64_t>(m - 1, std::int64_t(std::min(hi, double(m))));
-        for (std::int64_t k = k0; k <= k1; ++k) {
+        const TimeWindow w = aligned_window(s0, s1, pb, b.dt, m);
+        for (std::int64_t k = w.k0; k <= w.k1; ++k) {
             if (!times_overlap(s0, s1, sample_time(pb, b.dt, k), sample_time(pb, b.dt, k + 1))) continue;
             ++tested;
             if (samples_overlap(ta, a.samples[std::size_t(i)], tb, b.samples[std::size_t(k)])) {

@@ -117,9 +117,42 @@ bool placement_fields(const char* id, Placement& p) {
     return changed;
 }
 
+// The query's clearance over time (distance minus r_a + r_b, metres; below the line the disks overlap).
+// A click moves the time cursor there.
+void clearance_plot(State& s) {
+    if (s.clearance.empty()) return ImGui::TextDisabled("the clips never meet in time");
+    std::vector<float> gaps;
+    float low = 0, high = 0;
+    std::size_t least = 0;
+    for (std::size_t k = 0; k < s.clearance.size(); ++k) {
+        gaps.push_back(float(s.clearance[k].gap));
+        low = std::min(low, gaps.back()), high = std::max(high, gaps.back());
+        if (gaps[k] < gaps[least]) least = k;
+    }
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "least %.2f m at %.2f s", gaps[least], s.clearance[least].t);
+    ImGui::TextUnformatted("clearance (m) over time, 0 = touching");
+    ImGui::PlotLines("##clearance", gaps.data(), int(gaps.size()), 0, overlay, low, high,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 56));
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    if (high > low) {  // the zero line
+        const float y = hi.y - (0 - low) / (high - low) * (hi.y - lo.y);
+        ImGui::GetWindowDrawList()->AddLine(ImVec2(lo.x, y), ImVec2(hi.x, y), IM_COL32(230, 60, 60, 200));
+    }
+    const double t0 = s.clearance.front().t, t1 = s.clearance.back().t;
+    if (t1 > t0 && s.scene.cursor >= t0 && s.scene.cursor <= t1) {  // the time cursor
+        const float x = lo.x + float((s.scene.cursor - t0) / (t1 - t0)) * (hi.x - lo.x);
+        ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(240, 200, 80, 220));
+    }
+    if (ImGui::IsItemClicked()) {
+        const float f = std::clamp((ImGui::GetIO().MousePos.x - lo.x) / std::max(1.0f, hi.x - lo.x), 0.0f, 1.0f);
+        s.scene.cursor = s.clearance[std::min(s.clearance.size() - 1, std::size_t(f * float(s.clearance.size())))].t;
+    }
+}
+
 void query_panel(State& s, Ui& ui) {
     ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(280, 300), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(280, 390), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Query")) return ImGui::End();
     bool rerun = clip_combo("A", &s.scene.query_a, s);
     rerun |= clip_combo("B", &s.scene.query_b, s);
@@ -153,6 +186,7 @@ void query_panel(State& s, Ui& ui) {
         ImGui::Text("2D tests %llu  3D tests %llu", (unsigned long long)s.stats.tests2d,
                     (unsigned long long)s.stats.tests3d);
         ImGui::Text("sample tests %llu  events %zu", (unsigned long long)s.stats.samples, s.trace.size());
+        clearance_plot(s);
     } else {
         ImGui::TextDisabled("choose two different clips");
     }
@@ -162,8 +196,8 @@ void query_panel(State& s, Ui& ui) {
 const char* short_name(TraceTest t) { return to_string(t); }
 
 void trace_panel(State& s, Ui& ui) {
-    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 316.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(280, std::max(160.0f, float(ui.window_size.y) - 324.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 406.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(280, std::max(160.0f, float(ui.window_size.y) - 414.0f)), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Trace")) return ImGui::End();
     const int last = int(s.trace.size()) - 1;
     const int step = shown_step(s);

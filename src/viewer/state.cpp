@@ -69,10 +69,13 @@ void run_query(State& s) {
     s.hit = {};
     s.answer = false;
     s.queried = false;
+    s.clearance.clear();
     const int a = s.scene.query_a, b = s.scene.query_b, n = int(s.clips.size());
     if (a < 0 || b < 0 || a >= n || b >= n || a == b) return;
     s.answer = collide(*s.clips[std::size_t(a)].tree, s.places[std::size_t(a)], *s.clips[std::size_t(b)].tree,
                        s.places[std::size_t(b)], &s.stats, &s.trace, &s.hit);
+    s.clearance = clearance(s.clips[std::size_t(a)].tree->path(), s.places[std::size_t(a)],
+                            s.clips[std::size_t(b)].tree->path(), s.places[std::size_t(b)]);
     s.queried = true;
 }
 

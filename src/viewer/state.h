@@ -8,6 +8,7 @@
 
 #include "camera.h"
 #include "frame.h"
+#include "mobb/core/clearance.h"
 #include "mobb/core/query.h"
 #include "mobb/core/trace.h"
 #include "mobb/core/tree.h"
@@ -33,6 +34,7 @@ struct State {
     SamplePair hit;
     bool answer = false;
     bool queried = false;
+    std::vector<ClearanceSample> clearance;  ///< of the query's clips A and B over time (core clearance())
     render::Camera camera;
     std::uint64_t revision = 1;  ///< bumped on any change of clips, placements or trees
     /// A recorded crowd (mobb view --crowd): clip k's path is fixed_paths[k] when k < its size, and

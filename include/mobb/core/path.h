@@ -1,5 +1,6 @@
 // Paths, placements and the exact collision predicate (paper section 3, equation 1 as pinned by the README).
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -57,6 +58,19 @@ inline double sample_time(const Placement& p, double dt, std::int64_t k) { retur
 
 /// Half-open intervals [a0, a1) and [b0, b1) overlap with positive length.
 inline bool times_overlap(double a0, double a1, double b0, double b1) { return a0 < b1 && b0 < a1; }
+
+/// Samples k0..k1 of an m-sample clip placed at p (sample spacing dt) that may overlap global time
+/// [s0, s1): the arithmetic window, two samples wider each side (times_overlap() decides); k0 > k1
+/// when none.
+struct TimeWindow {
+    std::int64_t k0 = 0, k1 = -1;
+};
+inline TimeWindow aligned_window(double s0, double s1, const Placement& p, double dt, std::int64_t m) {
+    const double lo = std::floor((s0 - p.t0) / dt) - 2, hi = std::ceil((s1 - p.t0) / dt) + 2;
+    if (!(hi >= 0 && lo < double(m))) return {};
+    return {std::max<std::int64_t>(0, std::int64_t(std::max(lo, -1.0))),
+            std::min<std::int64_t>(m - 1, std::int64_t(std::min(hi, double(m))))};
+}
 
 /// The one sample test used by every method: placed disks overlap, |p_a - p_b| < r_a + r_b (strict).
 inline bool samples_overlap(const Rigid2& ta, const Sample& a, const Rigid2& tb, const Sample& b) {
