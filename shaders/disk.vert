@@ -13,6 +13,8 @@ uniform mat4 u_mvp;
 uniform float u_time_scale;               // metres per second
 uniform float u_dt;                       // seconds per sample
 uniform float u_grow;                     // radius factor (highlighted disks are drawn a little larger)
+uniform float u_clip_lo, u_clip_hi;       // GL heights kept: the time window (renderer.cpp)
+out float gl_ClipDistance[2];
 out vec3 v_normal;
 void main() {
     float r = a_sample.w * u_grow;
@@ -24,4 +26,6 @@ void main() {
     float tilt = (a_normal.x * a_group.x - a_normal.z * a_group.y) / max(abs(h), 1e-6);
     v_normal = vec3(a_normal.x, a_normal.y - tilt, a_normal.z);
     gl_Position = u_mvp * vec4(p, 1.0);
+    gl_ClipDistance[0] = p.y - u_clip_lo;
+    gl_ClipDistance[1] = u_clip_hi - p.y;
 }

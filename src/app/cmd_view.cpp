@@ -86,13 +86,17 @@ void add_render(CLI::App& app, int& exit_code) {
     struct Args {
         std::string scene, out, crowd;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
-        double time = -1;
+        double time = -1, window = -1;
         bool ui = false, help = false, bench = false, top = false;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
     cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--window", a->window,
+                    "Seconds either side of the time cursor drawn, 0 for all time (default: the scene's; 5 for "
+                    "crowds)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--agent", a->agent, "With --crowd: agent listed in the crowd panel")
         ->check(CLI::NonNegativeNumber);
@@ -135,6 +139,7 @@ void add_render(CLI::App& app, int& exit_code) {
                 State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
                 open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
                 apply_step(s, a->step);
+                if (a->window >= 0) s.scene.window = a->window;
                 if (a->top) {
                     s.camera.top();
                     viewer::frame_all(s, aspect(w, h));
@@ -153,6 +158,7 @@ void add_render(CLI::App& app, int& exit_code) {
             const int h = a->height ? a->height : a->bench ? 720 : scene.height;
             State s = viewer::load_state(scene, aspect(w, h));
             apply_step(s, a->step);
+            if (a->window >= 0) s.scene.window = a->window;
             if (a->bench) {
                 std::size_t disks = 0;
                 for (const auto& c : s.clips) disks += c.tree->path().size();

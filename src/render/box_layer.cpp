@@ -41,7 +41,7 @@ void BoxLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent
     if (frame.revision != revision_ || frame.layers.level != level_ || frame.layers.levels != levels_ ||
         frame.layers.all_levels != all_levels_ || frame.time_scale != time_scale_)
         rebuild(frame);
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     if (!translucent_pass)
         edges_.draw();

@@ -40,7 +40,7 @@ void CursorLayer::draw_posed(const Frame& frame, const DrawContext& ctx) {
     for (const PosedSkeleton& p : frame.posed)
         if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
             skeleton(posed_, *p.animation, p.up, p.frame, Rigid2::of(p.place), p.floor, frame, p.color);
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(2.0f);
     posed_.draw();
@@ -63,7 +63,7 @@ void CursorLayer::skeleton(Batch& out, const io::Animation& anim, io::UpAxis up,
 
 void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text) {
     if (ctx.bounds.empty || !(frame.layers.cursor || frame.layers.skeletons)) return;
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     const double ts = frame.time_scale, t = frame.cursor;
     const double x0 = std::floor(ctx.bounds.lo.x) - 1, x1 = std::ceil(ctx.bounds.hi.x) + 1;

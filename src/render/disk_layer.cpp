@@ -139,9 +139,14 @@ void DiskLayer::rebuild(const Frame& frame) {
     }
 }
 
-DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
+int DiskLayer::level_of(int k) {
     int level = 0;
     while ((1 << level) < k && level + 1 < kLevels) ++level;
+    return level;
+}
+
+DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
+    const int level = level_of(k);
     Stack& s = c.lods[std::size_t(level)];
     if (s.built) return s;
     if (!s.vao) s = make_stack(level > 0);
@@ -154,10 +159,35 @@ DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
     return s;
 }
 
+// The instances of stack s (k samples each) inside the frame's time window: all without one. The clip
+// planes cut the window's edges exactly; this only spares llvmpipe the instances wholly outside.
+DiskLayer::InstanceRange DiskLayer::in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k) {
+    if (frame.window <= 0) return {0, s.count};
+    const double dt = clip.tree->path().dt, t0 = clip.place.t0;
+    const auto n = std::int64_t(clip.tree->path().size());
+    const std::int64_t i0 =
+        std::max<std::int64_t>(0, std::int64_t(std::floor((frame.cursor - frame.window - t0) / dt)));
+    const std::int64_t i1 = std::min(n - 1, std::int64_t(std::floor((frame.cursor + frame.window - t0) / dt)));
+    if (i1 < i0) return {0, 0};
+    const std::int64_t g0 = i0 / k, g1 = std::min<std::int64_t>(i1 / k, std::int64_t(s.count) - 1);
+    return {GLsizei(g0), GLsizei(g1 - g0 + 1)};
+}
+
+// Points the stack's instance attributes at its instance `first` (a GL 3.3 stand-in for a base instance).
+void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped) {
+    const GLsizei stride = grouped ? GLsizei(sizeof(DiskGroup)) : GLsizei(sizeof(DiskInstance));
+    const std::size_t base = std::size_t(first) * std::size_t(stride);
+    glBindBuffer(GL_ARRAY_BUFFER, s.vbo);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(base));
+    if (grouped)
+        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<void*>(base + offsetof(DiskGroup, shift)));
+}
+
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.disks || frame.layers.disks_translucent != translucent_pass) return;
     stats_ = DiskStats{};
-    ctx.disk->use();
+    ctx.use(*ctx.disk);
     ctx.disk->set("u_mvp", ctx.view_proj);
     ctx.disk->set("u_time_scale", float(frame.time_scale));
     ctx.disk->set("u_grow", 1.0f);
@@ -168,12 +198,16 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
         Clip& clip = clips_[c];
         const int k = clip_lod(clip.bounds, double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
         const Stack& s = stack_at(frame.clips[c], clip, k);
+        const int group = 1 << level_of(k);  // samples per instance
+        const InstanceRange range = in_window(frame, frame.clips[c], s, group);
+        if (range.count <= 0) continue;
         ctx.disk->set("u_dt", clip.dt);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
         glBindVertexArray(s.vao);
-        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, s.count);
+        point_at(s, range.first, group > 1);
+        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, range.count);
         stats_.disks += frame.clips[c].tree->path().size();
-        stats_.instances += std::size_t(s.count);
+        stats_.instances += std::size_t(range.count);
         stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
         stats_.k_max = std::max(stats_.k_max, k);
     }
@@ -184,7 +218,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
                             double time_scale, const glm::vec4& color, float grow) {
     if (disks.empty()) return;
     upload(marked_, disks);
-    ctx.disk->use();
+    ctx.use(*ctx.disk);
     ctx.disk->set("u_mvp", ctx.view_proj);
     ctx.disk->set("u_time_scale", float(time_scale));
     ctx.disk->set("u_dt", float(dt));

@@ -50,6 +50,12 @@ private:
         Bounds bounds;                    ///< space-time bounds, for the LOD decision
         float dt = 0;
     };
+    struct InstanceRange {
+        GLsizei first = 0, count = 0;
+    };
+    static InstanceRange in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k);
+    static void point_at(const Stack& s, GLsizei first, bool grouped);
+    static int level_of(int k);  ///< log2 of the group size that stands for k samples
     Stack make_stack(bool grouped);
     void upload(Stack& stack, const std::vector<DiskInstance>& disks);
     void upload(Stack& stack, const std::vector<DiskGroup>& groups);

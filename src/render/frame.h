@@ -75,6 +75,7 @@ struct Frame {
     Layers layers;
     double time_scale = 1.0;      ///< metres of height per second
     double cursor = 0.0;          ///< seconds (global time)
+    double window = 0.0;          ///< > 0: only global times within this many seconds of the cursor are drawn
     double skeleton_scale = 0.5;  ///< skeleton height factor on the cursor plane
     TraceView trace;
     std::vector<PosedSkeleton> posed;  ///< with the skeletons layer: drawn at the cursor, over everything

@@ -49,7 +49,7 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
         for (double x = std::ceil((x0 + 0.5) / mstep) * mstep; x <= x1; x += mstep)
             text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center);
     }
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     lines_.draw();
 }

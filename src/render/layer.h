@@ -13,6 +13,16 @@ struct DrawContext {
     const Program* color = nullptr;  ///< color.vert/.frag: lines, triangles, text
     const Program* disk = nullptr;   ///< disk.vert/.frag: instanced cylinders
     Bounds bounds;                   ///< the scene in space-time, for the grid and the cursor plane
+    /// GL heights (t * time_scale) kept by the clip planes: the frame's time window for what lies in
+    /// space-time (disks, boxes, prisms, the trace), everything for the grid, the cursor and text.
+    float clip_lo = -1e30f, clip_hi = 1e30f;
+
+    /// Makes `p` current with this context's clip planes.
+    void use(const Program& p) const {
+        p.use();
+        p.set("u_clip_lo", clip_lo);
+        p.set("u_clip_hi", clip_hi);
+    }
 };
 
 }  // namespace mobb::render

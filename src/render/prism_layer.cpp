@@ -50,7 +50,7 @@ void PrismLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
             add_faces(p, frame.time_scale, out);
     }
     if (out.empty()) return;
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(1.5f);
     out.draw();
@@ -62,7 +62,7 @@ void PrismLayer::draw_on_top(const Frame& frame, const DrawContext& ctx) {
     for (const Prism& p : frame.prisms)
         if (p.on_top && p.ground.size() >= 2) add_edges(p, frame.time_scale, glm::vec4(p.color, 1.0f), top_);
     if (top_.empty()) return;
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(3.0f);
     top_.draw();

@@ -91,28 +91,37 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 
+    glEnable(GL_CLIP_DISTANCE0);
+    glEnable(GL_CLIP_DISTANCE1);
+    // What lies in space-time is clipped to the time window; the grid, the cursor and text are not.
+    DrawContext window = ctx;
+    if (frame.window > 0) {
+        window.clip_lo = float((frame.cursor - frame.window) * frame.time_scale);
+        window.clip_hi = float((frame.cursor + frame.window) * frame.time_scale);
+    }
+
     // Opaque pass.
     l.grid.draw(frame, ctx, l.text);
-    l.disks.draw(frame, ctx, false);
-    l.boxes.draw(frame, ctx, false);
-    l.prisms.draw(frame, ctx, false);
+    l.disks.draw(frame, window, false);
+    l.boxes.draw(frame, window, false);
+    l.prisms.draw(frame, window, false);
     l.cursor.draw(frame, ctx, false, l.text);
-    l.trace.draw(frame, ctx, false);
+    l.trace.draw(frame, window, false);
 
     // Translucent pass: blended, tested against the opaque depth but not writing it.
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
-    l.disks.draw(frame, ctx, true);
-    l.boxes.draw(frame, ctx, true);
-    l.prisms.draw(frame, ctx, true);
-    l.trace.draw(frame, ctx, true);
+    l.disks.draw(frame, window, true);
+    l.boxes.draw(frame, window, true);
+    l.prisms.draw(frame, window, true);
+    l.trace.draw(frame, window, true);
     l.cursor.draw(frame, ctx, true, l.text);
 
     // Marks that must stay visible through the translucent layers.
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    l.trace.draw_hit(frame, ctx, l.disks);
+    l.trace.draw_hit(frame, window, l.disks);
 
     // Labels, contacts and posed skeletons (crowd agents) on top.
     glDisable(GL_DEPTH_TEST);

@@ -39,7 +39,7 @@ void TextLayer::draw(const DrawContext& ctx) {
         }
     }
     labels_.clear();
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", glm::ortho(0.0f, float(ctx.width), float(ctx.height), 0.0f, -1.0f, 1.0f));
     tris_.draw();
 }

@@ -16,7 +16,7 @@ const TraceEvent* current_event(const Frame& frame) {
 void TraceLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     const TraceEvent* ev = current_event(frame);
     if (!ev) return;
-    ctx.color->use();
+    ctx.use(*ctx.color);
     ctx.color->set("u_mvp", ctx.view_proj);
     if (translucent_pass) return faces_.draw();
     const glm::vec3 color = outcome_color(ev->outcome);

@@ -12,6 +12,9 @@ namespace mobb::viewer {
 
 namespace {
 
+// Seconds either side of the cursor a crowd shows at first: a slab of the run, not all of it.
+constexpr double kCrowdWindow = 5.0;
+
 const glm::vec3 kAccepted{0.25f, 0.80f, 0.30f}, kRejected{0.90f, 0.20f, 0.20f}, kCommitted{0.95f, 0.85f, 0.20f};
 
 /// Drops every clip after the agents (candidates, the opened query's other clip).
@@ -75,6 +78,7 @@ State load_crowd_state(const std::string& record_file, float aspect) {
             s.scene.time_scale = scale;
             break;
         }
+    s.scene.window = kCrowdWindow;
     s.scene.width = 960;
     s.scene.height = 540;
     view->agents = int(r.tracks.size());

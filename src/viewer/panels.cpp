@@ -56,6 +56,7 @@ void scene_panel(State& s, Ui& ui) {
     ImGui::SameLine();
     ImGui::Checkbox("trace", &l.trace);
     drag("time", &s.scene.cursor, 0.01f, 0.0, max_time(s), "%.2f s");
+    drag("window", &s.scene.window, 0.05f, 0.0, max_time(s), s.scene.window > 0 ? "+-%.2f s" : "all time");
     drag("m per s", &s.scene.time_scale, 0.01f, 0.05, 20.0, "%.2f");
     drag("skeleton", &s.scene.skeleton_scale, 0.01f, 0.05, 5.0, "%.2f x");
     if (ImGui::Button("frame all (F)")) ui.request_frame_all = true;

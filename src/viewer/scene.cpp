@@ -43,6 +43,11 @@ public:
         if (!(v > 0)) fail(at(key), "expected a positive number");
         return v;
     }
+    double non_negative(const char* key, double fallback) const {
+        const double v = number(key, fallback);
+        if (!(v >= 0)) fail(at(key), "expected a number >= 0");
+        return v;
+    }
     int integer(const char* key, int fallback, int lo, int hi) const {
         if (!has(key)) return fallback;
         const json& v = j_.at(key);
@@ -199,9 +204,10 @@ Scene parse_scene(const json& j, const std::string& file) {
     }
     if (r.has("layers")) layers_of(j.at("layers"), r.at("layers"), s.layers);
     if (r.has("time")) {
-        const Reader t(j.at("time"), r.at("time"), {"scale", "cursor"});
+        const Reader t(j.at("time"), r.at("time"), {"scale", "cursor", "window"});
         s.time_scale = t.positive("scale", s.time_scale);
         s.cursor = t.number("cursor", s.cursor);
+        s.window = t.non_negative("window", s.window);
     }
     s.skeleton_scale = r.positive("skeleton_scale", s.skeleton_scale);
     if (r.has("camera")) s.camera = camera_of(j.at("camera"), r.at("camera"), s.time_scale);
@@ -269,7 +275,7 @@ json scene_json(const Scene& s) {
                 {"cursor", l.cursor},
                 {"skeletons", l.skeletons},
                 {"trace", l.trace}}},
-              {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}}},
+              {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}, {"window", s.window}}},
               {"skeleton_scale", s.skeleton_scale},
               {"image", {{"width", s.width}, {"height", s.height}}}};
     if (s.generate.count > 0)

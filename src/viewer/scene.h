@@ -46,6 +46,7 @@ struct Scene {
     render::Layers layers;
     double time_scale = 1.0;
     double cursor = 0.0;
+    double window = 0.0;  ///< seconds either side of the cursor drawn (0: all time)
     double skeleton_scale = 0.5;
     std::optional<render::Camera> camera;  ///< absent: frame everything; target in space-time (x, y, t)
     int width = 960, height = 540;

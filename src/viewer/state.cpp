@@ -118,6 +118,7 @@ render::Frame frame_of(const State& s) {
     f.layers = s.scene.layers;
     f.time_scale = s.scene.time_scale;
     f.cursor = s.scene.cursor;
+    f.window = s.scene.window;
     f.skeleton_scale = s.scene.skeleton_scale;
     f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.

@@ -280,6 +280,9 @@ TEST(Golden, CrowdScenario) {
     ASSERT_EQ(r.world.obstacles.size(), 2u);
     ASSERT_TRUE(r.tracks[0].goal && r.tracks[1].goal);
     s.scene.cursor = 0.5 * double(r.frames) * r.dt;
+    // A crowd opens with a time window: only the slab of the run around the cursor is drawn.
+    EXPECT_GT(s.scene.window, 0.0);
+    EXPECT_LT(2 * s.scene.window, double(r.frames) * r.dt);
     check_image("crowd_scenario", viewer::render_headless(s, {640, 480, false}));
     // Agent 1 moved onto agent 0 at one frame: both disks ringed red there.
     const auto frame = std::size_t(r.frames / 3);

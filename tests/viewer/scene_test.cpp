@@ -43,6 +43,7 @@ TEST(Scene, Errors) {
     EXPECT_EQ(error_of_json(R"({"clips": [{}]})"),
               "s.json.clips[0]: expected exactly one of \"file\" and \"random_walk\"");
     EXPECT_EQ(error_of_json(R"({"query": {"a": 0, "b": 5}})"), "s.json.query: clip index out of range");
+    EXPECT_EQ(error_of_json(R"({"time": {"window": -1}})"), "s.json.time.window: expected a number >= 0");
     EXPECT_EQ(error_of_json(R"({"tree": {"type": "octree"}})"),
               "s.json.tree.type: expected one of mobb, umobb, hybrid1, hybrid2, mobb1, umobb1");
     EXPECT_NE(error_of_json(R"({"clips": [{"file": "a.bvh", "frames": "9:3"}]})").find("s.json.clips[0]: --frames"),
@@ -63,12 +64,14 @@ TEST(Scene, RoundTrip) {
     viewer::Scene a = viewer::load_scene(test_scene("walks.json"));
     a.layers.level = 3;
     a.cursor = 1.25;
+    a.window = 0.75;
     const std::string file = std::string(MOBB_TEST_OUT) + "/round_trip.json";
     std::filesystem::create_directories(MOBB_TEST_OUT);
     viewer::save_scene(a, file);
     const viewer::Scene b = viewer::load_scene(file);
     EXPECT_EQ(viewer::scene_json(a).dump(), viewer::scene_json(b).dump());
     EXPECT_EQ(b.layers.level, 3);
+    EXPECT_EQ(b.window, 0.75);
     EXPECT_EQ(b.clips.size(), 2u);
     EXPECT_NEAR(b.clips[1].place.t0, 0.5, 1e-12);
 }
