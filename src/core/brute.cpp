@@ -13,7 +13,7 @@ bool collide_brute(const Path& a, const Placement& pa, const Path& b, const Plac
     bool found = false;
     for (std::int64_t i = 0; i < n && !found; ++i) {
         const double s0 = sample_time(pa, a.dt, i), s1 = sample_time(pa, a.dt, i + 1);
-        const TimeWindow w = aligned_window(s0, s1, pb, b.dt, m);
+        const SampleRange w = aligned_samples(s0, s1, pb, b.dt, m);
         for (std::int64_t k = w.k0; k <= w.k1; ++k) {
             if (!times_overlap(s0, s1, sample_time(pb, b.dt, k), sample_time(pb, b.dt, k + 1))) continue;
             ++tested;

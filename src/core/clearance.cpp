@@ -12,7 +12,7 @@ std::vector<ClearanceSample> clearance(const Path& a, const Placement& pa, const
         const double s0 = sample_time(pa, a.dt, i), s1 = sample_time(pa, a.dt, i + 1);
         const Sample& p = a.samples[std::size_t(i)];
         ClearanceSample best{s0, std::numeric_limits<double>::infinity(), i, -1};
-        const TimeWindow w = aligned_window(s0, s1, pb, b.dt, std::int64_t(b.size()));
+        const SampleRange w = aligned_samples(s0, s1, pb, b.dt, std::int64_t(b.size()));
         for (std::int64_t k = w.k0; k <= w.k1; ++k) {
             if (!times_overlap(s0, s1, sample_time(pb, b.dt, k), sample_time(pb, b.dt, k + 1))) continue;
             const Sample& q = b.samples[std::size_t(k)];

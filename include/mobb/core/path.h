@@ -62,10 +62,10 @@ inline bool times_overlap(double a0, double a1, double b0, double b1) { return a
 /// Samples k0..k1 of an m-sample clip placed at p (sample spacing dt) that may overlap global time
 /// [s0, s1): the arithmetic window, two samples wider each side (times_overlap() decides); k0 > k1
 /// when none.
-struct TimeWindow {
+struct SampleRange {
     std::int64_t k0 = 0, k1 = -1;
 };
-inline TimeWindow aligned_window(double s0, double s1, const Placement& p, double dt, std::int64_t m) {
+inline SampleRange aligned_samples(double s0, double s1, const Placement& p, double dt, std::int64_t m) {
     const double lo = std::floor((s0 - p.t0) / dt) - 2, hi = std::ceil((s1 - p.t0) / dt) + 2;
     if (!(hi >= 0 && lo < double(m))) return {};
     return {std::max<std::int64_t>(0, std::int64_t(std::max(lo, -1.0))),
