@@ -15,10 +15,7 @@ std::vector<ClearanceSample> clearance(const Path& a, const Placement& pa, const
         const SampleRange w = aligned_samples(s0, s1, pb, b.dt, std::int64_t(b.size()));
         for (std::int64_t k = w.k0; k <= w.k1; ++k) {
             if (!times_overlap(s0, s1, sample_time(pb, b.dt, k), sample_time(pb, b.dt, k + 1))) continue;
-            const Sample& q = b.samples[std::size_t(k)];
-            const double dx = ta.apply_x(p.x, p.y) - tb.apply_x(q.x, q.y);
-            const double dy = ta.apply_y(p.x, p.y) - tb.apply_y(q.x, q.y);
-            const double gap = std::sqrt(dx * dx + dy * dy) - (p.r + q.r);
+            const double gap = samples_gap(ta, p, tb, b.samples[std::size_t(k)]);
             if (gap < best.gap) best.gap = gap, best.j = k;
         }
         if (best.j >= 0) out.push_back(best);

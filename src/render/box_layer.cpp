@@ -42,7 +42,6 @@ void BoxLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent
         frame.layers.all_levels != all_levels_ || frame.time_scale != time_scale_)
         rebuild(frame);
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     if (!translucent_pass)
         edges_.draw();
     else if (frame.layers.box_faces)

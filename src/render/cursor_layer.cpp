@@ -41,7 +41,6 @@ void CursorLayer::draw_posed(const Frame& frame, const DrawContext& ctx) {
         if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
             skeleton(posed_, *p.animation, p.up, p.frame, Rigid2::of(p.place), p.floor, frame, p.color);
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(2.0f);
     posed_.draw();
     glLineWidth(1.0f);
@@ -64,7 +63,6 @@ void CursorLayer::skeleton(Batch& out, const io::Animation& anim, io::UpAxis up,
 void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text) {
     if (ctx.bounds.empty || !(frame.layers.cursor || frame.layers.skeletons)) return;
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     const double ts = frame.time_scale, t = frame.cursor;
     const double x0 = std::floor(ctx.bounds.lo.x) - 1, x1 = std::ceil(ctx.bounds.hi.x) + 1;
     const double y0 = std::floor(ctx.bounds.lo.y) - 1, y1 = std::ceil(ctx.bounds.hi.y) + 1;

@@ -188,7 +188,6 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     if (!frame.layers.disks || frame.layers.disks_translucent != translucent_pass) return;
     stats_ = DiskStats{};
     ctx.use(*ctx.disk);
-    ctx.disk->set("u_mvp", ctx.view_proj);
     ctx.disk->set("u_time_scale", float(frame.time_scale));
     ctx.disk->set("u_grow", 1.0f);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
@@ -219,7 +218,6 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     if (disks.empty()) return;
     upload(marked_, disks);
     ctx.use(*ctx.disk);
-    ctx.disk->set("u_mvp", ctx.view_proj);
     ctx.disk->set("u_time_scale", float(time_scale));
     ctx.disk->set("u_dt", float(dt));
     ctx.disk->set("u_grow", grow);

@@ -50,7 +50,6 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
             text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center);
     }
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     lines_.draw();
 }
 

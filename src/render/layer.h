@@ -17,9 +17,10 @@ struct DrawContext {
     /// space-time (disks, boxes, prisms, the trace), everything for the grid, the cursor and text.
     float clip_lo = -1e30f, clip_hi = 1e30f;
 
-    /// Makes `p` current with this context's clip planes.
+    /// Makes `p` current with this context's matrix and clip planes (text then sets its own matrix).
     void use(const Program& p) const {
         p.use();
+        p.set("u_mvp", view_proj);
         p.set("u_clip_lo", clip_lo);
         p.set("u_clip_hi", clip_hi);
     }

@@ -51,7 +51,6 @@ void PrismLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
     }
     if (out.empty()) return;
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(1.5f);
     out.draw();
     glLineWidth(1.0f);
@@ -63,7 +62,6 @@ void PrismLayer::draw_on_top(const Frame& frame, const DrawContext& ctx) {
         if (p.on_top && p.ground.size() >= 2) add_edges(p, frame.time_scale, glm::vec4(p.color, 1.0f), top_);
     if (top_.empty()) return;
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     glLineWidth(3.0f);
     top_.draw();
     glLineWidth(1.0f);

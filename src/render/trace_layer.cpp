@@ -17,7 +17,6 @@ void TraceLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
     const TraceEvent* ev = current_event(frame);
     if (!ev) return;
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", ctx.view_proj);
     if (translucent_pass) return faces_.draw();
     const glm::vec3 color = outcome_color(ev->outcome);
     edges_.clear();

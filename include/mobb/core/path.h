@@ -80,4 +80,11 @@ inline bool samples_overlap(const Rigid2& ta, const Sample& a, const Rigid2& tb,
     return dx * dx + dy * dy < s * s;
 }
 
+/// How far apart the placed disks are, metres: |p_a - p_b| - (r_a + r_b), negative when they overlap
+/// (a measure for display; the decision is samples_overlap(), exact without the square root).
+inline double samples_gap(const Rigid2& ta, const Sample& a, const Rigid2& tb, const Sample& b) {
+    return std::hypot(ta.apply_x(a.x, a.y) - tb.apply_x(b.x, b.y), ta.apply_y(a.x, a.y) - tb.apply_y(b.x, b.y)) -
+           (a.r + b.r);
+}
+
 }  // namespace mobb
