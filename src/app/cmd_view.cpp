@@ -208,7 +208,7 @@ void add_view(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("view", "Open the interactive viewer on a scene or on clip files");
     auto a = std::make_shared<ViewArgs>();
     cmd->add_option("SCENE_OR_FILES", a->inputs,
-                    "A scene (.json) or BVH / glTF files (default: assets/scenes/default.json)");
+                    "A scene (.json) or clip files: BVH, glTF, FBX (default: assets/scenes/default.json)");
     // Not LoadArgs: here --frames is the number of frames to show, not the clips' frame range.
     cmd->add_option("--up", a->load.up, "Up axis of BVH files: y or z")->check(CLI::IsMember({"y", "z"}));
     cmd->add_option("--scale", a->load.scale, "Metres per file unit, or auto");
