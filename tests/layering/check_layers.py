@@ -5,7 +5,7 @@ Usage: check_layers.py ROOT            checks the tree at ROOT; prints one line 
        check_layers.py --self-test     checks a small tree with a known violation, which must be found
 
 Layers and what each may include (besides itself and the standard and third-party headers allowed
-below): the folder of a source file (src/LAYER, include/mobb/LAYER, bench/) gives its layer. A quoted
+below): the folder of a source file (src/LAYER, include/mobb/LAYER, bench/, python/) gives its layer. A quoted
 include "mobb/LAYER/x.h" names its layer; a quoted include "x.h" is looked up in the including file's
 folder, then in every layer's source folder (a name held by two layers is itself an error: the
 layer could not be told). Angle-bracket includes are checked against the headers a layer must not use
@@ -25,6 +25,7 @@ ALLOWED = {
     "viewer": {"render", "crowd", "io", "core", "util"},
     "app": {"viewer", "bench", "render", "crowd", "io", "core", "util"},
     "bench-tools": {"bench", "crowd", "io", "core", "util"},  # bench/: micro-benchmarks, callgrind driver
+    "python": {"crowd", "io", "core", "util"},  # python/: the Python module (pybind11)
 }
 GRAPHICS = ("glad/", "GL/", "GLFW/", "imgui", "stb_image", "stb/", "tiny_gltf")
 FORBIDDEN_SYSTEM = {
@@ -32,6 +33,7 @@ FORBIDDEN_SYSTEM = {
     "util": GRAPHICS,
     "io": ("glad/", "GL/", "GLFW/", "imgui", "stb"),
     "crowd": GRAPHICS,
+    "python": GRAPHICS,
     "bench": ("glad/", "GL/", "GLFW/", "imgui", "tiny_gltf"),
 }
 SOURCE = (".h", ".hpp", ".cpp", ".cc")
@@ -46,11 +48,13 @@ def layer_of(rel):
         return parts[2]
     if parts[0] == "bench":
         return "bench-tools"
+    if parts[0] == "python":
+        return "python"
     return None
 
 
 def sources(root):
-    for top in ("src", "include", "bench"):
+    for top in ("src", "include", "bench", "python"):
         for folder, _, files in os.walk(os.path.join(root, top)):
             for f in files:
                 if f.endswith(SOURCE):

@@ -1,0 +1,40 @@
+"""mobb.crowd against `mobb crowd --record`: the same summary counts and tracks."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+import mobb
+from conftest import SOURCE_DIR, run_cli
+
+GRAPH = os.path.join(SOURCE_DIR, "assets", "graphs", "cmu_locomotion.json")
+
+
+def test_crowd_equals_mobb_crowd(tmp_path, mobb_exe):
+    record = tmp_path / "record.json"
+    code, _, err = run_cli(mobb_exe, "crowd", "--quiet", "--graph", GRAPH, "--agents", "12", "--world", "12x12",
+                           "--seconds", "8", "--seed", "3", "--threads", "2", "--record", str(record))
+    assert code == 0, err
+    expected = json.loads(record.read_text())
+
+    run = mobb.crowd(GRAPH, agents=12, world=(12, 12), seconds=8, seed=3, threads=1)
+    summary = run["summary"]
+    assert {k: summary[k] for k in expected["summary"]} == expected["summary"]
+    assert summary["threads"] == 1 and summary["seconds"] > 0
+    assert run["metrics"] == expected["metrics"]
+    tracks = run["tracks"]
+    assert tracks.shape == (12, expected["frames"], 4) and tracks.dtype == np.float64
+    np.testing.assert_array_equal(tracks, np.array([t["samples"] for t in expected["tracks"]]))
+    assert run["dt"] == expected["dt"]
+    for clips, track in zip(run["clips"], expected["tracks"]):
+        np.testing.assert_array_equal(clips[:, 0], [c["clip"] for c in track["clips"]])
+        np.testing.assert_array_equal(clips[:, 2:], [c["place"] for c in track["clips"]])
+    assert summary["queries"] > 0 and summary["choice_points"] > 0
+
+
+def test_crowd_scenario_refuses_its_own_options():
+    folder = os.path.join(SOURCE_DIR, "assets", "scenarios")
+    scenario = os.path.join(folder, sorted(f for f in os.listdir(folder) if f.endswith(".json"))[0])
+    with pytest.raises(ValueError, match="agents does not go with scenario"):
+        mobb.crowd(scenario=scenario, agents=3)
