@@ -9,7 +9,19 @@
 
 namespace mobb::viewer {
 
-enum class Command : std::uint8_t { TogglePlay, StepForward, StepBack, FrameAll, TopView, SideView, ToggleHelp };
+enum class Command : std::uint8_t {
+    TogglePlay,
+    StepForward,
+    StepBack,
+    FirstStep,
+    LastStep,
+    FrameAll,
+    TopView,
+    SideView,
+    OpenFiles,
+    ClearPicks,
+    ToggleHelp,
+};
 
 struct Shortcut {
     int key = 0;          ///< GLFW key code
