@@ -211,7 +211,7 @@ void add_render(CLI::App& app, int& exit_code) {
 struct ViewArgs {
     std::vector<std::string> inputs;
     io::LoadOptionText load;
-    std::string screenshot, crowd;
+    std::string screenshot, crowd, save_state;
     int frames = 0, width = 1280, height = 800;
     TreeArgs tree;
 };
@@ -234,6 +234,11 @@ void show(State& s, const ViewArgs& a, const std::string& what, const std::strin
     w.settings_key = key;
     viewer::run_window(s, w);
     if (!a.screenshot.empty()) out << a.screenshot << "\n";
+    if (!a.save_state.empty()) {  // the scene as the window left it: clips, placements, step, camera
+        viewer::sync_scene(s);
+        viewer::save_scene(s.scene, a.save_state);
+        out << a.save_state << "\n";
+    }
 }
 
 void add_view(CLI::App& app, int& exit_code) {
@@ -249,6 +254,8 @@ void add_view(CLI::App& app, int& exit_code) {
     cmd->add_option("--frames", a->frames, "Close after N frames (with --screenshot: smoke tests)")
         ->check(CLI::Range(1, 1 << 30));
     cmd->add_option("--screenshot", a->screenshot, "Save the last frame to this PNG");
+    cmd->add_option("--save-state", a->save_state,
+                    "When the window closes, save the scene as it was left (clips, placements, step, camera)");
     cmd->add_option("--crowd", a->crowd, "Show a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--width", a->width, "Window width")->check(CLI::Range(16, 8192));
     cmd->add_option("--height", a->height, "Window height")->check(CLI::Range(16, 8192));
@@ -256,6 +263,7 @@ void add_view(CLI::App& app, int& exit_code) {
         exit_code = guarded([&](std::ostream& out) {
             if (!a->crowd.empty()) {
                 if (!a->inputs.empty()) throw InputError("view: --crowd takes no scene or clip files");
+                if (!a->save_state.empty()) throw InputError("view: --save-state saves scenes, not crowds");
                 State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
                 show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), out);
                 return;

@@ -63,6 +63,7 @@ struct Ui {
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
     int request_view = 0;    ///< 1 top, 2 side
+    bool request_quit = false;
     bool show_help = false;  ///< the Shortcuts window (F1 or ?)
     bool reveal_step = true;  ///< the recursion view unfolds to the shown step once
     float menu_height = 0;    ///< the main menu bar's height (panels start below it)

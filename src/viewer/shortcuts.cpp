@@ -17,10 +17,17 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_S, false, false, Command::SideView, "S", "view from the side"},
         {GLFW_KEY_O, false, false, Command::OpenFiles, "O", "open clip files (the Open panel)"},
         {GLFW_KEY_ESCAPE, false, false, Command::ClearPicks, "Esc", "clear the picked disks (Inspector)"},
+        {GLFW_KEY_Q, false, false, Command::Quit, "Q", "quit (the window's settings are kept)"},
         {GLFW_KEY_F1, false, false, Command::ToggleHelp, "F1", "show / hide this window"},
         {GLFW_KEY_SLASH, true, false, Command::ToggleHelp, "Shift+/ (?)", "show / hide this window"},
     };
     return table;
+}
+
+const Shortcut* find_shortcut(int key, bool shift, bool repeat) {
+    for (const Shortcut& k : shortcuts())
+        if (k.key == key && k.shift == shift && (!repeat || k.repeat)) return &k;
+    return nullptr;
 }
 
 const std::vector<Gesture>& gestures() {
@@ -47,6 +54,7 @@ void run_command(Command command, State& s, Ui& ui) {
             ui.pick = ui.ruler = {};
             ui.picked_events.clear();
             break;
+        case Command::Quit: ui.request_quit = true; break;
         case Command::FrameAll: ui.request_frame_all = true; break;
         case Command::TopView: ui.request_view = 1; break;
         case Command::SideView: ui.request_view = 2; break;

@@ -20,6 +20,7 @@ enum class Command : std::uint8_t {
     SideView,
     OpenFiles,
     ClearPicks,
+    Quit,
     ToggleHelp,
 };
 
@@ -32,6 +33,10 @@ struct Shortcut {
     const char* what = "";
 };
 const std::vector<Shortcut>& shortcuts();
+
+/// The shortcut a key event runs: `repeat` for the window system's auto-repeat of a held key (only
+/// shortcuts marked repeat answer it). Null when none.
+const Shortcut* find_shortcut(int key, bool shift, bool repeat);
 
 /// A mouse gesture over the 3D view (handled by the window's mouse code), for the Shortcuts window.
 struct Gesture {

@@ -79,11 +79,38 @@ void mouse(State& s, Ui& ui, Input& in) {
     if (!held) in.drag = Drag::None;
 }
 
-void keyboard(State& s, Ui& ui) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureKeyboard) return;
-    for (const Shortcut& k : shortcuts())
-        if (k.shift == io.KeyShift && ImGui::IsKeyPressed(k.key, k.repeat)) run_command(k.command, s, ui);
+/// What GLFW's callbacks collected since the last frame (the window's user pointer). Keys come from
+/// the callback rather than ImGui's per-frame key state so that a press released within one slow
+/// frame still counts, and each press counts once.
+struct Events {
+    struct Key {
+        int key;
+        bool shift, repeat;
+    };
+    std::vector<Key> keys;
+    std::vector<std::string> dropped;
+};
+
+void on_key(GLFWwindow* window, int key, int, int action, int mods) {
+    auto* events = static_cast<Events*>(glfwGetWindowUserPointer(window));
+    if (events && action != GLFW_RELEASE)
+        events->keys.push_back({key, (mods & GLFW_MOD_SHIFT) != 0, action == GLFW_REPEAT});
+}
+
+/// GLFW's drop callback: the paths are opened on the next frame.
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+    auto* events = static_cast<Events*>(glfwGetWindowUserPointer(window));
+    for (int k = 0; events && k < count; ++k) events->dropped.emplace_back(paths[k]);
+}
+
+void keyboard(State& s, Ui& ui, Events& events) {
+    const bool typing = ImGui::GetIO().WantCaptureKeyboard;
+    for (const Events::Key& k : events.keys)
+        if (const Shortcut* sc = typing ? nullptr : find_shortcut(k.key, k.shift, k.repeat))
+            run_command(sc->command, s, ui);
+    events.keys.clear();
+    ui.dropped.insert(ui.dropped.end(), events.dropped.begin(), events.dropped.end());
+    events.dropped.clear();
 }
 
 void apply_requests(State& s, Ui& ui, float aspect) {
@@ -92,12 +119,6 @@ void apply_requests(State& s, Ui& ui, float aspect) {
     if (ui.request_view != 0 || ui.request_frame_all) frame_all(s, aspect);
     ui.request_view = 0;
     ui.request_frame_all = false;
-}
-
-/// GLFW's drop callback: the paths go to the Ui (the window's user pointer), opened on the next frame.
-void on_drop(GLFWwindow* window, int count, const char** paths) {
-    auto* ui = static_cast<Ui*>(glfwGetWindowUserPointer(window));
-    for (int k = 0; ui && k < count; ++k) ui->dropped.emplace_back(paths[k]);
 }
 
 /// ImGui's ini in the user's config folder, with the panels' open flags and the camera of `key` in it.
@@ -134,6 +155,10 @@ void run_window(State& s, const WindowOptions& options) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // never imgui.ini in the working folder
     apply_style();
+    Events events;
+    glfwSetWindowUserPointer(window.handle(), &events);
+    glfwSetKeyCallback(window.handle(), on_key);  // before ImGui's, which calls it after its own
+    glfwSetDropCallback(window.handle(), on_drop);
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     {
@@ -144,17 +169,17 @@ void run_window(State& s, const WindowOptions& options) {
         const std::string ini = settings_file();
         ViewSettings settings;
         load_settings(s, ui, settings, ini, options.settings_key);
-        glfwSetWindowUserPointer(window.handle(), &ui);
-        glfwSetDropCallback(window.handle(), on_drop);
-        for (int frame = 1; !window.should_close(); ++frame) {
+        for (int frame = 1;; ++frame) {
             glfwPollEvents();
+            // The last frame: closed, quit (Q), or the frame count reached; drawn, then saved if asked.
+            const bool last = window.should_close() || ui.request_quit || (options.frames > 0 && frame >= options.frames);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             const glm::ivec2 size = window.window_size(), fb = window.framebuffer_size();
             ui.window_size = size;
             mouse(s, ui, input);
-            keyboard(s, ui);
+            keyboard(s, ui, events);
             update_playback(s, ui, ImGui::GetIO().DeltaTime);
             draw_panels(s, ui);
             apply_requests(s, ui, float(size.x) / float(std::max(size.y, 1)));
@@ -163,7 +188,7 @@ void run_window(State& s, const WindowOptions& options) {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             renderer.draw(frame_of(s), s.camera, fb.x, fb.y);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            if (options.frames > 0 && frame >= options.frames) {
+            if (last) {
                 if (!options.screenshot.empty()) {
                     glFinish();
                     glReadBuffer(GL_BACK);
@@ -175,11 +200,11 @@ void run_window(State& s, const WindowOptions& options) {
         }
         if (!ini.empty()) ImGui::SaveIniSettingsToDisk(ini.c_str());
         ImGui::GetIO().IniFilename = nullptr;  // `ini` goes out of scope before DestroyContext
-        glfwSetWindowUserPointer(window.handle(), nullptr);
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
+    glfwSetWindowUserPointer(window.handle(), nullptr);
 }
 
 }  // namespace mobb::viewer

@@ -67,9 +67,10 @@ void check_image(const std::string& name, const render::Image& actual) {
     const Diff diff = compare(expected, actual, tolerance);
     if (!diff.matches(tolerance)) {
         const std::string base = write_failure(MOBB_TEST_OUT, c.name, expected, actual, diff);
-        FAIL() << c.name << ": " << diff.differing << " pixels differ (" << diff.fraction * 100
-               << "%, largest channel difference " << diff.largest << "); see " << base
-               << ".{expected,actual,diff}.png";
+        FAIL() << c.name << ": " << diff.differing << " pixels differ (" << diff.fraction * 100 << "%, allowed "
+               << tolerance.fraction * 100 << "%; largest channel difference " << diff.largest << ", hard limit "
+               << tolerance.hard << "); see " << base << ".expected.png, " << base << ".actual.png, " << base
+               << ".diff.png";
     }
 }
 
@@ -348,6 +349,7 @@ TEST(Comparator, Tolerances) {
     EXPECT_EQ(d.largest, 100);
     EXPECT_FALSE(d.matches({8, 0.05}));
     EXPECT_TRUE(d.matches({8, 0.0625}));
+    EXPECT_FALSE(d.matches({8, 0.0625, 99}));  // one pixel past the hard limit fails alone
     EXPECT_EQ(d.image.at(2, 2)[0], 255);
     render::Image c{2, 4, std::vector<std::uint8_t>(32, 100)};
     EXPECT_FALSE(compare(a, c, {255, 1.0}).matches({255, 1.0}));  // sizes differ
