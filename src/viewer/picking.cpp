@@ -1,7 +1,10 @@
 #include "picking.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <glm/geometric.hpp>
 
 namespace mobb::viewer {
 
@@ -53,6 +56,30 @@ Pick pick_disk(const State& s, const render::Ray& ray) {
         }
     }
     return best;
+}
+
+std::optional<DiskInfo> disk_of(const State& s, const Pick& p) {
+    if (p.clip < 0 || p.clip >= int(s.clips.size())) return std::nullopt;
+    const Path& path = s.clips[std::size_t(p.clip)].tree->path();
+    if (p.sample < 0 || p.sample >= int(path.size())) return std::nullopt;
+    const Placement& place = s.places[std::size_t(p.clip)];
+    const Sample& smp = path.samples[std::size_t(p.sample)];
+    const Rigid2 m = Rigid2::of(place);
+    return DiskInfo{{m.apply_x(smp.x, smp.y), m.apply_y(smp.x, smp.y)},
+                    sample_time(place, path.dt, p.sample),
+                    sample_time(place, path.dt, p.sample + 1),
+                    smp.r};
+}
+
+std::optional<Ruler> measure(const State& s, const Pick& a, const Pick& b) {
+    const auto da = disk_of(s, a), db = disk_of(s, b);
+    if (!da || !db) return std::nullopt;
+    Ruler r;
+    r.distance = glm::length(da->centre - db->centre);
+    r.time_gap = std::max({0.0, db->t0 - da->t1, da->t0 - db->t1});
+    r.radii = da->r + db->r;
+    r.clearance = r.distance - r.radii;
+    return r;
 }
 
 std::optional<glm::dvec2> ground_point(const render::Ray& ray, double height) {
