@@ -59,6 +59,7 @@ struct Ui {
     std::vector<std::string> data_files;  ///< the Open panel's listing of the data folder (relative names)
     bool data_listed = false;
     std::string open_filter;
+    std::string open_status;  ///< the last file opened, or why it could not be
     std::string save_path = "scene.json";
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
@@ -83,7 +84,7 @@ void recursion_panel(State& state, Ui& ui);
 void outcome_strip(State& state, Ui& ui);  ///< under the Trace panel's step slider
 void inspector_panel(State& state, Ui& ui);
 void open_panel(State& state, Ui& ui);
-/// Opens the files dropped on the window; errors go to ui.status.
+/// Opens the files dropped on the window; what happened goes to ui.open_status.
 void open_dropped(State& state, Ui& ui);
 
 /// Moves to trace step k (clamped) and, when following, puts the time cursor on it.

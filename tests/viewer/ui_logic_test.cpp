@@ -136,6 +136,20 @@ TEST(OpenFiles, FirstFileBecomesTheQuerysClip) {
     EXPECT_TRUE(s.queried);
 }
 
+/// What GLFW's drop callback leaves in the Ui: opened on the next frame, a bad file named.
+TEST(OpenFiles, DroppedFilesOpenAndABadOneSaysWhy) {
+    MOBB_NEEDS_MOCAP();
+    viewer::State s = load("walks.json");
+    const std::size_t before = s.clips.size();
+    viewer::Ui ui;
+    ui.dropped = {io::data_dir() + "/cmu/005_01.bvh", "/no/such/file.bvh"};
+    viewer::open_dropped(s, ui);
+    EXPECT_TRUE(ui.dropped.empty());
+    EXPECT_EQ(s.clips.size(), before + 1);
+    EXPECT_NE(ui.open_status.find("/no/such/file.bvh"), std::string::npos) << ui.open_status;
+    EXPECT_TRUE(ui.panels.open);
+}
+
 TEST(Settings, CameraLineRoundTrips) {
     render::Camera c;
     c.target = {1.5f, -2.25f, 3.0f};
