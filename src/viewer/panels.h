@@ -78,6 +78,9 @@ void draw_panels(State& state, Ui& ui);
 /// A disk clicked in the 3D view: it becomes the pick, the previous pick the ruler's other end, and
 /// when it belongs to the query's clips the trace goes to the last event whose node holds it.
 void click_disk(State& state, Ui& ui, const Pick& pick);
+/// A click on the query's box `node` of clip `clip` (away from any disk): its events are selected and
+/// the trace goes to the last of them.
+void click_box(State& state, Ui& ui, int clip, std::int32_t node);
 
 // One file each (panels.cpp draws them in order).
 void recursion_panel(State& state, Ui& ui);

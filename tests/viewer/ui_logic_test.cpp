@@ -2,6 +2,8 @@
 // ruler, opening files, the settings file's camera lines, and the layout check itself.
 #include <algorithm>
 
+#include <glm/matrix.hpp>
+
 #include <gtest/gtest.h>
 
 #include "headless.h"
@@ -10,6 +12,7 @@
 #include "recursion.h"
 #include "render_test_util.h"
 #include "scene.h"
+#include "space.h"
 #include "state.h"
 #include "view_settings.h"
 
@@ -79,6 +82,38 @@ TEST(Recursion, EventsHoldingASample) {
     ASSERT_FALSE(held.empty());
     EXPECT_EQ(held.front(), 0);  // the root holds every sample
     for (int e : held) EXPECT_EQ(a.nodes()[std::size_t(s.trace[std::size_t(e)].node_a)].first, 0u);
+}
+
+/// A ray straight down through the middle of clip A's root box, from above everything: the box hit is
+/// one the boxes layer draws, the ray's entry point lies on it, and a click selects that node's events.
+TEST(Picking, BoxOfTheQueryUnderARay) {
+    viewer::State s = load("walks.json");
+    s.scene.layers.boxes = true;
+    s.scene.layers.level = 0;
+    const Obb3 root = transformed(s.clips[0].tree->box3(s.clips[0].tree->nodes()[0]),
+                                  SpaceTimeRigid::of(s.places[0]));
+    const glm::vec3 top = render::to_gl(root.center.x, root.center.y, 1e3, s.scene.time_scale);
+    const render::Ray ray{top, glm::vec3(0, -1, 0)};
+    const viewer::BoxPick b = viewer::pick_box(s, ray);
+    ASSERT_GE(b.node, 0);
+    const Tree& tree = *s.clips[std::size_t(b.clip)].tree;
+    EXPECT_EQ(tree.nodes()[std::size_t(b.node)].level, 0);
+    // The entry point, back in space-time, lies on the box: inside its slabs up to rounding.
+    const Obb3 hit = transformed(tree.box3(tree.nodes()[std::size_t(b.node)]),
+                                 SpaceTimeRigid::of(s.places[std::size_t(b.clip)]));
+    const glm::dvec3 p(root.center.x, root.center.y, (double(top.y) - b.distance) / s.scene.time_scale);
+    const glm::dvec3 local = glm::transpose(hit.axes) * (p - hit.center);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::fabs(local[i]), hit.half[i] + 1e-4) << i;
+    s.scene.layers.boxes = false;
+    EXPECT_EQ(viewer::pick_box(s, ray).node, -1);
+    viewer::Ui ui;
+    viewer::click_box(s, ui, b.clip, b.node);
+    ASSERT_FALSE(ui.picked_events.empty());
+    for (int e : ui.picked_events) {
+        const TraceEvent& ev = s.trace[std::size_t(e)];
+        EXPECT_EQ(b.clip == s.scene.query_a ? ev.node_a : ev.node_b, b.node);
+    }
+    EXPECT_EQ(s.scene.step, ui.picked_events.back());
 }
 
 TEST(Inspector, TwoClicksMeasureAndSurviveSteps) {
