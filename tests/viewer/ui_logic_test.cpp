@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "crowd_view.h"
 #include "headless.h"
 #include "panels.h"
 #include "picking.h"
@@ -183,6 +184,21 @@ TEST(OpenFiles, DroppedFilesOpenAndABadOneSaysWhy) {
     EXPECT_EQ(s.clips.size(), before + 1);
     EXPECT_NE(ui.open_status.find("/no/such/file.bvh"), std::string::npos) << ui.open_status;
     EXPECT_TRUE(ui.panels.open);
+}
+
+/// A crowd's clips are its agents: opening a file there is refused by name and changes nothing.
+TEST(OpenFiles, RefusedInACrowdRecord) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty());
+    viewer::State s = viewer::load_crowd_state(record, 1.0f);
+    const std::size_t before = s.clips.size();
+    try {
+        viewer::add_clip_file(s, "/any/walk.bvh");
+        FAIL() << "opened a file into a crowd";
+    } catch (const io::LoadError& e) {
+        EXPECT_NE(std::string(e.what()).find("/any/walk.bvh"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.clips.size(), before);
 }
 
 TEST(Settings, CameraLineRoundTrips) {
