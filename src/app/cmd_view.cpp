@@ -156,6 +156,11 @@ void add_render(CLI::App& app, int& exit_code) {
             exit_code = kUsage;
             return;
         }
+        if (!a->ui && (!a->picks.empty() || !a->panels.empty() || a->help)) {
+            std::cerr << "render: --pick, --panel and --shortcuts go with --ui\n";
+            exit_code = kUsage;
+            return;
+        }
         if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0 || a->top)) {
             std::cerr << "render: --time, --top, --choice, --candidate and --query go with --crowd\n";
             exit_code = kUsage;

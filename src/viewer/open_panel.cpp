@@ -35,9 +35,10 @@ std::vector<std::string> list_data_files(const std::string& dir) {
 void open_file(State& s, Ui& ui, const std::string& file) {
     try {
         const int k = add_clip_file(s, file);
-        ui.status = "opened " + s.clips[std::size_t(k)].name + " as clip " + std::to_string(k);
+        ui.open_status = "opened " + s.clips[std::size_t(k)].name + " as clip " + std::to_string(k);
     } catch (const std::exception& e) {
-        ui.status = e.what();
+        ui.open_status = e.what();
+        ui.panels.open = true;  // a dropped file that failed says why
     }
 }
 
@@ -75,7 +76,7 @@ void open_panel(State& s, Ui& ui) {
         if (ImGui::Selectable(f.c_str())) open_file(s, ui, dir + "/" + f);
     }
     ImGui::EndChild();
-    if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
+    if (!ui.open_status.empty()) ImGui::TextWrapped("%s", ui.open_status.c_str());
     ImGui::End();
 }
 

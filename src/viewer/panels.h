@@ -59,6 +59,7 @@ struct Ui {
     std::vector<std::string> data_files;  ///< the Open panel's listing of the data folder (relative names)
     bool data_listed = false;
     std::string open_filter;
+    std::string open_status;  ///< the last file opened, or why it could not be
     std::string save_path = "scene.json";
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
@@ -77,13 +78,16 @@ void draw_panels(State& state, Ui& ui);
 /// A disk clicked in the 3D view: it becomes the pick, the previous pick the ruler's other end, and
 /// when it belongs to the query's clips the trace goes to the last event whose node holds it.
 void click_disk(State& state, Ui& ui, const Pick& pick);
+/// A click on the query's box `node` of clip `clip` (away from any disk): its events are selected and
+/// the trace goes to the last of them.
+void click_box(State& state, Ui& ui, int clip, std::int32_t node);
 
 // One file each (panels.cpp draws them in order).
 void recursion_panel(State& state, Ui& ui);
 void outcome_strip(State& state, Ui& ui);  ///< under the Trace panel's step slider
 void inspector_panel(State& state, Ui& ui);
 void open_panel(State& state, Ui& ui);
-/// Opens the files dropped on the window; errors go to ui.status.
+/// Opens the files dropped on the window; what happened goes to ui.open_status.
 void open_dropped(State& state, Ui& ui);
 
 /// Moves to trace step k (clamped) and, when following, puts the time cursor on it.

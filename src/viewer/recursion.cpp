@@ -73,4 +73,11 @@ std::vector<int> events_holding(const Trace& trace, const Tree& tree, int side, 
     return out;
 }
 
+std::vector<int> events_of_node(const Trace& trace, int side, std::int32_t node) {
+    std::vector<int> out;
+    for (int e = 0; e < int(trace.size()); ++e)
+        if ((side == 0 ? trace[std::size_t(e)].node_a : trace[std::size_t(e)].node_b) == node) out.push_back(e);
+    return out;
+}
+
 }  // namespace mobb::viewer

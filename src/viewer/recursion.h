@@ -32,4 +32,7 @@ Recursion recursion_of(const Trace& trace, const Tree& a, const Tree& b);
 /// Events whose node of clip side `side` (0 = A, 1 = B) holds `sample`, in trace order.
 std::vector<int> events_holding(const Trace& trace, const Tree& tree, int side, std::int64_t sample);
 
+/// Events on node `node` of clip side `side` (0 = A, 1 = B), in trace order.
+std::vector<int> events_of_node(const Trace& trace, int side, std::int32_t node);
+
 }  // namespace mobb::viewer

@@ -137,4 +137,11 @@ void click_disk(State& s, Ui& ui, const Pick& p) {
     if (!ui.picked_events.empty()) go_to_step(s, ui, ui.picked_events.back());
 }
 
+void click_box(State& s, Ui& ui, int clip, std::int32_t node) {
+    const int side = clip == s.scene.query_a ? 0 : clip == s.scene.query_b ? 1 : -1;
+    if (side < 0) return;
+    ui.picked_events = events_of_node(s.trace, side, node);
+    if (!ui.picked_events.empty()) go_to_step(s, ui, ui.picked_events.back());
+}
+
 }  // namespace mobb::viewer

@@ -36,6 +36,7 @@ const std::vector<Gesture>& gestures() {
         {"Shift+drag, middle drag", "pan"},
         {"wheel", "zoom"},
         {"click", "pick a disk (Inspector; two picks: ruler), select its trace events"},
+        {"click a box", "(away from disks) select the trace events on its node"},
         {"drop files", "open BVH / GLB files as clips"},
         {"Ctrl+drag", "move a clip on its ground plane (the query reruns)"},
     };

@@ -57,6 +57,8 @@ State load_state(const Scene& scene, float aspect) {
 }
 
 int add_clip_file(State& s, const std::string& file) {
+    // A crowd's clips are its agents, indexed by their tracks: no room for one more.
+    if (s.crowd) throw io::LoadError(file + ": clip files open into scenes, not into a crowd record");
     SceneClip c;
     c.file = io::data_relative(std::filesystem::absolute(file).string());
     LoadedClip loaded = load_clip(c, 0);

@@ -36,6 +36,16 @@ render::Ray mouse_ray(const State& s, const ImGuiIO& io) {
     return s.camera.ray(io.MousePos.x, io.MousePos.y, io.DisplaySize.x, io.DisplaySize.y);
 }
 
+/// A click in the 3D view: a disk picks it; away from disks, a box of the query selects its events.
+void click(State& s, Ui& ui, const ImGuiIO& io) {
+    const render::Ray ray = mouse_ray(s, io);
+    double disk = 0;
+    const Pick p = pick_disk(s, ray, &disk);
+    if (p.clip >= 0) return click_disk(s, ui, p);
+    const BoxPick b = pick_box(s, ray);
+    if (b.node >= 0) click_box(s, ui, b.clip, b.node);
+}
+
 void mouse(State& s, Ui& ui, Input& in) {
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 d = io.MouseDelta;
@@ -74,8 +84,7 @@ void mouse(State& s, Ui& ui, Input& in) {
             }
         }
     }
-    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && in.drag == Drag::Orbit && in.travel < 4)
-        click_disk(s, ui, pick_disk(s, mouse_ray(s, io)));
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && in.drag == Drag::Orbit && in.travel < 4) click(s, ui, io);
     if (!held) in.drag = Drag::None;
 }
 

@@ -296,6 +296,19 @@ TEST(Golden, CrowdQueryOpened) {
     check_image("crowd_query", viewer::render_headless(s, {1280, 720, true}));
 }
 
+/// Moves agent 1 onto agent 0 at a third of the run (one contact); returns that frame.
+std::size_t add_contact(State& s) {
+    const auto& r = s.crowd->record;
+    const auto frame = std::size_t(r.frames / 3);
+    auto& moved = s.crowd->record.tracks[1].samples[frame];
+    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
+    moved[2] = r.tracks[0].samples[frame][2];
+    s.crowd->contacts = crowd::frame_contacts(r);
+    s.crowd->marks = viewer::timeline_marks(*s.crowd);
+    ++s.revision;
+    return frame;
+}
+
 /// A scenario record (doorway two-way: walls, the wall with its door, two goals) in space-time, and the
 /// same with a contact drawn at the cursor: the record's two agents moved onto each other at one frame.
 TEST(Golden, CrowdScenario) {
@@ -312,17 +325,27 @@ TEST(Golden, CrowdScenario) {
     EXPECT_LT(2 * s.scene.window, double(r.frames) * r.dt);
     check_image("crowd_scenario", viewer::render_headless(s, {640, 480, false}));
     // Agent 1 moved onto agent 0 at one frame: both disks ringed red there.
-    const auto frame = std::size_t(r.frames / 3);
-    auto& moved = s.crowd->record.tracks[1].samples[frame];
-    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
-    moved[2] = r.tracks[0].samples[frame][2];
-    s.crowd->contacts = crowd::frame_contacts(r);
+    const std::size_t frame = add_contact(s);
     ASSERT_EQ(s.crowd->contacts.size(), 1u);
-    ++s.revision;
     s.scene.cursor = (double(frame) + 0.5) * r.dt;
     s.camera.top();
     viewer::frame_all(s, 640.0f / 480.0f);
     check_image("crowd_scenario_contact", viewer::render_headless(s, {640, 480, false}));
+}
+
+/// The Crowd panel's plots of fallbacks and contacts over time (ImGui's PlotHistogram) at 1280x720:
+/// the one contact of add_contact() stands as one bar a third of the way along.
+TEST(Golden, CrowdEventPlots) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty()) << "mobb crowd --scenario failed";
+    State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
+    s.scene.layers.skeletons = false;  // no mocap needed
+    add_contact(s);
+    ASSERT_FALSE(s.crowd->marks.empty());
+    s.scene.cursor = 0.5 * double(s.crowd->record.frames) * s.crowd->record.dt;
+    std::vector<std::string> cut;
+    check_image("crowd_plots", viewer::render_headless(s, {1280, 720, true, false, nullptr, &cut}));
+    for (const std::string& line : cut) ADD_FAILURE() << line;
 }
 
 /// The comparator must catch a real change: the level-1 scene with one more box level drawn.

@@ -2,14 +2,18 @@
 // ruler, opening files, the settings file's camera lines, and the layout check itself.
 #include <algorithm>
 
+#include <glm/matrix.hpp>
+
 #include <gtest/gtest.h>
 
+#include "crowd_view.h"
 #include "headless.h"
 #include "panels.h"
 #include "picking.h"
 #include "recursion.h"
 #include "render_test_util.h"
 #include "scene.h"
+#include "space.h"
 #include "state.h"
 #include "view_settings.h"
 
@@ -81,6 +85,38 @@ TEST(Recursion, EventsHoldingASample) {
     for (int e : held) EXPECT_EQ(a.nodes()[std::size_t(s.trace[std::size_t(e)].node_a)].first, 0u);
 }
 
+/// A ray straight down through the middle of clip A's root box, from above everything: the box hit is
+/// one the boxes layer draws, the ray's entry point lies on it, and a click selects that node's events.
+TEST(Picking, BoxOfTheQueryUnderARay) {
+    viewer::State s = load("walks.json");
+    s.scene.layers.boxes = true;
+    s.scene.layers.level = 0;
+    const Obb3 root = transformed(s.clips[0].tree->box3(s.clips[0].tree->nodes()[0]),
+                                  SpaceTimeRigid::of(s.places[0]));
+    const glm::vec3 top = render::to_gl(root.center.x, root.center.y, 1e3, s.scene.time_scale);
+    const render::Ray ray{top, glm::vec3(0, -1, 0)};
+    const viewer::BoxPick b = viewer::pick_box(s, ray);
+    ASSERT_GE(b.node, 0);
+    const Tree& tree = *s.clips[std::size_t(b.clip)].tree;
+    EXPECT_EQ(tree.nodes()[std::size_t(b.node)].level, 0);
+    // The entry point, back in space-time, lies on the box: inside its slabs up to rounding.
+    const Obb3 hit = transformed(tree.box3(tree.nodes()[std::size_t(b.node)]),
+                                 SpaceTimeRigid::of(s.places[std::size_t(b.clip)]));
+    const glm::dvec3 p(root.center.x, root.center.y, (double(top.y) - b.distance) / s.scene.time_scale);
+    const glm::dvec3 local = glm::transpose(hit.axes) * (p - hit.center);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::fabs(local[i]), hit.half[i] + 1e-4) << i;
+    s.scene.layers.boxes = false;
+    EXPECT_EQ(viewer::pick_box(s, ray).node, -1);
+    viewer::Ui ui;
+    viewer::click_box(s, ui, b.clip, b.node);
+    ASSERT_FALSE(ui.picked_events.empty());
+    for (int e : ui.picked_events) {
+        const TraceEvent& ev = s.trace[std::size_t(e)];
+        EXPECT_EQ(b.clip == s.scene.query_a ? ev.node_a : ev.node_b, b.node);
+    }
+    EXPECT_EQ(s.scene.step, ui.picked_events.back());
+}
+
 TEST(Inspector, TwoClicksMeasureAndSurviveSteps) {
     viewer::State s = load("walks.json");
     viewer::Ui ui;
@@ -134,6 +170,35 @@ TEST(OpenFiles, FirstFileBecomesTheQuerysClip) {
     EXPECT_EQ(s.scene.query_a, 0);
     EXPECT_EQ(s.scene.query_b, 1);
     EXPECT_TRUE(s.queried);
+}
+
+/// What GLFW's drop callback leaves in the Ui: opened on the next frame, a bad file named.
+TEST(OpenFiles, DroppedFilesOpenAndABadOneSaysWhy) {
+    MOBB_NEEDS_MOCAP();
+    viewer::State s = load("walks.json");
+    const std::size_t before = s.clips.size();
+    viewer::Ui ui;
+    ui.dropped = {io::data_dir() + "/cmu/005_01.bvh", "/no/such/file.bvh"};
+    viewer::open_dropped(s, ui);
+    EXPECT_TRUE(ui.dropped.empty());
+    EXPECT_EQ(s.clips.size(), before + 1);
+    EXPECT_NE(ui.open_status.find("/no/such/file.bvh"), std::string::npos) << ui.open_status;
+    EXPECT_TRUE(ui.panels.open);
+}
+
+/// A crowd's clips are its agents: opening a file there is refused by name and changes nothing.
+TEST(OpenFiles, RefusedInACrowdRecord) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty());
+    viewer::State s = viewer::load_crowd_state(record, 1.0f);
+    const std::size_t before = s.clips.size();
+    try {
+        viewer::add_clip_file(s, "/any/walk.bvh");
+        FAIL() << "opened a file into a crowd";
+    } catch (const io::LoadError& e) {
+        EXPECT_NE(std::string(e.what()).find("/any/walk.bvh"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.clips.size(), before);
 }
 
 TEST(Settings, CameraLineRoundTrips) {
