@@ -17,6 +17,7 @@
 
 #include "assimp_keys.h"
 #include "common.h"
+#include "fbx_connections.h"
 
 namespace mobb::io::assimp {
 namespace {
@@ -102,6 +103,8 @@ private:
         importer_.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
         std::string hint = std::filesystem::path(file_).extension().string();
         if (!hint.empty()) hint.erase(0, 1);
+        if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))
+            fail("FBX connections form a cycle through object " + std::to_string(*id));
         const aiScene* scene = nullptr;
         std::string error;
         try {

@@ -180,6 +180,14 @@ TEST_F(Fbx, MalformedFilesAreOneLineErrors) {
         EXPECT_TRUE(one_line(message)) << message;
     }
     for (const std::string& m : {skeleton_error}) EXPECT_TRUE(one_line(m)) << m;
+
+    // A model connected to itself: Assimp 5.2 would recurse until the stack overflows.
+    std::string looped = test::ascii_fbx(walk({0, 1 / 30.0}, {0, 0.1}));
+    const std::string link = "C: \"OO\",1002,1001";
+    ASSERT_NE(looped.find(link), std::string::npos);
+    looped.replace(looped.find(link), link.size(), "C: \"OO\",1002,1002");
+    const std::string cycle = dir_.write("cycle.fbx", looped);
+    EXPECT_EQ(test::load_error([&] { load_clip(cycle); }), cycle + ": FBX connections form a cycle through object 1002");
 }
 
 TEST(AssimpReader, ReadsFbxAndColladaButNotText) {
@@ -291,7 +299,7 @@ TEST(RealFbxOptions, AnimationRootFramesAndFps) {
               file + ": no animation named 'Take 001' (the file has 'Scene')");
 }
 
-TEST(RealFbxErrors, TruncatedCopiesAreOneLineErrors) {
+TEST(RealFbxErrors, TruncatedAndLoopedCopiesAreOneLineErrors) {
     MOBB_NEED_FBX(dir);
     const test::TempDir tmp;
     std::ifstream in(dir + "/002_03.fbx", std::ios::binary);
@@ -304,6 +312,17 @@ TEST(RealFbxErrors, TruncatedCopiesAreOneLineErrors) {
         EXPECT_EQ(message.rfind(cut + ": ", 0), 0u) << message;
         EXPECT_TRUE(one_line(message)) << message;
     }
+    // The binary file with its first connection turned into a loop (destination := source).
+    // A "C" record: name length 1, "C", then the properties S "OO", L source, L destination.
+    const std::string record("\x01" "CS\x02\0\0\0OOL", 10);
+    const std::size_t at = bytes.find(record);
+    ASSERT_NE(at, std::string::npos);
+    ASSERT_EQ(bytes[at + 18], 'L');
+    std::string looped = bytes;
+    looped.replace(at + 19, 8, bytes.substr(at + 10, 8));
+    const std::string cycle = tmp.write("cycle.fbx", looped);
+    const std::string message = test::load_error([&] { load_clip(cycle); });
+    EXPECT_EQ(message.rfind(cycle + ": FBX connections form a cycle through object ", 0), 0u) << message;
 }
 
 }  // namespace
