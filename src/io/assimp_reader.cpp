@@ -101,6 +101,7 @@ private:
 
     void import(const std::string& bytes) {
         importer_.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
+        importer_.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);    // no made-up bones (Collada)
         std::string hint = std::filesystem::path(file_).extension().string();
         if (!hint.empty()) hint.erase(0, 1);
         if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))

@@ -190,6 +190,48 @@ TEST_F(Fbx, MalformedFilesAreOneLineErrors) {
     EXPECT_EQ(test::load_error([&] { load_clip(cycle); }), cycle + ": FBX connections form a cycle through object 1002");
 }
 
+// Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
+// joints under an armature node, the hips' X keyed at 30 Hz.
+TEST_F(Fbx, ColladaGoesThroughTheSameReader) {
+    const std::string dae = dir_.write("walk.dae", R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="centimeter" meter="0.01"/><up_axis>Z_UP</up_axis></asset>
+  <library_animations>
+    <animation id="hips_x">
+      <source id="t"><float_array id="t-array" count="3">0 0.0333333 0.0666667</float_array>
+        <technique_common><accessor source="#t-array" count="3" stride="1"><param name="TIME" type="float"/></accessor></technique_common></source>
+      <source id="v"><float_array id="v-array" count="3">0 10 40</float_array>
+        <technique_common><accessor source="#v-array" count="3" stride="1"><param name="X" type="float"/></accessor></technique_common></source>
+      <sampler id="s"><input semantic="INPUT" source="#t"/><input semantic="OUTPUT" source="#v"/></sampler>
+      <channel source="#s" target="hips/location.X"/>
+    </animation>
+  </library_animations>
+  <library_visual_scenes>
+    <visual_scene id="Scene">
+      <node id="Armature" name="Armature" type="NODE">
+        <node id="hips" name="hips" sid="hips" type="JOINT"><translate sid="location">0 0 100</translate>
+          <node id="hand" name="hand" sid="hand" type="JOINT"><translate sid="location">0 50 0</translate></node>
+        </node>
+      </node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#Scene"/></scene>
+</COLLADA>
+)");
+    const Clip clip = load_clip(dae);
+    EXPECT_EQ(clip.animation.skeleton.names, (std::vector<std::string>{"hips", "hand"}));
+    EXPECT_EQ(clip.path.dt, 1.0 / 30.0);
+    EXPECT_EQ(clip.up, UpAxis::Y);
+    ASSERT_EQ(clip.path.size(), 3u);
+    const double x[] = {0, 0.1, 0.4};
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(clip.path.samples[i].x, x[i], 1e-6) << i;
+        EXPECT_NEAR(clip.path.samples[i].y, 0, 1e-6) << i;
+        EXPECT_NEAR(clip.path.samples[i].r, 0.5, 1e-6) << i;
+    }
+    EXPECT_NEAR(clip.animation.at(0, 0).y, 1.0, 1e-6);  // the hips 1 m up once turned Y-up
+}
+
 TEST(AssimpReader, ReadsFbxAndColladaButNotText) {
     EXPECT_TRUE(assimp::reads(".fbx"));
     EXPECT_TRUE(assimp::reads(".FBX"));
