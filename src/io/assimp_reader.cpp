@@ -130,8 +130,8 @@ private:
             return;
         }
         const bool negative = sign && *sign < 0;
+        if (!(*axis == 0 || *axis == 1 || *axis == 2)) fail("UpAxis " + std::to_string(*axis) + " is not 0, 1 or 2");
         const int a = int(*axis);
-        if (a < 0 || a > 2) fail("UpAxis " + std::to_string(a) + " is not 0, 1 or 2");
         result_.up = a == 2 && !negative ? UpAxis::Z : UpAxis::Y;
         const glm::dvec3 x(1, 0, 0), z(0, 0, 1);
         if (a == 0) axes_ = glm::rotate(glm::dmat4(1.0), glm::radians(negative ? -90.0 : 90.0), z);
