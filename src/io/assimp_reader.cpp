@@ -17,6 +17,7 @@
 
 #include "assimp_keys.h"
 #include "common.h"
+#include "fbx_connections.h"
 
 namespace mobb::io::assimp {
 namespace {
@@ -100,8 +101,11 @@ private:
 
     void import(const std::string& bytes) {
         importer_.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
+        importer_.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);    // no made-up bones (Collada)
         std::string hint = std::filesystem::path(file_).extension().string();
         if (!hint.empty()) hint.erase(0, 1);
+        if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))
+            fail("FBX connections form a cycle through object " + std::to_string(*id));
         const aiScene* scene = nullptr;
         std::string error;
         try {
@@ -126,8 +130,8 @@ private:
             return;
         }
         const bool negative = sign && *sign < 0;
+        if (!(*axis == 0 || *axis == 1 || *axis == 2)) fail("UpAxis " + std::to_string(*axis) + " is not 0, 1 or 2");
         const int a = int(*axis);
-        if (a < 0 || a > 2) fail("UpAxis " + std::to_string(a) + " is not 0, 1 or 2");
         result_.up = a == 2 && !negative ? UpAxis::Z : UpAxis::Y;
         const glm::dvec3 x(1, 0, 0), z(0, 0, 1);
         if (a == 0) axes_ = glm::rotate(glm::dmat4(1.0), glm::radians(negative ? -90.0 : 90.0), z);

@@ -180,6 +180,56 @@ TEST_F(Fbx, MalformedFilesAreOneLineErrors) {
         EXPECT_TRUE(one_line(message)) << message;
     }
     for (const std::string& m : {skeleton_error}) EXPECT_TRUE(one_line(m)) << m;
+
+    // A model connected to itself: Assimp 5.2 would recurse until the stack overflows.
+    std::string looped = test::ascii_fbx(walk({0, 1 / 30.0}, {0, 0.1}));
+    const std::string link = "C: \"OO\",1002,1001";
+    ASSERT_NE(looped.find(link), std::string::npos);
+    looped.replace(looped.find(link), link.size(), "C: \"OO\",1002,1002");
+    const std::string cycle = dir_.write("cycle.fbx", looped);
+    EXPECT_EQ(test::load_error([&] { load_clip(cycle); }), cycle + ": FBX connections form a cycle through object 1002");
+}
+
+// Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
+// joints under an armature node, the hips' X keyed at 30 Hz.
+TEST_F(Fbx, ColladaGoesThroughTheSameReader) {
+    const std::string dae = dir_.write("walk.dae", R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="centimeter" meter="0.01"/><up_axis>Z_UP</up_axis></asset>
+  <library_animations>
+    <animation id="hips_x">
+      <source id="t"><float_array id="t-array" count="3">0 0.0333333 0.0666667</float_array>
+        <technique_common><accessor source="#t-array" count="3" stride="1"><param name="TIME" type="float"/></accessor></technique_common></source>
+      <source id="v"><float_array id="v-array" count="3">0 10 40</float_array>
+        <technique_common><accessor source="#v-array" count="3" stride="1"><param name="X" type="float"/></accessor></technique_common></source>
+      <sampler id="s"><input semantic="INPUT" source="#t"/><input semantic="OUTPUT" source="#v"/></sampler>
+      <channel source="#s" target="hips/location.X"/>
+    </animation>
+  </library_animations>
+  <library_visual_scenes>
+    <visual_scene id="Scene">
+      <node id="Armature" name="Armature" type="NODE">
+        <node id="hips" name="hips" sid="hips" type="JOINT"><translate sid="location">0 0 100</translate>
+          <node id="hand" name="hand" sid="hand" type="JOINT"><translate sid="location">0 50 0</translate></node>
+        </node>
+      </node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#Scene"/></scene>
+</COLLADA>
+)");
+    const Clip clip = load_clip(dae);
+    EXPECT_EQ(clip.animation.skeleton.names, (std::vector<std::string>{"hips", "hand"}));
+    EXPECT_EQ(clip.path.dt, 1.0 / 30.0);
+    EXPECT_EQ(clip.up, UpAxis::Y);
+    ASSERT_EQ(clip.path.size(), 3u);
+    const double x[] = {0, 0.1, 0.4};
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(clip.path.samples[i].x, x[i], 1e-6) << i;
+        EXPECT_NEAR(clip.path.samples[i].y, 0, 1e-6) << i;
+        EXPECT_NEAR(clip.path.samples[i].r, 0.5, 1e-6) << i;
+    }
+    EXPECT_NEAR(clip.animation.at(0, 0).y, 1.0, 1e-6);  // the hips 1 m up once turned Y-up
 }
 
 TEST(AssimpReader, ReadsFbxAndColladaButNotText) {
@@ -291,7 +341,7 @@ TEST(RealFbxOptions, AnimationRootFramesAndFps) {
               file + ": no animation named 'Take 001' (the file has 'Scene')");
 }
 
-TEST(RealFbxErrors, TruncatedCopiesAreOneLineErrors) {
+TEST(RealFbxErrors, TruncatedAndLoopedCopiesAreOneLineErrors) {
     MOBB_NEED_FBX(dir);
     const test::TempDir tmp;
     std::ifstream in(dir + "/002_03.fbx", std::ios::binary);
@@ -304,6 +354,17 @@ TEST(RealFbxErrors, TruncatedCopiesAreOneLineErrors) {
         EXPECT_EQ(message.rfind(cut + ": ", 0), 0u) << message;
         EXPECT_TRUE(one_line(message)) << message;
     }
+    // The binary file with its first connection turned into a loop (destination := source).
+    // A "C" record: name length 1, "C", then the properties S "OO", L source, L destination.
+    const std::string record("\x01" "CS\x02\0\0\0OOL", 10);
+    const std::size_t at = bytes.find(record);
+    ASSERT_NE(at, std::string::npos);
+    ASSERT_EQ(bytes[at + 18], 'L');
+    std::string looped = bytes;
+    looped.replace(at + 19, 8, bytes.substr(at + 10, 8));
+    const std::string cycle = tmp.write("cycle.fbx", looped);
+    const std::string message = test::load_error([&] { load_clip(cycle); });
+    EXPECT_EQ(message.rfind(cycle + ": FBX connections form a cycle through object ", 0), 0u) << message;
 }
 
 }  // namespace

@@ -85,10 +85,11 @@ ScaleGuess guess_scale(double height);
 std::vector<std::string> root_jumps(const Clip& clip, double threshold = 0.5);
 
 /// Loads a .bvh, .glb, .gltf, .fbx, .dae or other file Assimp reads (by extension, case-insensitive; see
-/// mobb/io/assimp_reader.h). Throws LoadError for a missing
-/// or unreadable file ("FILE: cannot open ..."), an unknown extension, malformed content or bad options.
-/// Auto scale (BVH, and Assimp files that state no unit): the standing height is the median over frames of the largest side of the posed
-/// skeleton's bounding box, see guess_scale. Warnings: root jumps (root_jumps), ignored options.
+/// mobb/io/assimp_reader.h). Throws LoadError for a missing or unreadable file ("FILE: cannot open ..."),
+/// an unknown extension, malformed content or bad options (--root naming no joint). Auto scale (BVH, and
+/// Assimp files that state no unit): the standing height is the median over frames of the largest side of
+/// the posed skeleton's bounding box, see guess_scale. Warnings: root jumps (root_jumps), ignored options,
+/// uneven key times (Assimp formats).
 Clip load_clip(const std::string& file, const LoadOptions& options = {});
 
 /// The data folder: $MOBB_DATA if set and an existing folder, else ../shared/mocap relative to the
