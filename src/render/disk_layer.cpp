@@ -71,6 +71,7 @@ void DiskLayer::set_segments(int segments) {
 
 void DiskLayer::release(Stack& s) {
     if (s.vbo) glDeleteBuffers(1, &s.vbo);
+    if (s.values) glDeleteBuffers(1, &s.values);
     if (s.vao) glDeleteVertexArrays(1, &s.vao);
     s = Stack{};
 }
@@ -133,7 +134,10 @@ void DiskLayer::rebuild(const Frame& frame) {
     clips_.resize(frame.clips.size());
     for (std::size_t c = 0; c < frame.clips.size(); ++c) {
         const ClipView& clip = frame.clips[c];
-        for (Stack& s : clips_[c].lods) s.built = false;  // buffers are kept and refilled when next drawn
+        for (Stack& s : clips_[c].lods) {
+            s.built = false;  // buffers are kept and refilled when next drawn
+            s.values_revision = ~std::uint64_t(0);
+        }
         clips_[c].bounds = path_bounds(clip.tree->path(), clip.place);
         clips_[c].dt = float(clip.tree->path().dt);
     }
@@ -173,8 +177,29 @@ DiskLayer::InstanceRange DiskLayer::in_window(const Frame& frame, const ClipView
     return {GLsizei(g0), GLsizei(g1 - g0 + 1)};
 }
 
+bool DiskLayer::map_values(const Frame& frame, const ClipView& clip, Stack& s, int group) {
+    const bool mapped = frame.layers.disk_colour != DiskColour::Clip && clip.sample_values &&
+                        clip.sample_values->size() == clip.tree->path().size();
+    if (!mapped) {
+        glDisableVertexAttribArray(4);
+        return false;
+    }
+    if (!s.values) glGenBuffers(1, &s.values);
+    if (s.values_revision != frame.colour_revision) {
+        const std::vector<float> v =
+            group > 1 ? group_values(*clip.sample_values, group, frame.layers.disk_colour == DiskColour::Clearance)
+                      : *clip.sample_values;
+        glBindBuffer(GL_ARRAY_BUFFER, s.values);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
+        s.values_revision = frame.colour_revision;
+    }
+    glEnableVertexAttribArray(4);
+    glVertexAttribDivisor(4, 1);
+    return true;
+}
+
 // Points the stack's instance attributes at its instance `first` (a GL 3.3 stand-in for a base instance).
-void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped) {
+void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped, bool mapped) {
     const GLsizei stride = grouped ? GLsizei(sizeof(DiskGroup)) : GLsizei(sizeof(DiskInstance));
     const std::size_t base = std::size_t(first) * std::size_t(stride);
     glBindBuffer(GL_ARRAY_BUFFER, s.vbo);
@@ -182,6 +207,11 @@ void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped) {
     if (grouped)
         glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<void*>(base + offsetof(DiskGroup, shift)));
+    if (mapped) {
+        glBindBuffer(GL_ARRAY_BUFFER, s.values);
+        glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, sizeof(float),
+                              reinterpret_cast<void*>(std::size_t(first) * sizeof(float)));
+    }
 }
 
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
@@ -192,18 +222,24 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     ctx.disk->set("u_grow", 1.0f);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
     const float alpha = translucent_pass ? 0.28f : 1.0f;
+    const auto& table = colour_table(frame.disk_scale.map);
+    ctx.disk->set("u_map", table.data(), kColourMapEntries);
+    ctx.disk->set("u_lo", float(frame.disk_scale.lo));
+    ctx.disk->set("u_hi", float(frame.disk_scale.hi));
     for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
         if (!frame.clips[c].visible) continue;
         Clip& clip = clips_[c];
         const int k = clip_lod(clip.bounds, double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
-        const Stack& s = stack_at(frame.clips[c], clip, k);
+        Stack& s = stack_at(frame.clips[c], clip, k);
         const int group = 1 << level_of(k);  // samples per instance
         const InstanceRange range = in_window(frame, frame.clips[c], s, group);
         if (range.count <= 0) continue;
         ctx.disk->set("u_dt", clip.dt);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
         glBindVertexArray(s.vao);
-        point_at(s, range.first, group > 1);
+        const bool mapped = map_values(frame, frame.clips[c], s, group);
+        ctx.disk->set("u_mapped", mapped ? 1 : 0);
+        point_at(s, range.first, group > 1, mapped);
         glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, range.count);
         stats_.disks += frame.clips[c].tree->path().size();
         stats_.instances += std::size_t(range.count);
@@ -222,6 +258,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     ctx.disk->set("u_dt", float(dt));
     ctx.disk->set("u_grow", grow);
     ctx.disk->set("u_color", color);
+    ctx.disk->set("u_mapped", 0);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);

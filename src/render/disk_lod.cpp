@@ -99,4 +99,17 @@ std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k
     return out;
 }
 
+std::vector<float> group_values(const std::vector<float>& values, int k, bool least) {
+    std::vector<float> out;
+    const std::size_t n = values.size(), step = std::size_t(std::max(k, 1));
+    out.reserve((n + step - 1) / step);
+    for (std::size_t i = 0; i < n; i += step) {
+        const std::size_t j = std::min(i + step, n);
+        double v = least ? double(values[i]) : 0.0;
+        for (std::size_t q = i; q < j; ++q) v = least ? std::min(v, double(values[q])) : v + double(values[q]);
+        out.push_back(float(least ? v : v / double(j - i)));
+    }
+    return out;
+}
+
 }  // namespace mobb::render

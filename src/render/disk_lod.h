@@ -65,4 +65,8 @@ std::vector<DiskInstance> disk_instances(const Path& path, const Placement& plac
 /// Groups of k consecutive disks (the last group may hold fewer), as described above.
 std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k);
 
+/// The values of groups of k consecutive samples (as group_disks() groups them): each group's mean,
+/// or with `least` its smallest (clearance: a group holding a collision shows it).
+std::vector<float> group_values(const std::vector<float>& values, int k, bool least);
+
 }  // namespace mobb::render

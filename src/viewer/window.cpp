@@ -119,7 +119,7 @@ void run_window(State& s, const WindowOptions& options) {
             apply_requests(s, ui, float(size.x) / float(std::max(size.y, 1)));
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            renderer.draw(frame_of(s), s.camera, fb.x, fb.y);
+            renderer.draw(frame_of(s, kRightPanels * float(fb.x) / float(std::max(size.x, 1))), s.camera, fb.x, fb.y);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             if (options.frames > 0 && frame >= options.frames) {
                 if (!options.screenshot.empty()) {
