@@ -163,8 +163,13 @@ void add_render(CLI::App& app, int& exit_code) {
                     viewer::frame_all(s, aspect(w, h));
                 }
                 if (a->bench) {
-                    out << "bench: crowd, " << std::fixed << std::setprecision(2)
-                        << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
+                    render::DiskStats drawn;
+                    const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
+                    out << "bench: crowd, " << drawn.disks << " disks in " << drawn.instances << " instances at LOD k="
+                        << drawn.k_min;
+                    if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
+                    out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
+                        << " frames per second\n";
                     return;
                 }
                 render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help}));

@@ -140,7 +140,7 @@ void DiskLayer::rebuild(const Frame& frame) {
             s.built = false;  // buffers are kept and refilled when next drawn
             s.values_revision = ~std::uint64_t(0);
         }
-        clips_[c].bounds = path_bounds(clip.tree->path(), clip.place);
+        clips_[c].chunks = chunk_bounds(clip.tree->path(), clip.place);
         clips_[c].dt = float(clip.tree->path().dt);
     }
 }
@@ -165,18 +165,17 @@ DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
     return s;
 }
 
-// The instances of stack s (k samples each) inside the frame's time window: all without one. The clip
-// planes cut the window's edges exactly; this only spares llvmpipe the instances wholly outside.
-DiskLayer::InstanceRange DiskLayer::in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k) {
-    if (frame.window <= 0) return {0, s.count};
-    const double dt = clip.tree->path().dt, t0 = clip.place.t0;
+// The samples inside the frame's time window: all without one. The clip planes cut the window's edges
+// exactly; this only spares llvmpipe the instances wholly outside.
+DiskLayer::SampleSpan DiskLayer::in_window(const Frame& frame, const ClipView& clip) {
     const auto n = std::int64_t(clip.tree->path().size());
+    if (frame.window <= 0) return {0, n};
+    const double dt = clip.tree->path().dt, t0 = clip.place.t0;
     const std::int64_t i0 =
         std::max<std::int64_t>(0, std::int64_t(std::floor((frame.cursor - frame.window - t0) / dt)));
     const std::int64_t i1 = std::min(n - 1, std::int64_t(std::floor((frame.cursor + frame.window - t0) / dt)));
     if (i1 < i0) return {0, 0};
-    const std::int64_t g0 = i0 / k, g1 = std::min<std::int64_t>(i1 / k, std::int64_t(s.count) - 1);
-    return {GLsizei(g0), GLsizei(g1 - g0 + 1)};
+    return {i0, i1 + 1};
 }
 
 bool DiskLayer::map_values(const Frame& frame, const ClipView& clip, Stack& s, int group) {
@@ -216,6 +215,31 @@ void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped, bool mappe
     }
 }
 
+namespace {
+void chunk_gl(const Bounds& b, double time_scale, glm::vec3& lo, glm::vec3& hi) {
+    const glm::vec3 a = to_gl(b.lo.x, b.lo.y, b.lo.z, time_scale), c = to_gl(b.hi.x, b.hi.y, b.hi.z, time_scale);
+    lo = glm::min(a, c);
+    hi = glm::max(a, c);
+}
+}  // namespace
+
+GLsizei DiskLayer::draw_span(const Frame& frame, const DrawContext& ctx, std::size_t c, SampleSpan span, int k) {
+    const ClipView& view = frame.clips[c];
+    Clip& clip = clips_[c];
+    Stack& s = stack_at(view, clip, k);
+    const int group = 1 << level_of(k);  // samples per instance
+    const auto g0 = GLsizei(span.first / group);
+    const GLsizei g1 = std::min(GLsizei((span.end + group - 1) / group), s.count);
+    if (g1 <= g0) return 0;
+    ctx.disk->set("u_dt", clip.dt);
+    glBindVertexArray(s.vao);
+    const bool mapped = map_values(frame, view, s, group);
+    ctx.disk->set("u_mapped", mapped ? 1 : 0);
+    point_at(s, g0, group > 1, mapped);
+    glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, g1 - g0);
+    return g1 - g0;
+}
+
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.disks || frame.layers.disks_translucent != translucent_pass) return;
     stats_ = DiskStats{};
@@ -239,22 +263,26 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
         if (!frame.clips[c].visible) continue;
         Clip& clip = clips_[c];
-        const int k = clip_lod(clip.bounds, double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
-        Stack& s = stack_at(frame.clips[c], clip, k);
-        const int group = 1 << level_of(k);  // samples per instance
-        const InstanceRange range = in_window(frame, frame.clips[c], s, group);
-        if (range.count <= 0) continue;
-        ctx.disk->set("u_dt", clip.dt);
+        const SampleSpan window = in_window(frame, frame.clips[c]);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
-        glBindVertexArray(s.vao);
-        const bool mapped = map_values(frame, frame.clips[c], s, group);
-        ctx.disk->set("u_mapped", mapped ? 1 : 0);
-        point_at(s, range.first, group > 1, mapped);
-        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, range.count);
-        stats_.disks += frame.clips[c].tree->path().size();
-        stats_.instances += std::size_t(range.count);
-        stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
-        stats_.k_max = std::max(stats_.k_max, k);
+        bool drawn = false;
+        for (std::size_t q = 0; q < clip.chunks.size(); ++q) {
+            const auto c0 = std::int64_t(q) * kDiskChunk;
+            const SampleSpan span{std::max(c0, window.first), std::min(c0 + kDiskChunk, window.end)};
+            if (span.first >= span.end) continue;
+            glm::vec3 lo, hi;
+            chunk_gl(clip.chunks[q], frame.time_scale, lo, hi);
+            if (outside_view(ctx.view_proj, lo, hi)) continue;
+            const int k =
+                clip_lod(clip.chunks[q], double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
+            const GLsizei count = draw_span(frame, ctx, c, span, k);
+            if (count <= 0) continue;
+            drawn = true;
+            stats_.instances += std::size_t(count);
+            stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
+            stats_.k_max = std::max(stats_.k_max, k);
+        }
+        if (drawn) stats_.disks += frame.clips[c].tree->path().size();
     }
     glDisable(GL_CULL_FACE);
     glBindVertexArray(0);

@@ -50,13 +50,15 @@ private:
     };
     struct Clip {
         std::array<Stack, kLevels> lods;  ///< by log2 k
-        Bounds bounds;                    ///< space-time bounds, for the LOD decision
+        std::vector<Bounds> chunks;       ///< space-time bounds of each kDiskChunk samples: LOD, culling
         float dt = 0;
     };
-    struct InstanceRange {
-        GLsizei first = 0, count = 0;
+    struct SampleSpan {
+        std::int64_t first = 0, end = 0;  ///< samples [first, end)
     };
-    static InstanceRange in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k);
+    static SampleSpan in_window(const Frame& frame, const ClipView& clip);
+    /// Draws samples [span) of clip c at level of detail k; returns the instances drawn.
+    GLsizei draw_span(const Frame& frame, const DrawContext& ctx, std::size_t c, SampleSpan span, int k);
     static void point_at(const Stack& s, GLsizei first, bool grouped, bool mapped);
     /// Points location 4 at the clip's values (per instance of the stack) when the frame maps them to
     /// colours; returns whether it does.
