@@ -111,8 +111,8 @@ render::ColourScale box_scale(BoxColour colour, const std::vector<std::vector<fl
 
 void update_colouring(const State& s, Colouring& c) {
     const render::Layers& l = s.scene.layers;
-    Colouring::Key key{s.revision, l.disk_colour, l.box_colour, l.level, l.levels, l.all_levels, &s.trace,
-                       s.trace.size(), s.scene.query_a, s.scene.query_b};
+    Colouring::Key key{s.revision,   l.disk_colour, l.box_colour,   l.level,         l.levels,
+                       l.all_levels, &s.trace,      s.trace.size(), s.scene.query_a, s.scene.query_b};
     if (c.valid && key == c.key) return;
     const bool disks = !c.valid || key.revision != c.key.revision || key.disks != c.key.disks;
     if (disks) {

@@ -27,8 +27,8 @@ struct Colouring {
         int query_a = -1, query_b = -1;
         bool operator==(const Key& o) const {
             return revision == o.revision && disks == o.disks && boxes == o.boxes && level == o.level &&
-                   levels == o.levels && all_levels == o.all_levels && trace == o.trace &&
-                   trace_size == o.trace_size && query_a == o.query_a && query_b == o.query_b;
+                   levels == o.levels && all_levels == o.all_levels && trace == o.trace && trace_size == o.trace_size &&
+                   query_a == o.query_a && query_b == o.query_b;
         }
     };
     Key key;

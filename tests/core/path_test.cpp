@@ -24,9 +24,9 @@ TEST(SampleSpeeds, CentralInsideOneSidedAtTheEnds) {
     p.samples = {{0, 0, 0.2}, {1, 0, 0.2}, {1, 3, 0.2}};
     const std::vector<double> v = sample_speeds(p);
     ASSERT_EQ(v.size(), 3u);
-    EXPECT_NEAR(v[0], 2.0, 1e-12);                       // 1 m in 0.5 s
+    EXPECT_NEAR(v[0], 2.0, 1e-12);                         // 1 m in 0.5 s
     EXPECT_NEAR(v[1], std::hypot(1.0, 3.0) / 1.0, 1e-12);  // (0,0) -> (1,3) over 2 dt
-    EXPECT_NEAR(v[2], 6.0, 1e-12);                       // 3 m in 0.5 s
+    EXPECT_NEAR(v[2], 6.0, 1e-12);                         // 3 m in 0.5 s
     EXPECT_EQ(sample_speeds(test::standing_still(1)), std::vector<double>{0.0});
     for (double x : sample_speeds(test::standing_still(20))) EXPECT_EQ(x, 0.0);
 }
