@@ -103,6 +103,10 @@ struct LevelStats {
 };
 std::vector<LevelStats> level_stats(const Tree& tree);
 
+/// Tightness of one node's box: its space-time volume (2D boxes extruded over the node's time range)
+/// over the volume of its sample cylinders, >= 1 (1 would be a box as tight as the disks themselves).
+double volume_ratio(const Tree& tree, const Node& node);
+
 /// Every sample cylinder lies inside the box of every node that holds it (tolerance in metres).
 bool all_samples_contained(const Tree& tree, double tol = 1e-9);
 
