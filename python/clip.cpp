@@ -102,7 +102,7 @@ Attributes:
     m.def("load", &load, py::arg("file"), py::kw_only(), py::arg("up") = "y", py::arg("scale") = py::none(),
           py::arg("frames") = py::none(), py::arg("fps") = py::none(), py::arg("skin") = 0,
           py::arg("animation") = "",
-          R"doc(Loads a .bvh, .glb or .gltf clip (by extension) -> mobb.Clip.
+          R"doc(Loads a clip file as `mobb path` does (the format by its extension: .bvh, .glb, .gltf) -> mobb.Clip.
 
 The loader options are the command line's:
   up         "y" or "z": up axis of BVH data (glTF is always Y-up).
