@@ -1,6 +1,7 @@
 # Every external package comes from Debian (see scripts/install-deps); nothing is downloaded or copied.
 find_package(glm CONFIG REQUIRED)              # libglm-dev
 find_package(TinyGLTF CONFIG REQUIRED)         # libtinygltf-dev
+find_package(assimp CONFIG REQUIRED)           # libassimp-dev (FBX, Collada, ...)
 find_package(nlohmann_json CONFIG REQUIRED)    # nlohmann-json3-dev
 find_package(CLI11 CONFIG REQUIRED)            # libcli11-dev
 if(MOBB_BUILD_TESTS)

@@ -9,7 +9,7 @@
 namespace mobb::app {
 
 void LoadArgs::add_to(CLI::App& cmd) {
-    cmd.add_option("--up", text.up, "Up axis of BVH data: y or z")
+    cmd.add_option("--up", text.up, "Up axis of BVH data (and files that do not state it): y or z")
         ->check(CLI::IsMember({"y", "z"}))
         ->capture_default_str();
     cmd.add_option("--scale", text.scale, "Metres per file unit, or auto (infer from the skeleton's height)")
@@ -18,7 +18,8 @@ void LoadArgs::add_to(CLI::App& cmd) {
     cmd.add_option("--fps", text.fps, "Resample to F samples per second (frame at or just below each time)")
         ->check(CLI::PositiveNumber);
     cmd.add_option("--skin", text.skin, "glTF: skin index")->check(CLI::NonNegativeNumber);
-    cmd.add_option("--animation", text.animation, "glTF: animation name (default: the first)");
+    cmd.add_option("--animation", text.animation, "glTF, FBX: animation name (default: the first)");
+    cmd.add_option("--root", text.root, "Joint projected on the ground (default: the skeleton's root)");
 }
 
 void TreeArgs::add_to(CLI::App& cmd, bool allow_brute) {

@@ -24,7 +24,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// The loader options of every subcommand: --up, --scale, --frames, --fps, --skin, --animation.
+/// The loader options of every subcommand: --up, --scale, --frames, --fps, --skin, --animation, --root.
 struct LoadArgs {
     io::LoadOptionText text;
 

@@ -119,6 +119,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 opt.threads = o->threads;
                 opt.cell = o->cell;
             }
+            opt.record_queries = !record->empty();  // only a written record shows them
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);
             // The fastest exact query unless a tree is asked for (its counters then fill the summary).

@@ -1,5 +1,7 @@
 // mobb view, mobb render, mobb export-gltf: the viewer layer's subcommands (src/viewer).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -10,6 +12,7 @@
 #include "export_gltf.h"
 #include "headless.h"
 #include "image.h"
+#include "panels.h"
 #include "scene.h"
 #include "state.h"
 #include "window.h"
@@ -81,10 +84,33 @@ void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_
         throw InputError("render: " + message);
 }
 
+/// `render --ui --pick CLIP:SAMPLE [--pick ..] --panel NAME ..`: the panels' state the image starts
+/// from, as clicks and the View menu would leave it. Throws InputError naming a bad pick or panel.
+viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::vector<std::string>& panels) {
+    viewer::Ui ui;
+    for (const std::string& p : picks) {
+        viewer::Pick pick;
+        char end = 0;
+        if (std::sscanf(p.c_str(), "%d:%d%c", &pick.clip, &pick.sample, &end) != 2 || pick.clip < 0 ||
+            pick.clip >= int(s.clips.size()) || pick.sample < 0 ||
+            pick.sample >= int(s.clips[std::size_t(pick.clip)].tree->path().size()))
+            throw InputError("render: --pick " + p + ": expected CLIP:SAMPLE naming a disk of the scene");
+        viewer::click_disk(s, ui, pick);
+    }
+    for (const std::string& name : panels) {
+        const auto& list = viewer::panel_list();
+        const auto it = std::find_if(list.begin(), list.end(), [&](const auto& i) { return name == i.name; });
+        if (it == list.end()) throw InputError("render: --panel " + name + ": no such panel");
+        ui.panels.*it->open = true;
+    }
+    return ui;
+}
+
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
         std::string scene, out, crowd;
+        std::vector<std::string> picks, panels;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1, window = -1;
         bool ui = false, help = false, bench = false, top = false;
@@ -115,6 +141,8 @@ void add_render(CLI::App& app, int& exit_code) {
     cmd->add_option("--step", a->step, "Trace step to show (default: the scene's)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--ui", a->ui, "Also draw the ImGui panels");
     cmd->add_flag("--shortcuts", a->help, "With --ui: the Shortcuts window open too (F1 in the viewer)");
+    cmd->add_option("--pick", a->picks, "With --ui: click disk CLIP:SAMPLE (twice: the Inspector's ruler)");
+    cmd->add_option("--panel", a->panels, "With --ui: also open this panel (as in the View menu), e.g. Open");
     cmd->add_flag("--bench", a->bench, "Print frames per second instead of writing an image");
     cmd->add_option("--bench-frames", a->bench_frames, "Frames timed by --bench")->check(CLI::Range(1, 100000));
     cmd->callback([a, &exit_code] {
@@ -125,6 +153,11 @@ void add_render(CLI::App& app, int& exit_code) {
         }
         if (a->scene.empty() == a->crowd.empty()) {
             std::cerr << "render: expected a SCENE or --crowd RECORD.json (one of them)\n";
+            exit_code = kUsage;
+            return;
+        }
+        if (!a->ui && (!a->picks.empty() || !a->panels.empty() || a->help)) {
+            std::cerr << "render: --pick, --panel and --shortcuts go with --ui\n";
             exit_code = kUsage;
             return;
         }
@@ -149,7 +182,8 @@ void add_render(CLI::App& app, int& exit_code) {
                         << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
                     return;
                 }
-                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help}));
+                const viewer::Ui start = ui_start(s, a->picks, a->panels);
+                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
                 out << a->out << "\n";
                 return;
             }
@@ -172,7 +206,8 @@ void add_render(CLI::App& app, int& exit_code) {
                     << " frames per second\n";
                 return;
             }
-            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help}));
+            const viewer::Ui start = ui_start(s, a->picks, a->panels);
+            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
             out << a->out << "\n";
         });
     });
@@ -181,13 +216,14 @@ void add_render(CLI::App& app, int& exit_code) {
 struct ViewArgs {
     std::vector<std::string> inputs;
     io::LoadOptionText load;
-    std::string screenshot, crowd;
+    std::string screenshot, crowd, save_state;
     int frames = 0, width = 1280, height = 800;
     TreeArgs tree;
 };
 
-// Opens a window on the state, or renders it headless when there is no display (`what` names it).
-void show(State& s, const ViewArgs& a, const std::string& what, std::ostream& out) {
+// Opens a window on the state, or renders it headless when there is no display (`what` names it; the
+// window keeps its camera under `key` in the user's settings).
+void show(State& s, const ViewArgs& a, const std::string& what, const std::string& key, std::ostream& out) {
     if (!render::display_available()) {
         const std::string png = a.screenshot.empty() ? "mobb-view.png" : a.screenshot;
         render::write_png(png, viewer::render_headless(s, {a.width, a.height, true}));
@@ -200,15 +236,21 @@ void show(State& s, const ViewArgs& a, const std::string& what, std::ostream& ou
     w.height = a.height;
     w.frames = a.frames;
     w.screenshot = a.screenshot;
+    w.settings_key = key;
     viewer::run_window(s, w);
     if (!a.screenshot.empty()) out << a.screenshot << "\n";
+    if (!a.save_state.empty()) {  // the scene as the window left it: clips, placements, step, camera
+        viewer::sync_scene(s);
+        viewer::save_scene(s.scene, a.save_state);
+        out << a.save_state << "\n";
+    }
 }
 
 void add_view(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("view", "Open the interactive viewer on a scene or on clip files");
     auto a = std::make_shared<ViewArgs>();
     cmd->add_option("SCENE_OR_FILES", a->inputs,
-                    "A scene (.json) or BVH / glTF files (default: assets/scenes/default.json)");
+                    "A scene (.json) or clip files: BVH, glTF, FBX (default: assets/scenes/default.json)");
     // Not LoadArgs: here --frames is the number of frames to show, not the clips' frame range.
     cmd->add_option("--up", a->load.up, "Up axis of BVH files: y or z")->check(CLI::IsMember({"y", "z"}));
     cmd->add_option("--scale", a->load.scale, "Metres per file unit, or auto");
@@ -217,6 +259,8 @@ void add_view(CLI::App& app, int& exit_code) {
     cmd->add_option("--frames", a->frames, "Close after N frames (with --screenshot: smoke tests)")
         ->check(CLI::Range(1, 1 << 30));
     cmd->add_option("--screenshot", a->screenshot, "Save the last frame to this PNG");
+    cmd->add_option("--save-state", a->save_state,
+                    "When the window closes, save the scene as it was left (clips, placements, step, camera)");
     cmd->add_option("--crowd", a->crowd, "Show a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--width", a->width, "Window width")->check(CLI::Range(16, 8192));
     cmd->add_option("--height", a->height, "Window height")->check(CLI::Range(16, 8192));
@@ -224,22 +268,26 @@ void add_view(CLI::App& app, int& exit_code) {
         exit_code = guarded([&](std::ostream& out) {
             if (!a->crowd.empty()) {
                 if (!a->inputs.empty()) throw InputError("view: --crowd takes no scene or clip files");
+                if (!a->save_state.empty()) throw InputError("view: --save-state saves scenes, not crowds");
                 State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
-                show(s, *a, a->crowd, out);
+                show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), out);
                 return;
             }
             const bool files = !a->inputs.empty() && !(a->inputs.size() == 1 && a->inputs[0].size() > 5 &&
                                                        a->inputs[0].substr(a->inputs[0].size() - 5) == ".json");
-            std::string scene_file;
+            std::string scene_file, key;
             Scene scene;
             if (files) {
                 std::vector<std::string> abs;
                 for (const std::string& f : a->inputs) abs.push_back(std::filesystem::absolute(f).string());
+                key = "files";
+                for (const std::string& f : abs) key += " " + f;
                 scene = viewer::scene_of_files(abs);
                 for (auto& c : scene.clips) c.load = a->load;
             } else {
                 scene_file = a->inputs.empty() ? default_scene() : a->inputs[0];
                 scene = viewer::load_scene(scene_file);
+                key = "scene " + std::filesystem::absolute(scene_file).string();
             }
             if (cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit")) scene.tree = a->tree.options();
             State s = viewer::load_state(scene, aspect(a->width, a->height));
@@ -248,7 +296,7 @@ void add_view(CLI::App& app, int& exit_code) {
                 if (s.queried) s.scene.step = 0;
                 viewer::frame_all(s, aspect(a->width, a->height));
             }
-            show(s, *a, scene_file.empty() ? "the clips" : scene_file, out);
+            show(s, *a, scene_file.empty() ? "the clips" : scene_file, key, out);
         });
     });
 }

@@ -31,6 +31,7 @@ WanderRow run_wander(const crowd::MotionGraph& g, const crowd::NarrowPhase& narr
     o.seconds = w.seconds;
     o.seed = seed;
     o.threads = threads;
+    o.record_queries = false;  // the metrics read the tracks and the choice points' counts
     const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
     return {w.agents,
             w.width,
@@ -48,6 +49,7 @@ ScenarioRow run_scenario(const crowd::MotionGraph& g, const crowd::NarrowPhase& 
     crowd::CrowdOptions o = crowd::scenario_options(s);
     o.seed = seed;
     o.threads = threads;
+    o.record_queries = false;
     const crowd::CrowdRun run = crowd::run_crowd(g, narrow, o);
     return {s.name, std::filesystem::path(file).filename().string(),   int(s.agents.size()), s.time_limit,
             seed,   crowd::crowd_metrics(run.record, g, o.goal_radius)};

@@ -212,16 +212,17 @@ PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const 
     return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box, m};
 }
 
-void Choice::record_query(int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
+void Choice::record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
     Candidate& cand = point_.candidates[std::size_t(k)];
     ++cand.queries;
     ++point_.queries;
     point_.tests2d += st.tests2d;
     point_.tests3d += st.tests3d;
     point_.samples += st.samples;
+    if (q.hit) ++cand.hits;
+    if (!s.options.record_queries) return;
     q.mine = mine.index;
     cand.against.push_back(q);
-    if (q.hit) ++cand.hits;
 }
 
 // The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
@@ -235,7 +236,7 @@ bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, bool 
     bool free = true;
     for (int i : near_) {
         const bool hit = meets_solid(s, mine, i);
-        record_query(k, mine, {-1, i, 0, 0, hit}, {});
+        record_query(s, k, mine, {-1, i, 0, 0, hit}, {});
         if (!hit) continue;
         point_.candidates[std::size_t(k)].outside = true;
         free = false;
@@ -254,7 +255,7 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool 
     s.broad.query(box, agent_, near_);
     near_total_ += near_.size();
     auto& against = point_.candidates[std::size_t(k)].against;
-    if (against.capacity() < against.size() + near_.size())
+    if (s.options.record_queries && against.capacity() < against.size() + near_.size())
         against.reserve(std::max(2 * against.capacity(), against.size() + near_.size()));
     for (int id : near_) {
         const Piece& other = s.pieces[std::size_t(id)];
@@ -263,7 +264,7 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool 
         if (!hit && mine.kind == Piece::Clip && other.kind == Piece::Clip && st.tests2d + st.tests3d <= 1 &&
             st.samples == 0)
             ++root_rejected_;
-        record_query(k, mine, {other.agent, other.commit, other.index, 0, hit}, st);
+        record_query(s, k, mine, {other.agent, other.commit, other.index, 0, hit}, st);
         if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
             log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
         if (!hit) continue;

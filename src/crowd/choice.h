@@ -152,7 +152,7 @@ public:
 private:
     void order(const CrowdState& s);
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
-    void record_query(int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
+    void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
     const Placed& place(const CrowdState& s, int k);
     bool free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
     bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,

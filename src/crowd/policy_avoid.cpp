@@ -32,7 +32,8 @@ public:
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
         const Placement& b = site.base;
         const double wall = std::min({b.x - world_.x0, world_.x1 - b.x, b.y - world_.y0, world_.y1 - b.y});
-        const Rigid2 m = wall < kOpenAhead + farthest_ ? Rigid2::of(b) : Rigid2{};  // used only then
+        if (wall >= kOpenAhead + farthest_ && slower_.size() <= kMaxSlower) return order_in_open(candidates);
+        const Rigid2 m = Rigid2::of(b);
         struct Ranked {
             int rank, clip;
         };
@@ -50,9 +51,26 @@ public:
     }
 
 private:
+    // Far from every wall the ranks depend on the clip alone: the walks in their drawn order, then the
+    // others in their fixed rank order (each has a rank of its own). The same order as the sort.
+    void order_in_open(std::vector<int>& candidates) const {
+        int count[kMaxSlower] = {};
+        std::size_t walks = 0;
+        for (int c : candidates) {
+            if (kinds_[std::size_t(c)] != ClipKind::Walk) {
+                ++count[slower_rank_[std::size_t(c)] - kBands - 1];
+                continue;
+            }
+            candidates[walks++] = c;
+        }
+        for (std::size_t i = 0; i < slower_.size() && walks < candidates.size(); ++i)
+            for (int n = count[i]; n > 0; --n) candidates[walks++] = slower_[i];
+    }
+
     static constexpr double kOpenAhead = 8.0;  // metres of ground ahead of a clip's end: "in the open"
     static constexpr double kBand = 1.0;       // metres: walks toward a wall ranked in bands this wide
     static constexpr int kBands = int(kOpenAhead / kBand);
+    static constexpr std::size_t kMaxSlower = 256;  // order_in_open counts them on the stack
 
     // Clips that do not walk, after every walk: slow ones (starts, stops) before those in place, each
     // kind the faster first (an agent that must slow down keeps as much of its speed as it can).
@@ -68,6 +86,7 @@ private:
         std::stable_sort(slower.begin(), slower.end(), [&](int a, int b) { return key(a) < key(b); });
         slower_rank_.assign(kinds_.size(), 0);
         for (std::size_t i = 0; i < slower.size(); ++i) slower_rank_[std::size_t(slower[i])] = kBands + 1 + int(i);
+        slower_ = std::move(slower);
     }
 
     // 0: walks and keeps going into the open; 1 .. kBands: walks toward a wall, the nearer the later;
@@ -110,6 +129,7 @@ private:
     std::vector<ClipKind> kinds_;   // per clip
     std::vector<double> reach_;     // per clip: metres from its start to its exit
     std::vector<int> slower_rank_;  // per clip that does not walk: its rank
+    std::vector<int> slower_;       // the clips that do not walk, by rank
     double farthest_ = 0;           // the largest of them
 };
 

@@ -13,6 +13,8 @@
 
 #include <glm/common.hpp>
 
+#include "mobb/io/assimp_reader.h"
+
 #include "bvh.h"
 #include "common.h"
 #include "gltf.h"
@@ -119,6 +121,40 @@ void load_gltf(Clip& clip, const std::string& bytes, const LoadOptions& options)
     clip.up = UpAxis::Y;
 }
 
+// Units: --scale, else the unit the file states, else guessed from the standing height like BVH.
+void load_assimp(Clip& clip, const std::string& bytes, const LoadOptions& options) {
+    assimp::Result result = assimp::load(clip.file, bytes, options);
+    clip.animation = std::move(result.animation);
+    clip.warnings = std::move(result.warnings);
+    clip.up = result.up;
+    clip.source_dt = result.source_dt;
+    if (options.scale) {
+        clip.scale = *options.scale;
+        clip.scale_reason = given_reason(clip.scale);
+    } else if (result.unit > 0) {
+        clip.scale = result.unit;
+        clip.scale_reason = result.unit_reason;
+    } else {
+        const ScaleGuess guess = guess_scale(standing_height(clip.animation));
+        clip.scale = guess.scale;
+        clip.scale_reason = guess.reason;
+    }
+    if (clip.scale != 1.0)
+        for (glm::dvec3& p : clip.animation.positions) p *= clip.scale;
+}
+
+// --root NAME: the joint projected on the ground, for every format.
+void choose_root(Clip& clip, const std::string& name) {
+    const Skeleton& s = clip.animation.skeleton;
+    for (int j = 0; j < s.size(); ++j)
+        if (s.names[std::size_t(j)] == name && !s.end_site[std::size_t(j)]) {
+            clip.animation.skeleton.root = j;
+            return;
+        }
+    fail(clip.file, "--root: no joint named '" + detail::quote(name) + "' (the skeleton's root is '" +
+                        detail::quote(s.names.empty() ? std::string() : s.names[std::size_t(s.root)]) + "')");
+}
+
 // Keeps frames [begin, end) of the animation and of source_index.
 void keep_frames(Clip& clip, int begin, int end) {
     auto& positions = clip.animation.positions;
@@ -207,14 +243,19 @@ Clip load_clip(const std::string& file, const LoadOptions& options) {
     clip.file = file;
     clip.up = options.up;
     const std::string ext = lower_extension(file);
-    if (ext != ".bvh" && ext != ".glb" && ext != ".gltf")
-        fail(file, "unknown file type '" + ext + "' (expected .bvh, .glb or .gltf)");
+    const bool gltf = ext == ".glb" || ext == ".gltf";
+    if (ext != ".bvh" && !gltf && !assimp::reads(ext))
+        fail(file, "unknown file type '" + detail::quote(ext) +
+                       "' (expected .bvh, .glb, .gltf, .fbx, .dae or another format Assimp reads)");
     if (options.scale) check_positive(file, "--scale", *options.scale);
     const std::string bytes = read_file(file);
     if (ext == ".bvh")
         load_bvh(clip, bytes, options);
-    else
+    else if (gltf)
         load_gltf(clip, bytes, options);
+    else
+        load_assimp(clip, bytes, options);
+    if (!options.root.empty()) choose_root(clip, options.root);
 
     clip.source_frames = clip.animation.frames();
     clip.source_index.resize(std::size_t(clip.source_frames));

@@ -46,6 +46,7 @@ LoadOptions parse_load_options(const LoadOptionText& text) {
     if (text.fps > 0) o.fps = text.fps;
     o.skin = text.skin;
     o.animation = text.animation;
+    o.root = text.root;
     return o;
 }
 

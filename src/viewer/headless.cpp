@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
 
 #include "context_osmesa.h"
 #include "panels.h"
@@ -14,27 +15,57 @@ namespace mobb::viewer {
 
 namespace {
 
+/// Windows whose text is cut: content wider than the window (tables and lists that scroll sideways
+/// excepted), a panel taller than its window (child lists may scroll), or a panel past the image edge.
+std::vector<std::string> cut_windows(const ImVec2& display) {
+    std::vector<std::string> out;
+    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+        const ImGuiWindowFlags skip = ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup | ImGuiWindowFlags_MenuBar;
+        if (!w->WasActive || w->Hidden || (w->Flags & skip)) continue;  // the menu bar fits by construction
+        char line[256];
+        const bool child = (w->Flags & ImGuiWindowFlags_ChildWindow) != 0;
+        const float wide = w->ContentSizeIdeal.x - w->ContentRegionRect.GetWidth();
+        if (wide > 0.5f && !(w->Flags & ImGuiWindowFlags_HorizontalScrollbar)) {
+            std::snprintf(line, sizeof line, "%s: %.0f px too narrow", w->Name, double(wide));
+            out.emplace_back(line);
+        }
+        if (child) continue;
+        if (w->ScrollMax.y > 0.5f) {
+            std::snprintf(line, sizeof line, "%s: %.0f px too short", w->Name, double(w->ScrollMax.y));
+            out.emplace_back(line);
+        }
+        if (w->Pos.x < -0.5f || w->Pos.y < -0.5f || w->Pos.x + w->Size.x > display.x + 0.5f ||
+            w->Pos.y + w->Size.y > display.y + 0.5f) {
+            std::snprintf(line, sizeof line, "%s: reaches past the image", w->Name);
+            out.emplace_back(line);
+        }
+    }
+    return out;
+}
+
 /// The panels drawn into the current framebuffer without any window: ImGui's OpenGL3 backend works
 /// in any context once the display size is set by hand.
-void draw_ui(State& state, int width, int height, bool help) {
+void draw_ui(State& state, const HeadlessOptions& o) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // no imgui.ini: images must not depend on earlier sessions
     apply_style();
-    io.DisplaySize = ImVec2(float(width), float(height));
+    io.DisplaySize = ImVec2(float(o.width), float(o.height));
     io.DeltaTime = 1.0f / 60.0f;
     ImGui_ImplOpenGL3_Init("#version 330 core");
-    Ui ui;
-    ui.window_size = {width, height};
-    ui.show_help = help;
-    // Two frames: the first lays windows out (auto-sized ones measure themselves), the second draws.
-    for (int pass = 0; pass < 2; ++pass) {
+    Ui ui = o.start ? *o.start : Ui{};
+    ui.window_size = {o.width, o.height};
+    ui.show_help = ui.show_help || o.help;
+    // Three frames: the first lays windows out (auto-sized ones measure themselves, the menu bar its
+    // height), the next settle scroll limits, the last draws.
+    for (int pass = 0; pass < 3; ++pass) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
         draw_panels(state, ui);
         ImGui::Render();
     }
+    if (o.cut) *o.cut = cut_windows(io.DisplaySize);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
@@ -48,7 +79,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     render::Renderer renderer;
     target.bind();
     renderer.draw(frame_of(state), state.camera, options.width, options.height);
-    if (options.ui) draw_ui(state, options.width, options.height, options.help);
+    if (options.ui) draw_ui(state, options);
     return target.read();
 }
 

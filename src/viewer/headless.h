@@ -1,9 +1,11 @@
 // Headless rendering through OSMesa: the same renderer (and optionally the same panels) as the window.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "disk_layer.h"
 #include "image.h"
+#include "panels.h"
 #include "state.h"
 
 namespace mobb::viewer {
@@ -12,6 +14,10 @@ struct HeadlessOptions {
     int width = 960, height = 540;
     bool ui = false;    ///< also draw the ImGui panels
     bool help = false;  ///< with ui: the Shortcuts window open too
+    const Ui* start = nullptr;  ///< with ui: the panels' state to start from (open panels, picks)
+    /// With ui: receives one line per window whose text does not fit ("Trace: 12 px too narrow") or
+    /// that reaches past the image.
+    std::vector<std::string>* cut = nullptr;
 };
 
 /// Renders the state into an image. Throws std::runtime_error when no context can be made.

@@ -33,10 +33,22 @@ bool drag(const char* label, double* v, float speed, double lo, double hi, const
     return ImGui::DragScalar(label, ImGuiDataType_Double, v, speed, &lo, &hi, format);
 }
 
+/// Saves the scene (placements and camera included) to ui.save_path; the outcome goes to ui.status.
+void save_to_path(State& s, Ui& ui) {
+    try {
+        sync_scene(s);
+        save_scene(s.scene, ui.save_path);
+        ui.status = "saved " + ui.save_path;
+    } catch (const std::exception& e) {
+        ui.status = e.what();
+    }
+}
+
 void scene_panel(State& s, Ui& ui) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(240, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Scene")) return ImGui::End();
+    if (!ui.panels.scene) return;
+    ImGui::SetNextWindowPos(ImVec2(8, ui.menu_height + 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Scene", &ui.panels.scene)) return ImGui::End();
     render::Layers& l = s.scene.layers;
     ImGui::Checkbox("grid", &l.grid);
     ImGui::SameLine();
@@ -71,15 +83,7 @@ void scene_panel(State& s, Ui& ui) {
     std::snprintf(path, sizeof path, "%s", ui.save_path.c_str());
     if (ImGui::InputText("##path", path, sizeof path)) ui.save_path = path;
     ImGui::SameLine();
-    if (ImGui::Button("save")) {
-        try {
-            sync_scene(s);
-            save_scene(s.scene, ui.save_path);
-            ui.status = "saved " + ui.save_path;
-        } catch (const std::exception& e) {
-            ui.status = e.what();
-        }
-    }
+    if (ImGui::Button("save")) save_to_path(s, ui);
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::End();
 }
@@ -118,43 +122,74 @@ bool placement_fields(const char* id, Placement& p) {
     return changed;
 }
 
-// The query's clearance over time (distance minus r_a + r_b, metres; below the line the disks overlap).
-// A click moves the time cursor there.
-void clearance_plot(State& s) {
+/// A plot's horizontal position under the mouse, 0..1 over the last item.
+/// The right-hand column (Query above Trace).
+constexpr float kRightWidth = 330.0f, kQueryHeight = 420.0f;
+
+float plot_fraction() {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    return std::clamp((ImGui::GetIO().MousePos.x - lo.x) / std::max(1.0f, hi.x - lo.x), 0.0f, 1.0f);
+}
+
+/// One more series drawn over the last PlotLines item, on its scale [lo, hi].
+void plot_overlay(const std::vector<float>& values, float lo, float hi, ImU32 colour) {
+    if (values.size() < 2 || !(hi > lo)) return;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const float x0 = a.x + st.FramePadding.x, x1 = b.x - st.FramePadding.x;
+    const float y0 = a.y + st.FramePadding.y, y1 = b.y - st.FramePadding.y;
+    std::vector<ImVec2> line;
+    for (std::size_t k = 0; k < values.size(); ++k)
+        line.emplace_back(x0 + (x1 - x0) * float(k) / float(values.size() - 1),
+                          y1 - (y1 - y0) * std::clamp((values[k] - lo) / (hi - lo), 0.0f, 1.0f));
+    ImGui::GetWindowDrawList()->AddPolyline(line.data(), int(line.size()), colour, 0, 1.5f);
+}
+
+/// A vertical line at time t on the last plot item spanning [t0, t1] (the time cursor).
+void time_line(double t, double t0, double t1, ImU32 colour) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    if (!(t1 > t0) || t < t0 || t > t1) return;
+    const float x = lo.x + float((t - t0) / (t1 - t0)) * (hi.x - lo.x);
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), colour);
+}
+
+// The distance between the query's clips A and B over time (ImGui's PlotLines, metres) against
+// r_a + r_b (red): where the distance dips under the red line the disks overlap. Clicking moves the
+// time cursor there.
+void distance_plot(State& s) {
     if (s.clearance.empty()) return ImGui::TextDisabled("the clips never meet in time");
-    std::vector<float> gaps;
-    float low = 0, high = 0;
+    const Path& pa = s.clips[std::size_t(s.scene.query_a)].tree->path();
+    const Path& pb = s.clips[std::size_t(s.scene.query_b)].tree->path();
+    std::vector<float> distance, radii;
+    float high = 0;
     std::size_t least = 0;
     for (std::size_t k = 0; k < s.clearance.size(); ++k) {
-        gaps.push_back(float(s.clearance[k].gap));
-        low = std::min(low, gaps.back()), high = std::max(high, gaps.back());
-        if (gaps[k] < gaps[least]) least = k;
+        const ClearanceSample& c = s.clearance[k];
+        const double r = pa.samples[std::size_t(c.i)].r + pb.samples[std::size_t(c.j)].r;
+        distance.push_back(float(c.gap + r));
+        radii.push_back(float(r));
+        high = std::max({high, distance.back(), radii.back()});
+        if (c.gap < s.clearance[least].gap) least = k;
     }
+    high *= 1.05f;
     char overlay[96];
-    std::snprintf(overlay, sizeof overlay, "least %.2f m at %.2f s", gaps[least], s.clearance[least].t);
-    ImGui::TextUnformatted("clearance (m) over time, 0 = touching");
-    ImGui::PlotLines("##clearance", gaps.data(), int(gaps.size()), 0, overlay, low, high,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 56));
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    if (high > low) {  // the zero line
-        const float y = hi.y - (0 - low) / (high - low) * (hi.y - lo.y);
-        ImGui::GetWindowDrawList()->AddLine(ImVec2(lo.x, y), ImVec2(hi.x, y), IM_COL32(230, 60, 60, 200));
-    }
-    const double t0 = s.clearance.front().t, t1 = s.clearance.back().t;
-    if (t1 > t0 && s.scene.cursor >= t0 && s.scene.cursor <= t1) {  // the time cursor
-        const float x = lo.x + float((s.scene.cursor - t0) / (t1 - t0)) * (hi.x - lo.x);
-        ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(240, 200, 80, 220));
-    }
-    if (ImGui::IsItemClicked()) {
-        const float f = std::clamp((ImGui::GetIO().MousePos.x - lo.x) / std::max(1.0f, hi.x - lo.x), 0.0f, 1.0f);
-        s.scene.cursor = s.clearance[std::min(s.clearance.size() - 1, std::size_t(f * float(s.clearance.size())))].t;
-    }
+    std::snprintf(overlay, sizeof overlay, "closest %.2f m at %.2f s", double(distance[least]), s.clearance[least].t);
+    ImGui::TextUnformatted("distance A-B against r_a + r_b (red), m");
+    ImGui::PlotLines("##distance", distance.data(), int(distance.size()), 0, overlay, 0.0f, high,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 64));
+    plot_overlay(radii, 0.0f, high, IM_COL32(230, 60, 60, 220));
+    time_line(s.scene.cursor, s.clearance.front().t, s.clearance.back().t, IM_COL32(240, 200, 80, 220));
+    if (ImGui::IsItemClicked())
+        s.scene.cursor =
+            s.clearance[std::min(s.clearance.size() - 1, std::size_t(plot_fraction() * float(s.clearance.size())))].t;
 }
 
 void query_panel(State& s, Ui& ui) {
-    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(280, 390), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Query")) return ImGui::End();
+    if (!ui.panels.query) return;
+    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - kRightWidth - 8, ui.menu_height + 8),
+                            ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kRightWidth, kQueryHeight), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Query", &ui.panels.query)) return ImGui::End();
     bool rerun = clip_combo("A", &s.scene.query_a, s);
     rerun |= clip_combo("B", &s.scene.query_b, s);
     const int a = s.scene.query_a, b = s.scene.query_b, n = int(s.clips.size());
@@ -187,7 +222,7 @@ void query_panel(State& s, Ui& ui) {
         ImGui::Text("2D tests %llu  3D tests %llu", (unsigned long long)s.stats.tests2d,
                     (unsigned long long)s.stats.tests3d);
         ImGui::Text("sample tests %llu  events %zu", (unsigned long long)s.stats.samples, s.trace.size());
-        clearance_plot(s);
+        distance_plot(s);
     } else {
         ImGui::TextDisabled("choose two different clips");
     }
@@ -197,9 +232,12 @@ void query_panel(State& s, Ui& ui) {
 const char* short_name(TraceTest t) { return to_string(t); }
 
 void trace_panel(State& s, Ui& ui) {
-    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - 288.0f, 406.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(280, std::max(160.0f, float(ui.window_size.y) - 414.0f)), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Trace")) return ImGui::End();
+    if (!ui.panels.trace) return;
+    const float top = ui.menu_height + kQueryHeight + 16;
+    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - kRightWidth - 8, top), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kRightWidth, std::max(160.0f, float(ui.window_size.y) - top - 8)),
+                             ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Trace", &ui.panels.trace)) return ImGui::End();
     const int last = int(s.trace.size()) - 1;
     const int step = shown_step(s);
     if (ImGui::Button("|<")) go_to_step(s, ui, 0);
@@ -214,6 +252,7 @@ void trace_panel(State& s, Ui& ui) {
     ImGui::SliderFloat("steps/s", &ui.rate, 0.5f, 60.0f, "%.1f");
     int k = step;
     if (last >= 0 && ImGui::SliderInt("step", &k, 0, last)) go_to_step(s, ui, k);
+    outcome_strip(s, ui);
     ImGui::Checkbox("cursor follows step", &ui.follow);
     ImGui::Separator();
     ImGui::BeginChild("events");
@@ -256,16 +295,48 @@ void update_fit(const State& s, FitTable& fit) {
     fit.revision = s.revision;
 }
 
+/// Tightness per level (ImGui's PlotLines): MOBB area ratio (white), UMOBB volume ratio (blue), PCA
+/// area ratio (orange); lower is tighter. Clicking a level shows its boxes.
+void tightness_plot(State& s, const FitTable& fit) {
+    const std::size_t rows = std::min({fit.mobb.size(), fit.umobb.size(), fit.pca.size()});
+    if (rows < 2) return;
+    std::vector<float> m, u, p;
+    float high = 1.0f;
+    for (std::size_t r = 0; r < rows; ++r) {
+        m.push_back(float(fit.mobb[r].area_ratio));
+        u.push_back(float(fit.umobb[r].volume_ratio));
+        p.push_back(float(fit.pca[r].area_ratio));
+        high = std::max({high, m.back(), u.back(), p.back()});
+    }
+    ImGui::TextColored(ImVec4(0.85f, 0.85f, 0.85f, 1), "MOBB");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.4f, 0.6f, 1.0f, 1), "UMOBB");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1), "PCA");
+    ImGui::SameLine();
+    ImGui::TextDisabled("by level, 1 = perfect (bottom)");
+    ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(0.85f, 0.85f, 0.85f, 1));
+    ImGui::PlotLines("##tightness", m.data(), int(m.size()), 0, nullptr, 1.0f, high * 1.05f,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 48));
+    ImGui::PopStyleColor();
+    plot_overlay(u, 1.0f, high * 1.05f, IM_COL32(100, 150, 255, 255));
+    plot_overlay(p, 1.0f, high * 1.05f, IM_COL32(255, 150, 50, 255));
+    if (ImGui::IsItemClicked())
+        s.scene.layers.level = std::min(int(rows) - 1, int(plot_fraction() * float(rows - 1) + 0.5f));
+}
+
 void fit_panel(State& s, Ui& ui) {
-    ImGui::SetNextWindowPos(ImVec2(8, float(ui.window_size.y) - 196.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(400, 188), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Tree fit")) return ImGui::End();
+    if (!ui.panels.fit) return;
+    ImGui::SetNextWindowPos(ImVec2(8, float(ui.window_size.y) - 8.0f), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Tree fit", &ui.panels.fit)) return ImGui::End();
     if (clip_combo("clip", &ui.fit.clip, s)) ui.fit.mobb.clear();
     update_fit(s, ui.fit);
     ImGui::TextDisabled("tight = box / covered (area, volume); 1 is perfect");
     const ImGuiTableFlags flags =
         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("fit", 7, flags)) {
+    const float rows_shown = float(std::min<std::size_t>(ui.fit.mobb.size(), 5)) + 1.3f;
+    if (ImGui::BeginTable("fit", 7, flags, ImVec2(0, rows_shown * ImGui::GetTextLineHeightWithSpacing() + 4))) {
         for (const char* h : {"lvl", "nodes", "MOBB m2", "tight", "UMOBB m2s", "tight", "PCA tight"})
             ImGui::TableSetupColumn(h);
         ImGui::TableSetupScrollFreeze(0, 1);
@@ -291,26 +362,7 @@ void fit_panel(State& s, Ui& ui) {
         }
         ImGui::EndTable();
     }
-    ImGui::End();
-}
-
-void pick_panel(const State& s, const Ui& ui) {
-    const Pick& p = ui.pick;
-    if (p.clip < 0 || p.clip >= int(s.clips.size())) return;
-    const Path& path = s.clips[std::size_t(p.clip)].tree->path();
-    if (p.sample < 0 || p.sample >= int(path.size())) return;
-    const Placement& place = s.places[std::size_t(p.clip)];
-    const Sample& smp = path.samples[std::size_t(p.sample)];
-    const Rigid2 m = Rigid2::of(place);
-    ImGui::SetNextWindowPos(ImVec2(266, 8), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Picked disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::TextColored(imvec(render::clip_color(p.clip)), "clip %d: %s", p.clip,
-                       s.clips[std::size_t(p.clip)].name.c_str());
-    ImGui::Text("sample %d", p.sample);
-    ImGui::Text("time %.3f .. %.3f s", sample_time(place, path.dt, p.sample),
-                sample_time(place, path.dt, p.sample + 1));
-    ImGui::Text("position %.3f, %.3f m", m.apply_x(smp.x, smp.y), m.apply_y(smp.x, smp.y));
-    ImGui::Text("radius %.3f m", smp.r);
+    tightness_plot(s, ui.fit);
     ImGui::End();
 }
 
@@ -362,6 +414,36 @@ void timeline_strip(State& s) {
         s.scene.cursor = std::clamp(double(frame), 0.0, frames) * r.dt;
 }
 
+/// Fallbacks and agent pairs in contact per second of the run (ImGui's PlotHistogram); a click moves the
+/// time cursor there.
+void events_over_time(State& s) {
+    if (s.crowd->marks.empty()) return;  // nothing to plot: the counts below say so
+    const crowd::Record& r = s.crowd->record;
+    const double seconds = double(r.frames) * r.dt;
+    const int bins = std::clamp(int(std::ceil(seconds)), 1, 600);
+    std::vector<float> fallbacks(std::size_t(bins), 0.0f), contacts(std::size_t(bins), 0.0f);
+    for (const TimelineMark& m : s.crowd->marks) {
+        const auto b = std::size_t(std::clamp(int(double(m.frame) * r.dt / seconds * bins), 0, bins - 1));
+        if (m.kind == TimelineMark::Fallback)
+            fallbacks[b] += 1.0f;
+        else
+            contacts[b] += float(m.count);
+    }
+    const float w = ImGui::GetContentRegionAvail().x;
+    const auto plot = [&](const char* id, const std::vector<float>& v, ImVec4 colour, const char* what) {
+        const float high = std::max(1.0f, *std::max_element(v.begin(), v.end()));
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "%s per second (max %.0f)", what, double(high));
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colour);
+        ImGui::PlotHistogram(id, v.data(), int(v.size()), 0, overlay, 0.0f, high, ImVec2(w, 30));
+        ImGui::PopStyleColor();
+        time_line(s.scene.cursor, 0.0, seconds, IM_COL32(255, 255, 255, 200));
+        if (ImGui::IsItemClicked()) s.scene.cursor = double(plot_fraction()) * seconds;
+    };
+    plot("##fallbacks", fallbacks, ImVec4(1.0f, 0.63f, 0.16f, 1.0f), "fallbacks");
+    plot("##contacts", contacts, ImVec4(0.92f, 0.16f, 0.16f, 1.0f), "contact pairs");
+}
+
 /// One candidate of the selected choice point, coloured taken / clear / rejected, unfolding into its
 /// queries in the order the crowd ran them (other agent, its clip, the answer); clicking one opens it
 /// in the trace debugger.
@@ -402,9 +484,10 @@ void crowd_panel(State& s, Ui& ui) {
     CrowdView& v = *s.crowd;
     const crowd::Record& r = v.record;
     // Bottom middle, between the tree-fit and trace panels, clear of the crowd seen from the default camera.
-    ImGui::SetNextWindowPos(ImVec2(416, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(316, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Crowd")) return ImGui::End();
+    if (!ui.panels.crowd) return;
+    ImGui::SetNextWindowPos(ImVec2(456, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Crowd", &ui.panels.crowd)) return ImGui::End();
     if (!r.scenario.empty()) ImGui::Text("scenario %s", r.scenario.c_str());
     ImGui::Text("%d agents, %.1f s, %s, seed %llu", v.agents, double(r.frames) * r.dt, r.select.c_str(),
                 static_cast<unsigned long long>(r.seed));
@@ -418,6 +501,7 @@ void crowd_panel(State& s, Ui& ui) {
     const auto count = [&](TimelineMark::Kind kind) {
         return std::count_if(v.marks.begin(), v.marks.end(), [&](const auto& m) { return m.kind == kind; });
     };
+    events_over_time(s);
     ImGui::TextColored(ImVec4(1.0f, 0.63f, 0.16f, 1.0f), "%ld fallbacks", long(count(TimelineMark::Fallback)));
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(0.92f, 0.16f, 0.16f, 1.0f), "%ld contact frames", long(count(TimelineMark::Contact)));
@@ -460,6 +544,25 @@ void crowd_panel(State& s, Ui& ui) {
     ImGui::End();
 }
 
+/// The main menu bar: File (open, save), View (every panel, the Shortcuts window).
+void main_menu(State& s, Ui& ui) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    ui.menu_height = ImGui::GetWindowSize().y;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open...", "O")) ui.panels.open = true;
+        if (ImGui::MenuItem("Save scene", nullptr, false, s.crowd == nullptr)) save_to_path(s, ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        for (const PanelInfo& p : panel_list())
+            if (p.open != &PanelsOpen::crowd || s.crowd) ImGui::MenuItem(p.name, nullptr, &(ui.panels.*p.open));
+        ImGui::Separator();
+        ImGui::MenuItem("Shortcuts", "F1", &ui.show_help);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
 }  // namespace
 
 void go_to_step(State& s, Ui& ui, int k) {
@@ -467,6 +570,7 @@ void go_to_step(State& s, Ui& ui, int k) {
     k = std::clamp(k, 0, int(s.trace.size()) - 1);
     s.scene.step = k;
     ui.scroll_to_step = true;
+    ui.reveal_step = true;
     if (!ui.follow) return;
     // The cursor goes to the middle of the time both nodes share (or node A's start when none).
     const TraceEvent& e = s.trace[std::size_t(k)];
@@ -511,13 +615,27 @@ void apply_style() {
     style.Alpha = 0.96f;
 }
 
+const std::vector<PanelInfo>& panel_list() {
+    static const std::vector<PanelInfo> list = {
+        {"Scene", &PanelsOpen::scene},         {"Query", &PanelsOpen::query},
+        {"Trace", &PanelsOpen::trace},         {"Recursion", &PanelsOpen::recursion},
+        {"Tree fit", &PanelsOpen::fit},        {"Inspector", &PanelsOpen::inspector},
+        {"Crowd", &PanelsOpen::crowd},         {"Open", &PanelsOpen::open},
+    };
+    return list;
+}
+
 void draw_panels(State& s, Ui& ui) {
+    open_dropped(s, ui);
+    main_menu(s, ui);
     scene_panel(s, ui);
     query_panel(s, ui);
     trace_panel(s, ui);
+    recursion_panel(s, ui);
     fit_panel(s, ui);
-    pick_panel(s, ui);
+    inspector_panel(s, ui);
     crowd_panel(s, ui);
+    open_panel(s, ui);
     shortcuts_window(ui);
 }
 

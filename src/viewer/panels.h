@@ -1,4 +1,5 @@
-// Dear ImGui panels: scene and layers, query debugger, trace list, tree fit, picked disk.
+// Dear ImGui panels: scene and layers, query debugger, trace list, recursion view, tree fit, inspector,
+// crowd, open files; a View menu opens and closes each of them.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -7,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "mobb/core/tree.h"
+#include "recursion.h"
 #include "state.h"
 
 namespace mobb::viewer {
@@ -16,6 +18,19 @@ struct Pick {
     int clip = -1;
     int sample = -1;
 };
+
+/// Which panels are open (each closable; the View menu lists them, the settings file keeps them).
+struct PanelsOpen {
+    bool scene = true, query = true, trace = true, recursion = true, fit = true, inspector = true, crowd = true;
+    bool open = false;  ///< the Open panel (data folder)
+};
+
+struct PanelInfo {
+    const char* name;  ///< the window title, also the key in the settings file
+    bool PanelsOpen::*open;
+};
+/// Every panel in View-menu order.
+const std::vector<PanelInfo>& panel_list();
 
 /// Per-level statistics of the three fits of one clip, for the tree-fit panel.
 struct FitTable {
@@ -33,19 +48,47 @@ struct Ui {
     double play_clock = 0.0;
     bool follow = true;  ///< move the time cursor to each trace step
     bool scroll_to_step = true;
-    Pick pick;
+    PanelsOpen panels;
+    Pick pick;   ///< the last disk clicked (the inspector)
+    Pick ruler;  ///< the one clicked before it: the inspector measures from it to `pick`
+    std::vector<int> picked_events;  ///< trace events whose node holds the picked disk
     FitTable fit;
+    Recursion recursion;  ///< of state.trace at recursion_revision
+    std::uint64_t recursion_revision = 0;
+    std::vector<std::string> dropped;  ///< files dropped on the window, opened on the next frame
+    std::vector<std::string> data_files;  ///< the Open panel's listing of the data folder (relative names)
+    bool data_listed = false;
+    std::string open_filter;
+    std::string open_status;  ///< the last file opened, or why it could not be
     std::string save_path = "scene.json";
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
     int request_view = 0;    ///< 1 top, 2 side
+    bool request_quit = false;
     bool show_help = false;  ///< the Shortcuts window (F1 or ?)
+    bool reveal_step = true;  ///< the recursion view unfolds to the shown step once
+    float menu_height = 0;    ///< the main menu bar's height (panels start below it)
 };
 
 /// The viewer's compact dark style (call once after ImGui::CreateContext).
 void apply_style();
 
 void draw_panels(State& state, Ui& ui);
+
+/// A disk clicked in the 3D view: it becomes the pick, the previous pick the ruler's other end, and
+/// when it belongs to the query's clips the trace goes to the last event whose node holds it.
+void click_disk(State& state, Ui& ui, const Pick& pick);
+/// A click on the query's box `node` of clip `clip` (away from any disk): its events are selected and
+/// the trace goes to the last of them.
+void click_box(State& state, Ui& ui, int clip, std::int32_t node);
+
+// One file each (panels.cpp draws them in order).
+void recursion_panel(State& state, Ui& ui);
+void outcome_strip(State& state, Ui& ui);  ///< under the Trace panel's step slider
+void inspector_panel(State& state, Ui& ui);
+void open_panel(State& state, Ui& ui);
+/// Opens the files dropped on the window; what happened goes to ui.open_status.
+void open_dropped(State& state, Ui& ui);
 
 /// Moves to trace step k (clamped) and, when following, puts the time cursor on it.
 void go_to_step(State& state, Ui& ui, int k);

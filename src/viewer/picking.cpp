@@ -1,7 +1,13 @@
 #include "picking.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "box_layer.h"
 
 namespace mobb::viewer {
 
@@ -33,7 +39,7 @@ double enter_cylinder(const render::Ray& ray, double cx, double cz, double r, do
 
 }  // namespace
 
-Pick pick_disk(const State& s, const render::Ray& ray) {
+Pick pick_disk(const State& s, const render::Ray& ray, double* distance) {
     Pick best;
     double nearest = std::numeric_limits<double>::infinity();
     const double ts = s.scene.time_scale;
@@ -52,7 +58,74 @@ Pick pick_disk(const State& s, const render::Ray& ray) {
             }
         }
     }
+    if (distance) *distance = nearest;
     return best;
+}
+
+namespace {
+
+/// Entry parameter of a ray (space-time origin and direction) into a box, infinity when it misses.
+double enter_box(const Obb3& box, const glm::dvec3& origin, const glm::dvec3& dir) {
+    const glm::dvec3 o = glm::transpose(box.axes) * (origin - box.center), d = glm::transpose(box.axes) * dir;
+    double lo = 0, hi = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+        if (std::fabs(d[i]) < 1e-12) {
+            if (std::fabs(o[i]) > box.half[i]) return std::numeric_limits<double>::infinity();
+            continue;
+        }
+        double a = (-box.half[i] - o[i]) / d[i], b = (box.half[i] - o[i]) / d[i];
+        if (a > b) std::swap(a, b);
+        lo = std::max(lo, a), hi = std::min(hi, b);
+        if (lo > hi) return std::numeric_limits<double>::infinity();
+    }
+    return lo;
+}
+
+}  // namespace
+
+BoxPick pick_box(const State& s, const render::Ray& ray) {
+    BoxPick best;
+    best.distance = std::numeric_limits<double>::infinity();
+    const render::Layers& l = s.scene.layers;
+    if (!l.boxes || !s.queried) return best;
+    // The ray in space-time: GL (x, t * scale, -y) back to (x, y, t); the ray parameter is unchanged.
+    const double ts = s.scene.time_scale;
+    const glm::dvec3 origin(ray.origin.x, -ray.origin.z, ray.origin.y / ts), dir(ray.dir.x, -ray.dir.z, ray.dir.y / ts);
+    for (int clip : {s.scene.query_a, s.scene.query_b}) {
+        const Tree& tree = *s.clips[std::size_t(clip)].tree;
+        const SpaceTimeRigid m = SpaceTimeRigid::of(s.places[std::size_t(clip)]);
+        for (std::size_t n = 0; n < tree.nodes().size(); ++n) {
+            const Node& node = tree.nodes()[n];
+            if (!l.all_levels && !render::shown_at_level(node, l.level, l.levels)) continue;
+            const double d = enter_box(transformed(tree.box3(node), m), origin, dir);
+            if (d < best.distance) best = {clip, std::int32_t(n), d};
+        }
+    }
+    return best;
+}
+
+std::optional<DiskInfo> disk_of(const State& s, const Pick& p) {
+    if (p.clip < 0 || p.clip >= int(s.clips.size())) return std::nullopt;
+    const Path& path = s.clips[std::size_t(p.clip)].tree->path();
+    if (p.sample < 0 || p.sample >= int(path.size())) return std::nullopt;
+    const Placement& place = s.places[std::size_t(p.clip)];
+    const Sample& smp = path.samples[std::size_t(p.sample)];
+    const Rigid2 m = Rigid2::of(place);
+    return DiskInfo{{m.apply_x(smp.x, smp.y), m.apply_y(smp.x, smp.y)},
+                    sample_time(place, path.dt, p.sample),
+                    sample_time(place, path.dt, p.sample + 1),
+                    smp.r};
+}
+
+std::optional<Ruler> measure(const State& s, const Pick& a, const Pick& b) {
+    const auto da = disk_of(s, a), db = disk_of(s, b);
+    if (!da || !db) return std::nullopt;
+    Ruler r;
+    r.distance = glm::length(da->centre - db->centre);
+    r.time_gap = std::max({0.0, db->t0 - da->t1, da->t0 - db->t1});
+    r.radii = da->r + db->r;
+    r.clearance = r.distance - r.radii;
+    return r;
 }
 
 std::optional<glm::dvec2> ground_point(const render::Ray& ray, double height) {

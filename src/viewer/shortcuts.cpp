@@ -10,13 +10,24 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_SPACE, false, false, Command::TogglePlay, "Space", "play / pause the trace"},
         {GLFW_KEY_RIGHT, false, true, Command::StepForward, "Right", "next trace step"},
         {GLFW_KEY_LEFT, false, true, Command::StepBack, "Left", "previous trace step"},
+        {GLFW_KEY_HOME, false, false, Command::FirstStep, "Home", "first trace step"},
+        {GLFW_KEY_END, false, false, Command::LastStep, "End", "last trace step"},
         {GLFW_KEY_F, false, false, Command::FrameAll, "F", "frame everything"},
         {GLFW_KEY_T, false, false, Command::TopView, "T", "view from the top (space-time seen along t)"},
         {GLFW_KEY_S, false, false, Command::SideView, "S", "view from the side"},
+        {GLFW_KEY_O, false, false, Command::OpenFiles, "O", "open clip files (the Open panel)"},
+        {GLFW_KEY_ESCAPE, false, false, Command::ClearPicks, "Esc", "clear the picked disks (Inspector)"},
+        {GLFW_KEY_Q, false, false, Command::Quit, "Q", "quit (the window's settings are kept)"},
         {GLFW_KEY_F1, false, false, Command::ToggleHelp, "F1", "show / hide this window"},
         {GLFW_KEY_SLASH, true, false, Command::ToggleHelp, "Shift+/ (?)", "show / hide this window"},
     };
     return table;
+}
+
+const Shortcut* find_shortcut(int key, bool shift, bool repeat) {
+    for (const Shortcut& k : shortcuts())
+        if (k.key == key && k.shift == shift && (!repeat || k.repeat)) return &k;
+    return nullptr;
 }
 
 const std::vector<Gesture>& gestures() {
@@ -24,7 +35,9 @@ const std::vector<Gesture>& gestures() {
         {"drag", "orbit"},
         {"Shift+drag, middle drag", "pan"},
         {"wheel", "zoom"},
-        {"click", "pick a disk (Picked panel)"},
+        {"click", "pick a disk (Inspector; two picks: ruler), select its trace events"},
+        {"click a box", "(away from disks) select the trace events on its node"},
+        {"drop files", "open BVH / GLB files as clips"},
         {"Ctrl+drag", "move a clip on its ground plane (the query reruns)"},
     };
     return table;
@@ -35,6 +48,14 @@ void run_command(Command command, State& s, Ui& ui) {
         case Command::TogglePlay: ui.playing = !ui.playing; break;
         case Command::StepForward: go_to_step(s, ui, shown_step(s) + 1); break;
         case Command::StepBack: go_to_step(s, ui, shown_step(s) - 1); break;
+        case Command::FirstStep: go_to_step(s, ui, 0); break;
+        case Command::LastStep: go_to_step(s, ui, int(s.trace.size()) - 1); break;
+        case Command::OpenFiles: ui.panels.open = !ui.panels.open; break;
+        case Command::ClearPicks:
+            ui.pick = ui.ruler = {};
+            ui.picked_events.clear();
+            break;
+        case Command::Quit: ui.request_quit = true; break;
         case Command::FrameAll: ui.request_frame_all = true; break;
         case Command::TopView: ui.request_view = 1; break;
         case Command::SideView: ui.request_view = 2; break;

@@ -9,7 +9,20 @@
 
 namespace mobb::viewer {
 
-enum class Command : std::uint8_t { TogglePlay, StepForward, StepBack, FrameAll, TopView, SideView, ToggleHelp };
+enum class Command : std::uint8_t {
+    TogglePlay,
+    StepForward,
+    StepBack,
+    FirstStep,
+    LastStep,
+    FrameAll,
+    TopView,
+    SideView,
+    OpenFiles,
+    ClearPicks,
+    Quit,
+    ToggleHelp,
+};
 
 struct Shortcut {
     int key = 0;          ///< GLFW key code
@@ -20,6 +33,10 @@ struct Shortcut {
     const char* what = "";
 };
 const std::vector<Shortcut>& shortcuts();
+
+/// The shortcut a key event runs: `repeat` for the window system's auto-repeat of a held key (only
+/// shortcuts marked repeat answer it). Null when none.
+const Shortcut* find_shortcut(int key, bool shift, bool repeat);
 
 /// A mouse gesture over the 3D view (handled by the window's mouse code), for the Shortcuts window.
 struct Gesture {

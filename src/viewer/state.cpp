@@ -56,6 +56,28 @@ State load_state(const Scene& scene, float aspect) {
     return s;
 }
 
+int add_clip_file(State& s, const std::string& file) {
+    // A crowd's clips are its agents, indexed by their tracks: no room for one more.
+    if (s.crowd) throw io::LoadError(file + ": clip files open into scenes, not into a crowd record");
+    SceneClip c;
+    c.file = io::data_relative(std::filesystem::absolute(file).string());
+    LoadedClip loaded = load_clip(c, 0);
+    loaded.tree = std::make_unique<Tree>(Tree::build(loaded.clip->path, s.scene.tree));
+    const int at = int(s.scene.clips.size());
+    s.scene.clips.push_back(c);
+    s.clips.insert(s.clips.begin() + at, std::move(loaded));
+    s.places.insert(s.places.begin() + at, c.place);
+    for (int* q : {&s.scene.query_a, &s.scene.query_b})
+        if (*q >= at) ++*q;  // generated walks moved up by one
+    const int n = int(s.clips.size());
+    if (s.scene.query_a < 0 || s.scene.query_a >= n)
+        s.scene.query_a = at;
+    else if ((s.scene.query_b < 0 || s.scene.query_b >= n) && s.scene.query_a != at)
+        s.scene.query_b = at;
+    run_query(s);
+    return at;
+}
+
 void rebuild_trees(State& s) {
     for (std::size_t k = 0; k < s.clips.size(); ++k)
         s.clips[k].tree = std::make_unique<Tree>(Tree::build(path_of(s, k), s.scene.tree));

@@ -48,6 +48,12 @@ struct State {
 /// ViewerError naming the file.
 State load_state(const Scene& scene, float aspect);
 
+/// Opens a BVH / glTF file as one more scene clip (after the scene's clips, before generated walks) at
+/// the origin, builds its tree and, when the query lacks a clip, makes it the query's A or B. Returns
+/// its index. Throws io::LoadError naming the file (also for a crowd record's state); the state is
+/// unchanged then.
+int add_clip_file(State& state, const std::string& file);
+
 void rebuild_trees(State& state);  ///< after tree options change; also re-runs the query
 void run_query(State& state);      ///< after placements or the query's clips change
 void frame_all(State& state, float aspect);

@@ -1,9 +1,12 @@
 #include "window.h"
 
+#include <filesystem>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
 
 #include "context_glfw.h"
 #include "gl.h"
@@ -12,6 +15,7 @@
 #include "picking.h"
 #include "renderer.h"
 #include "shortcuts.h"
+#include "view_settings.h"
 
 namespace mobb::viewer {
 
@@ -30,6 +34,16 @@ struct Input {
 
 render::Ray mouse_ray(const State& s, const ImGuiIO& io) {
     return s.camera.ray(io.MousePos.x, io.MousePos.y, io.DisplaySize.x, io.DisplaySize.y);
+}
+
+/// A click in the 3D view: a disk picks it; away from disks, a box of the query selects its events.
+void click(State& s, Ui& ui, const ImGuiIO& io) {
+    const render::Ray ray = mouse_ray(s, io);
+    double disk = 0;
+    const Pick p = pick_disk(s, ray, &disk);
+    if (p.clip >= 0) return click_disk(s, ui, p);
+    const BoxPick b = pick_box(s, ray);
+    if (b.node >= 0) click_box(s, ui, b.clip, b.node);
 }
 
 void mouse(State& s, Ui& ui, Input& in) {
@@ -70,16 +84,42 @@ void mouse(State& s, Ui& ui, Input& in) {
             }
         }
     }
-    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && in.drag == Drag::Orbit && in.travel < 4)
-        ui.pick = pick_disk(s, mouse_ray(s, io));
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && in.drag == Drag::Orbit && in.travel < 4) click(s, ui, io);
     if (!held) in.drag = Drag::None;
 }
 
-void keyboard(State& s, Ui& ui) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureKeyboard) return;
-    for (const Shortcut& k : shortcuts())
-        if (k.shift == io.KeyShift && ImGui::IsKeyPressed(k.key, k.repeat)) run_command(k.command, s, ui);
+/// What GLFW's callbacks collected since the last frame (the window's user pointer). Keys come from
+/// the callback rather than ImGui's per-frame key state so that a press released within one slow
+/// frame still counts, and each press counts once.
+struct Events {
+    struct Key {
+        int key;
+        bool shift, repeat;
+    };
+    std::vector<Key> keys;
+    std::vector<std::string> dropped;
+};
+
+void on_key(GLFWwindow* window, int key, int, int action, int mods) {
+    auto* events = static_cast<Events*>(glfwGetWindowUserPointer(window));
+    if (events && action != GLFW_RELEASE)
+        events->keys.push_back({key, (mods & GLFW_MOD_SHIFT) != 0, action == GLFW_REPEAT});
+}
+
+/// GLFW's drop callback: the paths are opened on the next frame.
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+    auto* events = static_cast<Events*>(glfwGetWindowUserPointer(window));
+    for (int k = 0; events && k < count; ++k) events->dropped.emplace_back(paths[k]);
+}
+
+void keyboard(State& s, Ui& ui, Events& events) {
+    const bool typing = ImGui::GetIO().WantCaptureKeyboard;
+    for (const Events::Key& k : events.keys)
+        if (const Shortcut* sc = typing ? nullptr : find_shortcut(k.key, k.shift, k.repeat))
+            run_command(sc->command, s, ui);
+    events.keys.clear();
+    ui.dropped.insert(ui.dropped.end(), events.dropped.begin(), events.dropped.end());
+    events.dropped.clear();
 }
 
 void apply_requests(State& s, Ui& ui, float aspect) {
@@ -90,14 +130,44 @@ void apply_requests(State& s, Ui& ui, float aspect) {
     ui.request_frame_all = false;
 }
 
+/// ImGui's ini in the user's config folder, with the panels' open flags and the camera of `key` in it.
+/// Loaded now (not at the first frame) so the camera is in place before anything is drawn.
+void load_settings(State& s, Ui& ui, ViewSettings& settings, const std::string& file, const std::string& key) {
+    add_settings_handler(settings);
+    if (file.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
+    ImGui::GetIO().IniFilename = file.c_str();
+    if (std::filesystem::exists(file)) ImGui::LoadIniSettingsFromDisk(file.c_str());
+    if (settings.panels_read) ui.panels = settings.panels;
+    if (const auto c = settings.cameras.find(key); !key.empty() && c != settings.cameras.end()) s.camera = c->second;
+}
+
+/// Copies what changed into the settings and tells ImGui to write its ini (at its own pace).
+void keep_settings(const State& s, const Ui& ui, ViewSettings& settings, const std::string& key) {
+    const PanelsOpen& p = settings.panels;
+    bool changed = false;
+    for (const PanelInfo& info : panel_list()) changed |= p.*info.open != ui.panels.*info.open;
+    settings.panels = ui.panels;
+    if (!key.empty() && camera_line(settings.cameras[key]) != camera_line(s.camera)) {
+        settings.cameras[key] = s.camera;
+        changed = true;
+    }
+    if (changed) ImGui::MarkIniSettingsDirty();
+}
+
 }  // namespace
 
 void run_window(State& s, const WindowOptions& options) {
     render::GlfwWindow window("mobb view", options.width, options.height);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // layouts come from the code, not from a file in the working folder
+    ImGui::GetIO().IniFilename = nullptr;  // never imgui.ini in the working folder
     apply_style();
+    Events events;
+    glfwSetWindowUserPointer(window.handle(), &events);
+    glfwSetKeyCallback(window.handle(), on_key);  // before ImGui's, which calls it after its own
+    glfwSetDropCallback(window.handle(), on_drop);
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     {
@@ -105,23 +175,29 @@ void run_window(State& s, const WindowOptions& options) {
         Ui ui;
         Input input;
         if (!options.scene_file.empty()) ui.save_path = options.scene_file;
-        for (int frame = 1; !window.should_close(); ++frame) {
+        const std::string ini = settings_file();
+        ViewSettings settings;
+        load_settings(s, ui, settings, ini, options.settings_key);
+        for (int frame = 1;; ++frame) {
             glfwPollEvents();
+            // The last frame: closed, quit (Q), or the frame count reached; drawn, then saved if asked.
+            const bool last = window.should_close() || ui.request_quit || (options.frames > 0 && frame >= options.frames);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             const glm::ivec2 size = window.window_size(), fb = window.framebuffer_size();
             ui.window_size = size;
             mouse(s, ui, input);
-            keyboard(s, ui);
+            keyboard(s, ui, events);
             update_playback(s, ui, ImGui::GetIO().DeltaTime);
             draw_panels(s, ui);
             apply_requests(s, ui, float(size.x) / float(std::max(size.y, 1)));
+            keep_settings(s, ui, settings, options.settings_key);
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             renderer.draw(frame_of(s), s.camera, fb.x, fb.y);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            if (options.frames > 0 && frame >= options.frames) {
+            if (last) {
                 if (!options.screenshot.empty()) {
                     glFinish();
                     glReadBuffer(GL_BACK);
@@ -131,10 +207,13 @@ void run_window(State& s, const WindowOptions& options) {
             }
             window.swap();
         }
+        if (!ini.empty()) ImGui::SaveIniSettingsToDisk(ini.c_str());
+        ImGui::GetIO().IniFilename = nullptr;  // `ini` goes out of scope before DestroyContext
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
+    glfwSetWindowUserPointer(window.handle(), nullptr);
 }
 
 }  // namespace mobb::viewer

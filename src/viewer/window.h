@@ -11,6 +11,9 @@ struct WindowOptions {
     int frames = 0;          ///< > 0: close after this many frames (smoke tests)
     std::string screenshot;  ///< when set: save the last frame's framebuffer here
     std::string scene_file;  ///< the default path of "save"
+    /// Names what is shown (a scene file, the clip files, a crowd record): the settings file keeps
+    /// the camera under it. Empty: the camera is neither restored nor kept.
+    std::string settings_key;
 };
 
 /// Runs until the window closes. Throws std::runtime_error when no window can be opened.

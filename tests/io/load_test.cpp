@@ -239,14 +239,18 @@ TEST(LoadOptionText, ParsesOrNamesTheOption) {
     t.scale = "0.01";
     t.frames = "5:20";
     t.fps = 30;
+    t.animation = "Take 001";
+    t.root = "Hips";
     const LoadOptions o = parse_load_options(t);
     EXPECT_EQ(o.up, UpAxis::Z);
+    EXPECT_EQ(o.animation, "Take 001");
+    EXPECT_EQ(o.root, "Hips");
     EXPECT_EQ(*o.scale, 0.01);
     EXPECT_EQ(o.frame_begin, 5);
     EXPECT_EQ(o.frame_end, 20);
     EXPECT_EQ(*o.fps, 30.0);
     EXPECT_FALSE(parse_load_options({}).scale.has_value());
-    EXPECT_EQ(parse_load_options({"y", "auto", "7:", 0, 0, ""}).frame_end, -1);
+    EXPECT_EQ(parse_load_options({"y", "auto", "7:", 0, 0, "", ""}).frame_end, -1);
     const auto error = [](LoadOptionText x) {
         try {
             parse_load_options(x);
@@ -255,11 +259,11 @@ TEST(LoadOptionText, ParsesOrNamesTheOption) {
         }
         return std::string();
     };
-    EXPECT_EQ(error({"w", "auto", "", 0, 0, ""}).rfind("--up:", 0), 0u);
-    EXPECT_EQ(error({"y", "-1", "", 0, 0, ""}), "--scale: must be positive");
-    EXPECT_EQ(error({"y", "1cm", "", 0, 0, ""}), "--scale: '1cm' is not a finite number");
-    EXPECT_EQ(error({"y", "auto", "5:2", 0, 0, ""}), "--frames: expected whole numbers 0 <= A < B, got '5:2'");
-    EXPECT_EQ(error({"y", "auto", "5", 0, 0, ""}), "--frames: expected A:B, got '5'");
+    EXPECT_EQ(error({"w", "auto", "", 0, 0, "", ""}).rfind("--up:", 0), 0u);
+    EXPECT_EQ(error({"y", "-1", "", 0, 0, "", ""}), "--scale: must be positive");
+    EXPECT_EQ(error({"y", "1cm", "", 0, 0, "", ""}), "--scale: '1cm' is not a finite number");
+    EXPECT_EQ(error({"y", "auto", "5:2", 0, 0, "", ""}), "--frames: expected whole numbers 0 <= A < B, got '5:2'");
+    EXPECT_EQ(error({"y", "auto", "5", 0, 0, "", ""}), "--frames: expected A:B, got '5'");
 }
 
 }  // namespace

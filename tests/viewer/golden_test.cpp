@@ -10,6 +10,7 @@
 
 #include "crowd_view.h"
 #include "headless.h"
+#include "panels.h"
 #include "image_diff.h"
 #include "render_test_util.h"
 #include "scene.h"
@@ -66,9 +67,10 @@ void check_image(const std::string& name, const render::Image& actual) {
     const Diff diff = compare(expected, actual, tolerance);
     if (!diff.matches(tolerance)) {
         const std::string base = write_failure(MOBB_TEST_OUT, c.name, expected, actual, diff);
-        FAIL() << c.name << ": " << diff.differing << " pixels differ (" << diff.fraction * 100
-               << "%, largest channel difference " << diff.largest << "); see " << base
-               << ".{expected,actual,diff}.png";
+        FAIL() << c.name << ": " << diff.differing << " pixels differ (" << diff.fraction * 100 << "%, allowed "
+               << tolerance.fraction * 100 << "%; largest channel difference " << diff.largest << ", hard limit "
+               << tolerance.hard << "); see " << base << ".expected.png, " << base << ".actual.png, " << base
+               << ".diff.png";
     }
 }
 
@@ -170,6 +172,31 @@ TEST(Golden, ShortcutsWindow) {
     check_golden(c);
 }
 
+/// Every panel open at a common screen size, two disks picked (the Inspector's ruler), a mid-query
+/// step: no window's text is cut or reaches past the image, and the image matches its golden.
+void check_full_ui(const std::string& name, int width, int height) {
+    const Scene scene = viewer::load_scene(test_scene("pair.json"));
+    State s = viewer::load_state(scene, float(width) / float(height));
+    s.scene.layers.trace = true;
+    viewer::Ui start;
+    for (const viewer::PanelInfo& p : viewer::panel_list()) start.panels.*p.open = true;
+    viewer::click_disk(s, start, {0, 100});
+    viewer::click_disk(s, start, {1, 120});
+    std::vector<std::string> cut;
+    check_image(name, viewer::render_headless(s, {width, height, true, false, &start, &cut}));
+    for (const std::string& line : cut) ADD_FAILURE() << name << ": " << line;
+}
+
+TEST(Golden, UiAt1280x720) {
+    MOBB_NEEDS_MOCAP();
+    check_full_ui("ui_1280x720", 1280, 720);
+}
+
+TEST(Golden, UiAt1920x1080) {
+    MOBB_NEEDS_MOCAP();
+    check_full_ui("ui_1920x1080", 1920, 1080);
+}
+
 /// The crowd from the default (space-time) camera: every agent's skeleton stands on its disk at the
 /// cursor (they need the mocap the graph was built from).
 TEST(Golden, Crowd) {
@@ -221,7 +248,7 @@ TEST(Golden, CrowdChoicePoint) {
     MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
-    State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
+    State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
     const int pick = small_rejection(s.crowd->record);
     ASSERT_GE(pick, 0);
@@ -231,9 +258,9 @@ TEST(Golden, CrowdChoicePoint) {
     s.scene.cursor = double(c.frame) * s.crowd->record.dt;
     s.scene.layers.disks_translucent = true;
     s.camera.top();  // the "from above" preset: the candidates fan out from the agent's disk
-    viewer::frame_all(s, 1024.0f / 640.0f);
-    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
-    check_image("crowd_choice", viewer::render_headless(s, {1024, 640, true}));
+    viewer::frame_all(s, 1280.0f / 720.0f);
+    s.camera.pan(0.0f, -130.0f, 720.0f);  // the crowd above the Crowd panel
+    check_image("crowd_choice", viewer::render_headless(s, {1280, 720, true}));
 }
 
 /// A rejected candidate's first colliding query opened in the trace debugger, seen from above: the
@@ -242,7 +269,7 @@ TEST(Golden, CrowdQueryOpened) {
     MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
-    State s = viewer::load_crowd_state(record, 1024.0f / 640.0f);
+    State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
     const auto& r = s.crowd->record;
     const int pick = small_rejection(r);
@@ -264,9 +291,22 @@ TEST(Golden, CrowdQueryOpened) {
     EXPECT_TRUE(s.answer) << message;
     s.scene.cursor = double(c.frame) * r.dt;
     s.camera.top();
-    viewer::frame_all(s, 1024.0f / 640.0f);
-    s.camera.pan(0.0f, -130.0f, 640.0f);  // the crowd above the Crowd panel
-    check_image("crowd_query", viewer::render_headless(s, {1024, 640, true}));
+    viewer::frame_all(s, 1280.0f / 720.0f);
+    s.camera.pan(0.0f, -130.0f, 720.0f);  // the crowd above the Crowd panel
+    check_image("crowd_query", viewer::render_headless(s, {1280, 720, true}));
+}
+
+/// Moves agent 1 onto agent 0 at a third of the run (one contact); returns that frame.
+std::size_t add_contact(State& s) {
+    const auto& r = s.crowd->record;
+    const auto frame = std::size_t(r.frames / 3);
+    auto& moved = s.crowd->record.tracks[1].samples[frame];
+    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
+    moved[2] = r.tracks[0].samples[frame][2];
+    s.crowd->contacts = crowd::frame_contacts(r);
+    s.crowd->marks = viewer::timeline_marks(*s.crowd);
+    ++s.revision;
+    return frame;
 }
 
 /// A scenario record (doorway two-way: walls, the wall with its door, two goals) in space-time, and the
@@ -285,17 +325,27 @@ TEST(Golden, CrowdScenario) {
     EXPECT_LT(2 * s.scene.window, double(r.frames) * r.dt);
     check_image("crowd_scenario", viewer::render_headless(s, {640, 480, false}));
     // Agent 1 moved onto agent 0 at one frame: both disks ringed red there.
-    const auto frame = std::size_t(r.frames / 3);
-    auto& moved = s.crowd->record.tracks[1].samples[frame];
-    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
-    moved[2] = r.tracks[0].samples[frame][2];
-    s.crowd->contacts = crowd::frame_contacts(r);
+    const std::size_t frame = add_contact(s);
     ASSERT_EQ(s.crowd->contacts.size(), 1u);
-    ++s.revision;
     s.scene.cursor = (double(frame) + 0.5) * r.dt;
     s.camera.top();
     viewer::frame_all(s, 640.0f / 480.0f);
     check_image("crowd_scenario_contact", viewer::render_headless(s, {640, 480, false}));
+}
+
+/// The Crowd panel's plots of fallbacks and contacts over time (ImGui's PlotHistogram) at 1280x720:
+/// the one contact of add_contact() stands as one bar a third of the way along.
+TEST(Golden, CrowdEventPlots) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty()) << "mobb crowd --scenario failed";
+    State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
+    s.scene.layers.skeletons = false;  // no mocap needed
+    add_contact(s);
+    ASSERT_FALSE(s.crowd->marks.empty());
+    s.scene.cursor = 0.5 * double(s.crowd->record.frames) * s.crowd->record.dt;
+    std::vector<std::string> cut;
+    check_image("crowd_plots", viewer::render_headless(s, {1280, 720, true, false, nullptr, &cut}));
+    for (const std::string& line : cut) ADD_FAILURE() << line;
 }
 
 /// The comparator must catch a real change: the level-1 scene with one more box level drawn.
@@ -322,6 +372,7 @@ TEST(Comparator, Tolerances) {
     EXPECT_EQ(d.largest, 100);
     EXPECT_FALSE(d.matches({8, 0.05}));
     EXPECT_TRUE(d.matches({8, 0.0625}));
+    EXPECT_FALSE(d.matches({8, 0.0625, 99}));  // one pixel past the hard limit fails alone
     EXPECT_EQ(d.image.at(2, 2)[0], 255);
     render::Image c{2, 4, std::vector<std::uint8_t>(32, 100)};
     EXPECT_FALSE(compare(a, c, {255, 1.0}).matches({255, 1.0}));  // sizes differ

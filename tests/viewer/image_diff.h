@@ -9,6 +9,9 @@ namespace mobb::test {
 struct Tolerance {
     int channel = 8;          ///< largest per-channel difference (0..255) still counted as equal
     double fraction = 0.002;  ///< largest fraction of pixels allowed to differ
+    /// Hard per-pixel limit: no channel of any pixel may differ by more, however few pixels differ (a
+    /// rasteriser moving an edge by a pixel blends; a missing label, box edge or tick does not).
+    int hard = 200;
 };
 
 struct Diff {
@@ -18,7 +21,7 @@ struct Diff {
     int largest = 0;        ///< largest channel difference seen
     render::Image image;    ///< differing pixels in red, the rest as a faded copy of `expected`
 
-    bool matches(const Tolerance& t) const { return same_size && fraction <= t.fraction; }
+    bool matches(const Tolerance& t) const { return same_size && fraction <= t.fraction && largest <= t.hard; }
 };
 
 Diff compare(const render::Image& expected, const render::Image& actual, const Tolerance& tolerance);

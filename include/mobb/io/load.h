@@ -1,4 +1,5 @@
-// Loading clips from BVH and glTF/GLB files with the options shared by every subcommand.
+// Loading clips from BVH, glTF/GLB and FBX (and the other formats Assimp reads) with the options shared
+// by every subcommand.
 #pragma once
 #include <optional>
 #include <stdexcept>
@@ -10,7 +11,8 @@
 namespace mobb::io {
 
 /// A file that cannot be read or makes no sense. what() is one line naming the file and the place:
-/// "FILE:LINE: message" for BVH, "FILE: ELEMENT: message" for glTF (e.g. "skins[0].joints[3]").
+/// "FILE:LINE: message" for BVH, "FILE: ELEMENT: message" for glTF (e.g. "skins[0].joints[3]"),
+/// "FILE: message" for FBX and the other Assimp formats.
 class LoadError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
@@ -20,14 +22,18 @@ public:
 /// Invalid values (scale or fps not finite and positive, frames outside 0 <= A < B <= frames)
 /// throw LoadError naming the file.
 struct LoadOptions {
-    UpAxis up = UpAxis::Y;        ///< --up y|z (glTF is always Y-up; Z is ignored with a warning)
-    std::optional<double> scale;  ///< --scale S (file units to metres); empty = auto (BVH), 1 (glTF)
+    UpAxis up = UpAxis::Y;        ///< --up y|z (glTF is always Y-up, FBX states its axis: Z is then ignored
+                                  ///< with a warning)
+    std::optional<double> scale;  ///< --scale S (file units to metres); empty = auto: 1 for glTF, the stated
+                                  ///< unit for FBX, else guessed from the standing height (BVH, Collada)
     int frame_begin = 0;          ///< --frames A:B keeps frames A..B-1 (after loading)
     int frame_end = -1;           ///< -1 = to the end
     std::optional<double> fps;    ///< --fps F: at each new sample time k/F, the original frame at or just
                                   ///< below it (samples k/F < duration); dt becomes 1/F
     int skin = 0;                 ///< glTF: --skin K
-    std::string animation;        ///< glTF: --animation NAME (empty = first)
+    std::string animation;        ///< glTF, FBX: --animation NAME (empty = first)
+    std::string root;             ///< --root NAME: the joint projected on the ground (empty = the skeleton's
+                                  ///< root); FBX: a node outside the default skeleton makes its subtree the skeleton
 };
 
 /// Loader options as people write them on the command line and in scene files.
@@ -38,6 +44,7 @@ struct LoadOptionText {
     double fps = 0;              ///< 0: the file's rate
     int skin = 0;
     std::string animation;
+    std::string root;
 };
 
 /// A finite number written as the whole of `text`. Throws std::invalid_argument
@@ -77,10 +84,12 @@ ScaleGuess guess_scale(double height);
 /// "FILE: frame K: root jumps D m from frame J ..." (K, J: file frames). Used by load_clip with 0.5 m.
 std::vector<std::string> root_jumps(const Clip& clip, double threshold = 0.5);
 
-/// Loads a .bvh, .glb or .gltf file (by extension, case-insensitive). Throws LoadError for a missing
-/// or unreadable file ("FILE: cannot open ..."), an unknown extension, malformed content or bad options.
-/// BVH auto scale: the standing height is the median over frames of the largest side of the posed
-/// skeleton's bounding box, see guess_scale. Warnings: root jumps (root_jumps), ignored options.
+/// Loads a .bvh, .glb, .gltf, .fbx, .dae or other file Assimp reads (by extension, case-insensitive; see
+/// mobb/io/assimp_reader.h). Throws LoadError for a missing or unreadable file ("FILE: cannot open ..."),
+/// an unknown extension, malformed content or bad options (--root naming no joint). Auto scale (BVH, and
+/// Assimp files that state no unit): the standing height is the median over frames of the largest side of
+/// the posed skeleton's bounding box, see guess_scale. Warnings: root jumps (root_jumps), ignored options,
+/// uneven key times (Assimp formats).
 Clip load_clip(const std::string& file, const LoadOptions& options = {});
 
 /// The data folder: $MOBB_DATA if set and an existing folder, else ../shared/mocap relative to the

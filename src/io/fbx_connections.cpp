@@ -1,0 +1,181 @@
+#include "fbx_connections.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace mobb::io::fbx {
+namespace {
+
+using Edge = std::pair<std::int64_t, std::int64_t>;
+
+constexpr char kBinaryMagic[] = "Kaydara FBX Binary  ";
+constexpr std::size_t kBinaryHeader = 27;  // magic, 0x00 0x1a 0x00, version (uint32)
+constexpr int kMaxDepth = 256;
+
+template <typename T>
+bool read(const std::string& b, std::size_t at, T& out) {
+    if (at > b.size() || sizeof(T) > b.size() - at) return false;
+    std::memcpy(&out, b.data() + at, sizeof(T));  // FBX is little-endian, like the hosts we build for
+    return true;
+}
+
+// Binary FBX: records of (end offset, property count, property bytes, name, properties, nested records).
+class BinaryScan {
+public:
+    BinaryScan(const std::string& bytes, std::vector<Edge>& edges) : b_(bytes), edges_(edges) {
+        std::uint32_t version = 0;
+        read(b_, 23, version);
+        wide_ = version >= 7500;
+    }
+
+    void records(std::size_t at, std::size_t end, int depth) {
+        while (depth < kMaxDepth && at < end) {
+            std::uint64_t next = 0, count = 0, length = 0;
+            std::uint8_t name_length = 0;
+            const std::size_t word = wide_ ? 8 : 4;
+            if (!number(at, next) || !number(at + word, count) || !number(at + 2 * word, length)) return;
+            if (next == 0) return;  // the null record closing a list
+            const std::size_t name_at = at + 3 * word + 1;
+            if (next <= at || next > end || !read(b_, name_at - 1, name_length)) return;
+            const std::size_t props = name_at + name_length;
+            if (props > next || length > next - props) return;
+            if (name_length == 1 && b_[name_at] == 'C') connection(props, props + length);
+            records(props + std::size_t(length), std::size_t(next), depth + 1);
+            at = std::size_t(next);
+        }
+    }
+
+private:
+    bool number(std::size_t at, std::uint64_t& out) const {
+        if (wide_) return read(b_, at, out);
+        std::uint32_t v = 0;
+        if (!read(b_, at, v)) return false;
+        out = v;
+        return true;
+    }
+
+    // "C": a string ("OO", "OP", ...) then two 64-bit ids.
+    void connection(std::size_t at, std::size_t end) {
+        std::uint32_t length = 0;
+        if (at >= end || b_[at] != 'S' || !read(b_, at + 1, length) || length > end - at - 5) return;
+        at += 5 + length;
+        std::int64_t ids[2];
+        for (std::int64_t& id : ids) {
+            if (at + 9 > end || b_[at] != 'L' || !read(b_, at + 1, id)) return;
+            at += 9;
+        }
+        edges_.push_back({ids[0], ids[1]});
+    }
+
+    const std::string& b_;
+    std::vector<Edge>& edges_;
+    bool wide_ = false;
+};
+
+// ASCII FBX: tokens as Assimp cuts them (whitespace and commas separate, ';' comments to the end of the
+// line, strings in double quotes, braces, a key ends with ':'). A "C" key followed by a string and two
+// whole numbers is a connection.
+void ascii_scan(const std::string& s, std::vector<Edge>& edges) {
+    struct Token {
+        char kind;  // 'k' key, 's' string, 'd' data, '{', '}'
+        std::string text;
+    };
+    std::vector<Token> pending;  // the "C" key and the tokens after it
+    const auto flush = [&] {
+        if (pending.size() >= 4 && pending[1].kind == 's' && pending[2].kind == 'd' && pending[3].kind == 'd') {
+            const auto id = [](const std::string& t, std::int64_t& out) {
+                const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+                if (t.empty() || t.size() > 20 || !std::all_of(t.begin(), t.end(), digit)) return false;
+                try {
+                    out = static_cast<std::int64_t>(std::stoull(t));  // Assimp's ids are unsigned 64-bit
+                } catch (const std::out_of_range&) {
+                    return false;
+                }
+                return true;
+            };
+            std::int64_t a = 0, b = 0;
+            if (id(pending[2].text, a) && id(pending[3].text, b)) edges.push_back({a, b});
+        }
+        pending.clear();
+    };
+    const auto token = [&](char kind, std::string text) {
+        if (kind == 'k' || kind == '{' || kind == '}') flush();
+        if (kind == 'k' && text == "C") pending.push_back({kind, std::move(text)});
+        else if (!pending.empty() && pending.size() < 4) pending.push_back({kind, std::move(text)});
+    };
+    std::string word;
+    const auto end_word = [&](bool key) {
+        if (!word.empty()) token(key ? 'k' : 'd', word);
+        word.clear();
+    };
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c == ';') {
+            end_word(false);
+            while (i < s.size() && s[i] != '\n') ++i;
+        } else if (c == '"') {
+            end_word(false);
+            const std::size_t close = s.find('"', i + 1);
+            if (close == std::string::npos) break;
+            token('s', s.substr(i + 1, close - i - 1));
+            i = close;
+        } else if (c == ':') {
+            end_word(true);
+        } else if (c == '{' || c == '}') {
+            end_word(false);
+            token(c, {});
+        } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ',') {
+            end_word(false);
+        } else {
+            word += c;
+        }
+    }
+    end_word(false);
+    flush();
+}
+
+// Depth-first search for a back edge, without recursion (a hostile file can chain many objects).
+std::optional<std::int64_t> find_cycle(const std::vector<Edge>& edges) {
+    std::unordered_map<std::int64_t, std::vector<std::int64_t>> out;
+    for (const Edge& e : edges) out[e.first].push_back(e.second);
+    std::unordered_map<std::int64_t, char> state;  // 0 unseen, 1 on the stack, 2 done
+    for (const auto& start : out) {
+        if (state[start.first]) continue;
+        std::vector<std::pair<std::int64_t, std::size_t>> stack{{start.first, 0}};
+        state[start.first] = 1;
+        while (!stack.empty()) {
+            auto& [v, next] = stack.back();
+            const auto it = out.find(v);
+            if (it == out.end() || next >= it->second.size()) {
+                state[v] = 2;
+                stack.pop_back();
+                continue;
+            }
+            const std::int64_t w = it->second[next++];
+            char& s = state[w];
+            if (s == 1) return w;
+            if (s == 0) {
+                s = 1;
+                stack.push_back({w, 0});
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::int64_t> connection_cycle(const std::string& bytes) {
+    std::vector<Edge> edges;
+    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0)
+        BinaryScan(bytes, edges).records(kBinaryHeader, bytes.size(), 0);
+    else
+        ascii_scan(bytes, edges);
+    return find_cycle(edges);
+}
+
+}  // namespace mobb::io::fbx

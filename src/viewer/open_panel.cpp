@@ -1,0 +1,83 @@
+// Opening clip files from inside the window: the Open panel lists the data folder's BVH and glTF files,
+// and files dropped on the window (GLFW's drop callback fills ui.dropped) open the same way. Each opened
+// file becomes a scene clip, offered at once by the Query panel's A and B lists.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <imgui.h>
+
+#include "panels.h"
+
+namespace mobb::viewer {
+
+namespace {
+
+bool clip_file(const std::filesystem::path& p) {
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".bvh" || ext == ".glb" || ext == ".gltf";
+}
+
+/// The data folder's clip files, relative to it, sorted.
+std::vector<std::string> list_data_files(const std::string& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    if (dir.empty()) return out;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec) && clip_file(it->path()))
+            out.push_back(it->path().lexically_relative(dir).generic_string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void open_file(State& s, Ui& ui, const std::string& file) {
+    try {
+        const int k = add_clip_file(s, file);
+        ui.open_status = "opened " + s.clips[std::size_t(k)].name + " as clip " + std::to_string(k);
+    } catch (const std::exception& e) {
+        ui.open_status = e.what();
+        ui.panels.open = true;  // a dropped file that failed says why
+    }
+}
+
+}  // namespace
+
+void open_dropped(State& s, Ui& ui) {
+    for (const std::string& f : ui.dropped) open_file(s, ui, f);
+    ui.dropped.clear();
+}
+
+void open_panel(State& s, Ui& ui) {
+    if (!ui.panels.open) return;
+    ImGui::SetNextWindowPos(ImVec2(316, ui.menu_height + 200), ImGuiCond_FirstUseEver);  // under the Inspector
+    ImGui::SetNextWindowSize(ImVec2(300, 240), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Open", &ui.panels.open)) return ImGui::End();
+    const std::string dir = io::data_dir();
+    if (!ui.data_listed) {
+        ui.data_files = list_data_files(dir);
+        ui.data_listed = true;
+    }
+    if (dir.empty())
+        ImGui::TextDisabled("no data folder (set MOBB_DATA)");
+    else
+        ImGui::TextDisabled("%zu clip files in the data folder", ui.data_files.size());
+    if (ImGui::IsItemHovered() && !dir.empty()) ImGui::SetTooltip("%s", dir.c_str());
+    ImGui::TextDisabled("click to open, or drop files here");
+    char filter[128];
+    std::snprintf(filter, sizeof filter, "%s", ui.open_filter.c_str());
+    if (ImGui::InputTextWithHint("##filter", "filter", filter, sizeof filter)) ui.open_filter = filter;
+    ImGui::SameLine();
+    if (ImGui::Button("rescan")) ui.data_listed = false;
+    ImGui::BeginChild("files", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() - 2), true);
+    for (const std::string& f : ui.data_files) {
+        if (!ui.open_filter.empty() && f.find(ui.open_filter) == std::string::npos) continue;
+        if (ImGui::Selectable(f.c_str())) open_file(s, ui, dir + "/" + f);
+    }
+    ImGui::EndChild();
+    if (!ui.open_status.empty()) ImGui::TextWrapped("%s", ui.open_status.c_str());
+    ImGui::End();
+}
+
+}  // namespace mobb::viewer

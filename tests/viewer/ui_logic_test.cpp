@@ -1,0 +1,239 @@
+// The viewer's new panels' logic without a window: the recursion rebuilt from a trace, picks and the
+// ruler, opening files, the settings file's camera lines, and the layout check itself.
+#include <algorithm>
+
+#include <glm/matrix.hpp>
+
+#include <gtest/gtest.h>
+
+#include "crowd_view.h"
+#include "headless.h"
+#include "panels.h"
+#include "picking.h"
+#include "recursion.h"
+#include "render_test_util.h"
+#include "scene.h"
+#include "space.h"
+#include "state.h"
+#include "view_settings.h"
+
+namespace mobb::test {
+namespace {
+
+viewer::State load(const std::string& scene) {
+    return viewer::load_state(viewer::load_scene(test_scene(scene)), 4.0f / 3.0f);
+}
+
+/// Checks the recursion of the state's query: pairs partition the trace, each child pair is one step
+/// down from its parent in A, B or both, and the hit is below the root.
+void check_recursion(const viewer::State& s) {
+    const Tree& a = *s.clips[std::size_t(s.scene.query_a)].tree;
+    const Tree& b = *s.clips[std::size_t(s.scene.query_b)].tree;
+    const viewer::Recursion r = viewer::recursion_of(s.trace, a, b);
+    ASSERT_EQ(r.pair_of.size(), s.trace.size());
+    ASSERT_FALSE(r.pairs.empty());
+    EXPECT_EQ(r.pairs[0].parent, -1);
+    EXPECT_EQ(r.pairs[0].events, int(s.trace.size()));  // everything hangs under the roots' pair
+    int covered = 0;
+    for (std::size_t k = 0; k < r.pairs.size(); ++k) {
+        const viewer::NodePair& p = r.pairs[k];
+        covered += p.end - p.first;
+        for (int e = p.first; e < p.end; ++e) {
+            EXPECT_EQ(r.pair_of[std::size_t(e)], int(k));
+            EXPECT_EQ(s.trace[std::size_t(e)].node_a, p.node_a);
+            EXPECT_EQ(s.trace[std::size_t(e)].node_b, p.node_b);
+        }
+        if (p.parent < 0) continue;
+        const viewer::NodePair& up = r.pairs[std::size_t(p.parent)];
+        EXPECT_EQ(up.outcome, TraceOutcome::Overlap) << "pair " << k;
+        const auto down = [](const Tree& t, std::int32_t from, std::int32_t to) {
+            const Node& n = t.nodes()[std::size_t(from)];
+            return to == from || (!n.leaf() && (to == n.child || to == n.child + 1));
+        };
+        EXPECT_TRUE(down(a, up.node_a, p.node_a) && down(b, up.node_b, p.node_b)) << "pair " << k;
+        EXPECT_LT(p.parent, int(k));
+    }
+    EXPECT_EQ(covered, int(s.trace.size()));
+    if (s.answer) {
+        ASSERT_GE(r.first_hit, 0);
+        EXPECT_EQ(s.trace[std::size_t(r.first_hit)].outcome, TraceOutcome::Hit);
+        EXPECT_TRUE(r.pairs[0].hit);
+    } else {
+        EXPECT_EQ(r.first_hit, -1);
+    }
+}
+
+TEST(Recursion, SyntheticWalksQuery) {
+    const viewer::State s = load("walks.json");
+    ASSERT_TRUE(s.queried);
+    check_recursion(s);
+}
+
+TEST(Recursion, RealClipsQueryWithAHit) {
+    MOBB_NEEDS_MOCAP();
+    const viewer::State s = load("pair.json");
+    ASSERT_TRUE(s.answer);
+    check_recursion(s);
+}
+
+TEST(Recursion, EventsHoldingASample) {
+    const viewer::State s = load("walks.json");
+    const Tree& a = *s.clips[0].tree;
+    const std::vector<int> held = viewer::events_holding(s.trace, a, 0, 0);
+    ASSERT_FALSE(held.empty());
+    EXPECT_EQ(held.front(), 0);  // the root holds every sample
+    for (int e : held) EXPECT_EQ(a.nodes()[std::size_t(s.trace[std::size_t(e)].node_a)].first, 0u);
+}
+
+/// A ray straight down through the middle of clip A's root box, from above everything: the box hit is
+/// one the boxes layer draws, the ray's entry point lies on it, and a click selects that node's events.
+TEST(Picking, BoxOfTheQueryUnderARay) {
+    viewer::State s = load("walks.json");
+    s.scene.layers.boxes = true;
+    s.scene.layers.level = 0;
+    const Obb3 root = transformed(s.clips[0].tree->box3(s.clips[0].tree->nodes()[0]),
+                                  SpaceTimeRigid::of(s.places[0]));
+    const glm::vec3 top = render::to_gl(root.center.x, root.center.y, 1e3, s.scene.time_scale);
+    const render::Ray ray{top, glm::vec3(0, -1, 0)};
+    const viewer::BoxPick b = viewer::pick_box(s, ray);
+    ASSERT_GE(b.node, 0);
+    const Tree& tree = *s.clips[std::size_t(b.clip)].tree;
+    EXPECT_EQ(tree.nodes()[std::size_t(b.node)].level, 0);
+    // The entry point, back in space-time, lies on the box: inside its slabs up to rounding.
+    const Obb3 hit = transformed(tree.box3(tree.nodes()[std::size_t(b.node)]),
+                                 SpaceTimeRigid::of(s.places[std::size_t(b.clip)]));
+    const glm::dvec3 p(root.center.x, root.center.y, (double(top.y) - b.distance) / s.scene.time_scale);
+    const glm::dvec3 local = glm::transpose(hit.axes) * (p - hit.center);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::fabs(local[i]), hit.half[i] + 1e-4) << i;
+    s.scene.layers.boxes = false;
+    EXPECT_EQ(viewer::pick_box(s, ray).node, -1);
+    viewer::Ui ui;
+    viewer::click_box(s, ui, b.clip, b.node);
+    ASSERT_FALSE(ui.picked_events.empty());
+    for (int e : ui.picked_events) {
+        const TraceEvent& ev = s.trace[std::size_t(e)];
+        EXPECT_EQ(b.clip == s.scene.query_a ? ev.node_a : ev.node_b, b.node);
+    }
+    EXPECT_EQ(s.scene.step, ui.picked_events.back());
+}
+
+TEST(Inspector, TwoClicksMeasureAndSurviveSteps) {
+    viewer::State s = load("walks.json");
+    viewer::Ui ui;
+    viewer::click_disk(s, ui, {0, 10});
+    EXPECT_EQ(ui.pick.clip, 0);
+    EXPECT_EQ(ui.ruler.clip, -1);
+    ASSERT_FALSE(ui.picked_events.empty());  // clip 0 is the query's A: its events are selected
+    EXPECT_EQ(s.scene.step, ui.picked_events.back());
+    viewer::click_disk(s, ui, {1, 30});
+    EXPECT_EQ(ui.ruler.sample, 10);
+    EXPECT_EQ(ui.pick.sample, 30);
+    const auto a = viewer::disk_of(s, ui.ruler), b = viewer::disk_of(s, ui.pick);
+    ASSERT_TRUE(a && b);
+    const auto r = viewer::measure(s, ui.ruler, ui.pick);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->distance, std::hypot(a->centre.x - b->centre.x, a->centre.y - b->centre.y), 1e-12);
+    EXPECT_NEAR(r->radii, a->r + b->r, 1e-12);
+    EXPECT_NEAR(r->clearance, r->distance - r->radii, 1e-12);
+    EXPECT_NEAR(r->time_gap, std::max({0.0, b->t0 - a->t1, a->t0 - b->t1}), 1e-12);
+    EXPECT_GT(r->time_gap, 0.0);  // samples 10 and 30 at the same rate and start
+    viewer::go_to_step(s, ui, 0);
+    s.scene.cursor += 1.0;
+    EXPECT_EQ(ui.pick.sample, 30);
+    EXPECT_EQ(ui.ruler.sample, 10);
+    EXPECT_FALSE(viewer::measure(s, ui.ruler, {1, 1 << 30}));
+}
+
+TEST(OpenFiles, AddedClipIsOfferedToTheQuery) {
+    MOBB_NEEDS_MOCAP();
+    viewer::State s = load("walks.json");
+    const std::size_t before = s.clips.size();
+    const std::string file = io::data_dir() + "/cmu/005_01.bvh";
+    const int k = viewer::add_clip_file(s, file);
+    EXPECT_EQ(k, int(s.scene.clips.size()) - 1);
+    EXPECT_EQ(s.clips.size(), before + 1);
+    EXPECT_EQ(s.places.size(), before + 1);
+    EXPECT_EQ(s.clips[std::size_t(k)].name, "005_01.bvh");
+    EXPECT_EQ(s.scene.clips.back().file, "cmu/005_01.bvh");
+    EXPECT_TRUE(s.queried);
+    EXPECT_THROW(viewer::add_clip_file(s, io::data_dir() + "/cmu/no_such.bvh"), io::LoadError);
+    EXPECT_EQ(s.clips.size(), before + 1);
+}
+
+TEST(OpenFiles, FirstFileBecomesTheQuerysClip) {
+    MOBB_NEEDS_MOCAP();
+    viewer::Scene empty;
+    empty.query_a = empty.query_b = -1;
+    viewer::State s = viewer::load_state(empty, 1.0f);
+    viewer::add_clip_file(s, io::data_dir() + "/cmu/007_01.bvh");
+    viewer::add_clip_file(s, io::data_dir() + "/cmu/005_01.bvh");
+    EXPECT_EQ(s.scene.query_a, 0);
+    EXPECT_EQ(s.scene.query_b, 1);
+    EXPECT_TRUE(s.queried);
+}
+
+/// What GLFW's drop callback leaves in the Ui: opened on the next frame, a bad file named.
+TEST(OpenFiles, DroppedFilesOpenAndABadOneSaysWhy) {
+    MOBB_NEEDS_MOCAP();
+    viewer::State s = load("walks.json");
+    const std::size_t before = s.clips.size();
+    viewer::Ui ui;
+    ui.dropped = {io::data_dir() + "/cmu/005_01.bvh", "/no/such/file.bvh"};
+    viewer::open_dropped(s, ui);
+    EXPECT_TRUE(ui.dropped.empty());
+    EXPECT_EQ(s.clips.size(), before + 1);
+    EXPECT_NE(ui.open_status.find("/no/such/file.bvh"), std::string::npos) << ui.open_status;
+    EXPECT_TRUE(ui.panels.open);
+}
+
+/// A crowd's clips are its agents: opening a file there is refused by name and changes nothing.
+TEST(OpenFiles, RefusedInACrowdRecord) {
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty());
+    viewer::State s = viewer::load_crowd_state(record, 1.0f);
+    const std::size_t before = s.clips.size();
+    try {
+        viewer::add_clip_file(s, "/any/walk.bvh");
+        FAIL() << "opened a file into a crowd";
+    } catch (const io::LoadError& e) {
+        EXPECT_NE(std::string(e.what()).find("/any/walk.bvh"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.clips.size(), before);
+}
+
+TEST(Settings, CameraLineRoundTrips) {
+    render::Camera c;
+    c.target = {1.5f, -2.25f, 3.0f};
+    c.yaw = 12.5f, c.pitch = 80.0f, c.distance = 7.25f, c.fov = 40.0f;
+    render::Camera back;
+    ASSERT_TRUE(viewer::parse_camera_line(viewer::camera_line(c), back));
+    EXPECT_EQ(back.target, c.target);
+    EXPECT_EQ(back.yaw, c.yaw);
+    EXPECT_EQ(back.distance, c.distance);
+    EXPECT_FALSE(viewer::parse_camera_line("target=1,2 yaw=3", back));
+    EXPECT_FALSE(viewer::parse_camera_line("target=1,2,3 yaw=0 pitch=0 distance=-1 fov=35", back));
+}
+
+TEST(Settings, FileInTheUsersConfigFolder) {
+    const char* old = std::getenv("XDG_CONFIG_HOME");
+    const std::string keep = old ? old : "";
+    setenv("XDG_CONFIG_HOME", "/tmp/cfg", 1);
+    EXPECT_EQ(viewer::settings_file(), "/tmp/cfg/mobb/imgui.ini");
+    if (old)
+        setenv("XDG_CONFIG_HOME", keep.c_str(), 1);
+    else
+        unsetenv("XDG_CONFIG_HOME");
+}
+
+/// The layout check must catch cut text: every panel open in a window too small for them.
+TEST(UiLayout, SmallWindowCutsText) {
+    viewer::State s = load("walks.json");
+    viewer::Ui start;
+    for (const viewer::PanelInfo& p : viewer::panel_list()) start.panels.*p.open = true;
+    std::vector<std::string> cut;
+    viewer::render_headless(s, {480, 300, true, false, &start, &cut});
+    EXPECT_FALSE(cut.empty());
+}
+
+}  // namespace
+}  // namespace mobb::test
