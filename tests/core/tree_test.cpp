@@ -136,5 +136,15 @@ TEST(TreeTest, RejectsBadInput) {
     for (TreeType t : kTypes) EXPECT_EQ(parse_tree_type(to_string(t)), t);
 }
 
+TEST(TreeTest, ParsesOptionNames) {
+    const TreeOptions o = parse_tree_options("hybrid2", 7, "pca");
+    EXPECT_EQ(o.type, TreeType::Hybrid2);
+    EXPECT_EQ(o.n_min, 7);
+    EXPECT_EQ(o.fit, AxisFit::Pca);
+    EXPECT_EQ(parse_tree_options("umobb1", 10, "chord").fit, AxisFit::Chord);
+    EXPECT_THROW(parse_tree_options("mobb", 10, "svd"), std::invalid_argument);
+    EXPECT_THROW(parse_tree_options("box", 10, "chord"), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace mobb

@@ -48,6 +48,9 @@ struct TreeOptions {
     int n_min = 10;                ///< leaves hold at most n_min samples (paper 3.1); >= 1
     AxisFit fit = AxisFit::Chord;  ///< MOBB axis choice
 };
+/// The options of a type name, n_min and an axis fit name, as the command line and the Python module
+/// take them. Throws std::invalid_argument for an unknown name (n_min is checked by Tree::build).
+TreeOptions parse_tree_options(const std::string& type, int n_min, const std::string& fit);
 
 enum class BoxKind : std::uint8_t { Box2, Box3 };
 
