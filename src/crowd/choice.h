@@ -176,6 +176,7 @@ private:
     std::vector<int> near_;                    // scratch: broad-phase ids of one query
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     std::uint64_t near_total_ = 0, root_rejected_ = 0;
+    int last_hit_ = -1;  // broad-phase id of the other agent's piece that refused the last piece
     Outcome outcome_ = Outcome::Candidate;
     PlannedClip taken_;
     Plan plan_;
