@@ -47,9 +47,10 @@ py::dict info_of(const io::Clip& clip) {
 }
 
 // The loader options as `mobb` takes them on the command line (--up, --scale, --frames, --fps, --skin,
-// --animation); parsed by the library, so the messages are the command line's.
+// --animation, --root); parsed by the library, so the messages are the command line's.
 io::LoadOptions load_options(const std::string& up, const py::object& scale, const py::object& frames,
-                             const std::optional<double>& fps, int skin, const std::string& animation) {
+                             const std::optional<double>& fps, int skin, const std::string& animation,
+                             const std::string& root) {
     io::LoadOptionText text;
     text.up = up;
     if (!scale.is_none()) text.scale = py::str(scale);
@@ -61,15 +62,16 @@ io::LoadOptions load_options(const std::string& up, const py::object& scale, con
     }
     text.skin = skin;
     text.animation = animation;
+    text.root = root;
     io::LoadOptions options = io::parse_load_options(text);
     options.fps = fps;  // load_clip checks it: "FILE: --fps F must be finite and positive"
     return options;
 }
 
 io::Clip load(const py::object& file, const std::string& up, const py::object& scale, const py::object& frames,
-              const std::optional<double>& fps, int skin, const std::string& animation) {
+              const std::optional<double>& fps, int skin, const std::string& animation, const std::string& root) {
     const std::string name = py::str(py::module_::import("os").attr("fspath")(file));
-    const io::LoadOptions options = load_options(up, scale, frames, fps, skin, animation);
+    const io::LoadOptions options = load_options(up, scale, frames, fps, skin, animation, root);
     py::gil_scoped_release release;
     return io::load_clip(name, options);
 }
@@ -101,8 +103,8 @@ Attributes:
 
     m.def("load", &load, py::arg("file"), py::kw_only(), py::arg("up") = "y", py::arg("scale") = py::none(),
           py::arg("frames") = py::none(), py::arg("fps") = py::none(), py::arg("skin") = 0,
-          py::arg("animation") = "",
-          R"doc(Loads a .bvh, .glb or .gltf clip (by extension) -> mobb.Clip.
+          py::arg("animation") = "", py::arg("root") = "",
+          R"doc(Loads a clip file as `mobb path` does (the format by its extension: .bvh, .glb, .gltf, .fbx, ...) -> mobb.Clip.
 
 The loader options are the command line's:
   up         "y" or "z": up axis of BVH data (glTF is always Y-up).
@@ -110,7 +112,8 @@ The loader options are the command line's:
   frames     keep frames A..B-1: "A:B", "A:" or a pair (A, B) (B None: to the end).
   fps        resample to this many samples per second (None: the file's rate).
   skin       glTF: skin index.
-  animation  glTF: animation name ("" : the first).
+  animation  glTF, FBX: animation name ("" : the first).
+  root       the joint projected on the ground ("": the skeleton's root).
 Raises mobb.LoadError (a file that cannot be read or makes no sense) or ValueError (a bad option) with
 the message `mobb` prints after "error: ".)doc");
 }

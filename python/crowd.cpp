@@ -54,6 +54,7 @@ crowd::CrowdOptions crowd_options(const CrowdArgs& a, crowd::Scenario& scenario)
         if (o.agents < 1) throw std::invalid_argument("agents: expected at least 1");
         if (!(o.seconds > 0)) throw std::invalid_argument("seconds: expected a positive number");
     }
+    o.record_queries = bool(a.record);  // as `mobb crowd`: only a written record shows them
     o.seed = a.seed;
     o.cell = a.cell;
     if (a.threads < 0) throw std::invalid_argument("threads: expected 0 (every core) or more");

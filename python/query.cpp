@@ -21,15 +21,6 @@ namespace mobb::python {
 
 namespace {
 
-TreeOptions tree_options(const std::string& type, int n_min, const std::string& fit) {
-    if (fit != "chord" && fit != "pca") throw std::invalid_argument("--fit: expected chord or pca, got '" + fit + "'");
-    TreeOptions o;
-    o.type = parse_tree_type(type);
-    o.n_min = n_min;
-    o.fit = fit == "pca" ? AxisFit::Pca : AxisFit::Chord;
-    return o;
-}
-
 // Which query a pair of Python objects asks for: trees (collide), clip indexes (collide_sweep) or
 // loaded clips (collide_brute, the reference).
 enum class Method { Trees, Sweep, Brute };
@@ -189,7 +180,7 @@ Tree(path, type="mobb", n_min=10, fit="chord", dt=None)
   fit    MOBB axis fit: "chord" (the paper's) or "pca".
 Raises ValueError for an empty or invalid path or a bad option.)doc")
         .def(py::init([](const py::object& path, const std::string& type, int n_min, const std::string& fit,
-                         const py::object& dt) { return Tree::build(path_from(path, dt, "path"), tree_options(type, n_min, fit)); }),
+                         const py::object& dt) { return Tree::build(path_from(path, dt, "path"), parse_tree_options(type, n_min, fit)); }),
              py::arg("path"), py::arg("type") = "mobb", py::arg("n_min") = 10, py::arg("fit") = "chord",
              py::arg("dt") = py::none())
         .def_property_readonly("type", [](const Tree& t) { return to_string(t.options().type); })

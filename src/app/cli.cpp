@@ -35,13 +35,7 @@ void TreeArgs::add_to(CLI::App& cmd, bool allow_brute) {
         ->capture_default_str();
 }
 
-TreeOptions TreeArgs::options() const {
-    TreeOptions o;
-    o.type = brute() ? TreeType::Mobb : parse_tree_type(type);
-    o.n_min = n_min;
-    o.fit = fit == "pca" ? AxisFit::Pca : AxisFit::Chord;
-    return o;
-}
+TreeOptions TreeArgs::options() const { return parse_tree_options(brute() ? "mobb" : type, n_min, fit); }
 
 io::Clip load_reported(const std::string& file, const io::LoadOptions& options) {
     io::Clip clip = io::load_clip(file, options);

@@ -73,6 +73,19 @@ void arrange_clip_files(State& s, float asp) {
     viewer::frame_all(s, asp);
 }
 
+/// `render --colour-disks` / `--colour-boxes` (empty: the scene's); a box colouring shows the boxes.
+void apply_colouring(State& s, const std::string& disks, const std::string& boxes) {
+    try {
+        if (!disks.empty()) s.scene.layers.disk_colour = render::parse_disk_colour(disks);
+        if (!boxes.empty()) {
+            s.scene.layers.box_colour = render::parse_box_colour(boxes);
+            s.scene.layers.boxes = true;
+        }
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("render: ") + e.what());
+    }
+}
+
 /// A recorded crowd's state for `render --crowd` and `view --crowd`: the agent's choice points listed,
 /// the cursor at `time` (negative: the middle of the run), the camera from the space-time side.
 State crowd_state(const std::string& record, float asp, int agent, double time) {
@@ -131,7 +144,7 @@ viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
-        std::string out, crowd;
+        std::string out, crowd, disk_colour, box_colour;
         std::vector<std::string> inputs, picks, panels;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1, window = -1;
@@ -154,6 +167,10 @@ void add_render(CLI::App& app, int& exit_code) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--query", a->query, "With --candidate: which of its queries, in the order run (default 0)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--colour-disks", a->disk_colour,
+                    "Disks coloured by clip (default), radius, speed, time or clearance, with a colour bar");
+    cmd->add_option("--colour-boxes", a->box_colour,
+                    "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
     cmd->add_flag("--top", a->top, "With --crowd: seen from above (the crowd panel's \"from above\")");
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")
@@ -194,14 +211,20 @@ void add_render(CLI::App& app, int& exit_code) {
                 State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
                 open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
                 apply_step(s, a->step);
+                apply_colouring(s, a->disk_colour, a->box_colour);
                 if (a->window >= 0) s.scene.window = a->window;
                 if (a->top) {
                     s.camera.top();
                     viewer::frame_all(s, aspect(w, h));
                 }
                 if (a->bench) {
-                    out << "bench: crowd, " << std::fixed << std::setprecision(2)
-                        << viewer::bench_headless(s, w, h, a->bench_frames) << " frames per second\n";
+                    render::DiskStats drawn;
+                    const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
+                    out << "bench: crowd, " << drawn.disks << " disks in " << drawn.instances << " instances at LOD k="
+                        << drawn.k_min;
+                    if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
+                    out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
+                        << " frames per second\n";
                     return;
                 }
                 const viewer::Ui start = ui_start(s, a->picks, a->panels);
@@ -216,6 +239,7 @@ void add_render(CLI::App& app, int& exit_code) {
             State s = viewer::load_state(scene, aspect(w, h));
             if (files) arrange_clip_files(s, aspect(w, h));
             apply_step(s, a->step);
+            apply_colouring(s, a->disk_colour, a->box_colour);
             if (a->window >= 0) s.scene.window = a->window;
             if (a->bench) {
                 std::size_t disks = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -32,6 +33,12 @@ Interval project(const glm::dvec3& n, const Sample& s, double t, double dt) {
 }
 
 }  // namespace
+
+AxisFit parse_axis_fit(const std::string& name) {
+    if (name == "chord") return AxisFit::Chord;
+    if (name == "pca") return AxisFit::Pca;
+    throw std::invalid_argument("unknown axis fit '" + name + "' (chord, pca)");
+}
 
 double fit_margin(const Path& path) {
     double extent = path.duration();

@@ -15,4 +15,16 @@ void validate(const Path& path) {
     }
 }
 
+std::vector<double> sample_speeds(const Path& path) {
+    const std::size_t n = path.size();
+    std::vector<double> out(n, 0.0);
+    if (n < 2) return out;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = i > 0 ? i - 1 : 0, b = i + 1 < n ? i + 1 : n - 1;
+        const Sample &p = path.samples[a], &q = path.samples[b];
+        out[i] = std::hypot(q.x - p.x, q.y - p.y) / (double(b - a) * path.dt);
+    }
+    return out;
+}
+
 }  // namespace mobb

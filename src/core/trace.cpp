@@ -2,6 +2,16 @@
 
 namespace mobb {
 
+std::vector<int> tests_per_node(const Trace& trace, bool side_a, std::size_t nodes) {
+    std::vector<int> out(nodes, 0);
+    for (const TraceEvent& e : trace) {
+        if (e.test == TraceTest::Descend) continue;
+        const std::int32_t n = side_a ? e.node_a : e.node_b;
+        if (n >= 0 && std::size_t(n) < nodes) ++out[std::size_t(n)];
+    }
+    return out;
+}
+
 const char* to_string(TraceTest test) {
     switch (test) {
         case TraceTest::Time: return "time";

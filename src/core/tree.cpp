@@ -51,6 +51,14 @@ TreeType parse_tree_type(const std::string& name) {
     throw std::invalid_argument("unknown tree type '" + name + "' (" + tree_type_names() + ")");
 }
 
+TreeOptions parse_tree_options(const std::string& type, int n_min, const std::string& fit) {
+    TreeOptions o;
+    o.type = parse_tree_type(type);
+    o.n_min = n_min;
+    o.fit = parse_axis_fit(fit);
+    return o;
+}
+
 Tree Tree::build(Path path, const TreeOptions& options) {
     validate(path);
     if (path.samples.empty()) throw std::invalid_argument("tree: the path has no samples");

@@ -47,6 +47,10 @@ double cylinders_volume(const Path& path, std::size_t first, std::size_t end) {
 
 }  // namespace
 
+double volume_ratio(const Tree& tree, const Node& node) {
+    return tree.box3(node).volume() / std::max(cylinders_volume(tree.path(), node.first, node.end), 1e-300);
+}
+
 std::vector<LevelStats> level_stats(const Tree& tree) {
     std::vector<LevelStats> levels(std::size_t(tree.depth()));
     std::vector<int> area_count(levels.size(), 0);
@@ -56,7 +60,7 @@ std::vector<LevelStats> level_stats(const Tree& tree) {
         ++s.nodes;
         const double volume = tree.box3(node).volume();
         s.mean_volume += volume;
-        s.volume_ratio += volume / std::max(cylinders_volume(tree.path(), node.first, node.end), 1e-300);
+        s.volume_ratio += volume_ratio(tree, node);
         if (node.kind == BoxKind::Box2) {
             ++s.box2;
             const double area = tree.box2s()[node.box].area();

@@ -17,7 +17,7 @@
 
 #include "assimp_keys.h"
 #include "common.h"
-#include "fbx_connections.h"
+#include "fbx_scan.h"
 
 namespace mobb::io::assimp {
 namespace {
@@ -85,8 +85,7 @@ public:
 
     Result run(const std::string& bytes) {
         import(bytes);
-        read_axes();
-        read_unit();
+        read_settings(bytes);
         flatten();
         choose_animation();
         read_tracks();
@@ -118,6 +117,15 @@ private:
         if (!scene) fail("not a readable file: " + (error.empty() ? "unknown error" : error));
         if (!scene->mRootNode) fail("the scene has no nodes");
         scene_ = scene;
+    }
+
+    // Assimp fills in FBX's defaults (Y up, centimetres): only settings the file writes count as stated.
+    // (FrameRate is set by Assimp's FBX importer alone.)
+    void read_settings(const std::string& bytes) {
+        const bool fbx = number(scene_->mMetaData, "FrameRate").has_value();
+        result_.up = options_.up;
+        if (!fbx || fbx::names_property(bytes, "UpAxis")) read_axes();
+        if (!fbx || fbx::names_property(bytes, "UnitScaleFactor")) read_unit();
     }
 
     // The file's up axis. Y and Z up keep their axes (to_ground knows both); X up and negative up axes

@@ -22,9 +22,14 @@ void BoxLayer::rebuild(const Frame& frame) {
     for (const ClipView& clip : frame.clips) {
         if (!clip.visible) continue;
         const SpaceTimeRigid m = SpaceTimeRigid::of(clip.place);
-        for (const Node& node : clip.tree->nodes()) {
+        const auto& nodes = clip.tree->nodes();
+        const bool mapped = frame.layers.box_colour != BoxColour::Level && clip.node_values &&
+                            clip.node_values->size() == nodes.size();
+        for (std::size_t n = 0; n < nodes.size(); ++n) {
+            const Node& node = nodes[n];
             if (!frame.layers.all_levels && !shown_at_level(node, frame.layers.level, frame.layers.levels)) continue;
-            const glm::vec3 color = level_color(node.level);
+            const glm::vec3 color =
+                mapped ? frame.box_scale.colour(double((*clip.node_values)[n])) : level_color(node.level);
             add_box(transformed(clip.tree->box3(node), m), frame.time_scale, glm::vec4(color, 1.0f), edges_,
                     glm::vec4(color, face_alpha), &faces_);
         }
@@ -34,12 +39,15 @@ void BoxLayer::rebuild(const Frame& frame) {
     levels_ = frame.layers.levels;
     all_levels_ = frame.layers.all_levels;
     time_scale_ = frame.time_scale;
+    colour_ = frame.layers.box_colour;
+    colour_revision_ = frame.colour_revision;
 }
 
 void BoxLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.boxes) return;
     if (frame.revision != revision_ || frame.layers.level != level_ || frame.layers.levels != levels_ ||
-        frame.layers.all_levels != all_levels_ || frame.time_scale != time_scale_)
+        frame.layers.all_levels != all_levels_ || frame.time_scale != time_scale_ ||
+        frame.layers.box_colour != colour_ || frame.colour_revision != colour_revision_)
         rebuild(frame);
     ctx.use(*ctx.color);
     if (!translucent_pass)

@@ -29,6 +29,8 @@ private:
     int level_ = -1, levels_ = 0;
     bool all_levels_ = false;
     double time_scale_ = 0;
+    BoxColour colour_ = BoxColour::Level;
+    std::uint64_t colour_revision_ = 0;
 };
 
 }  // namespace mobb::render

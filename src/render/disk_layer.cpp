@@ -12,6 +12,8 @@ namespace {
 /// work dominates (360,000 disks) and a disk is a few pixels wide anyway.
 constexpr int kSegmentsFine = 16, kSegmentsCoarse = 8;
 constexpr std::size_t kCoarseAbove = 100000;
+/// Winding of the unit cylinder's outward faces (unit_cylinder()), kept by scaling and shearing.
+constexpr GLenum kFrontFace = GL_CCW;
 
 struct MeshVertex {
     glm::vec3 pos, normal;
@@ -71,6 +73,7 @@ void DiskLayer::set_segments(int segments) {
 
 void DiskLayer::release(Stack& s) {
     if (s.vbo) glDeleteBuffers(1, &s.vbo);
+    if (s.values) glDeleteBuffers(1, &s.values);
     if (s.vao) glDeleteVertexArrays(1, &s.vao);
     s = Stack{};
 }
@@ -133,8 +136,11 @@ void DiskLayer::rebuild(const Frame& frame) {
     clips_.resize(frame.clips.size());
     for (std::size_t c = 0; c < frame.clips.size(); ++c) {
         const ClipView& clip = frame.clips[c];
-        for (Stack& s : clips_[c].lods) s.built = false;  // buffers are kept and refilled when next drawn
-        clips_[c].bounds = path_bounds(clip.tree->path(), clip.place);
+        for (Stack& s : clips_[c].lods) {
+            s.built = false;  // buffers are kept and refilled when next drawn
+            s.values_revision = ~std::uint64_t(0);
+        }
+        clips_[c].chunks = chunk_bounds(clip.tree->path(), clip.place);
         clips_[c].dt = float(clip.tree->path().dt);
     }
 }
@@ -159,22 +165,42 @@ DiskLayer::Stack& DiskLayer::stack_at(const ClipView& clip, Clip& c, int k) {
     return s;
 }
 
-// The instances of stack s (k samples each) inside the frame's time window: all without one. The clip
-// planes cut the window's edges exactly; this only spares llvmpipe the instances wholly outside.
-DiskLayer::InstanceRange DiskLayer::in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k) {
-    if (frame.window <= 0) return {0, s.count};
-    const double dt = clip.tree->path().dt, t0 = clip.place.t0;
+// The samples inside the frame's time window: all without one. The clip planes cut the window's edges
+// exactly; this only spares llvmpipe the instances wholly outside.
+DiskLayer::SampleSpan DiskLayer::in_window(const Frame& frame, const ClipView& clip) {
     const auto n = std::int64_t(clip.tree->path().size());
+    if (frame.window <= 0) return {0, n};
+    const double dt = clip.tree->path().dt, t0 = clip.place.t0;
     const std::int64_t i0 =
         std::max<std::int64_t>(0, std::int64_t(std::floor((frame.cursor - frame.window - t0) / dt)));
     const std::int64_t i1 = std::min(n - 1, std::int64_t(std::floor((frame.cursor + frame.window - t0) / dt)));
     if (i1 < i0) return {0, 0};
-    const std::int64_t g0 = i0 / k, g1 = std::min<std::int64_t>(i1 / k, std::int64_t(s.count) - 1);
-    return {GLsizei(g0), GLsizei(g1 - g0 + 1)};
+    return {i0, i1 + 1};
+}
+
+bool DiskLayer::map_values(const Frame& frame, const ClipView& clip, Stack& s, int group) {
+    const bool mapped = frame.layers.disk_colour != DiskColour::Clip && clip.sample_values &&
+                        clip.sample_values->size() == clip.tree->path().size();
+    if (!mapped) {
+        glDisableVertexAttribArray(4);
+        return false;
+    }
+    if (!s.values) glGenBuffers(1, &s.values);
+    if (s.values_revision != frame.colour_revision) {
+        const std::vector<float> v =
+            group > 1 ? group_values(*clip.sample_values, group, frame.layers.disk_colour == DiskColour::Clearance)
+                      : *clip.sample_values;
+        glBindBuffer(GL_ARRAY_BUFFER, s.values);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
+        s.values_revision = frame.colour_revision;
+    }
+    glEnableVertexAttribArray(4);
+    glVertexAttribDivisor(4, 1);
+    return true;
 }
 
 // Points the stack's instance attributes at its instance `first` (a GL 3.3 stand-in for a base instance).
-void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped) {
+void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped, bool mapped) {
     const GLsizei stride = grouped ? GLsizei(sizeof(DiskGroup)) : GLsizei(sizeof(DiskInstance));
     const std::size_t base = std::size_t(first) * std::size_t(stride);
     glBindBuffer(GL_ARRAY_BUFFER, s.vbo);
@@ -182,6 +208,36 @@ void DiskLayer::point_at(const Stack& s, GLsizei first, bool grouped) {
     if (grouped)
         glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<void*>(base + offsetof(DiskGroup, shift)));
+    if (mapped) {
+        glBindBuffer(GL_ARRAY_BUFFER, s.values);
+        glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, sizeof(float),
+                              reinterpret_cast<void*>(std::size_t(first) * sizeof(float)));
+    }
+}
+
+namespace {
+void chunk_gl(const Bounds& b, double time_scale, glm::vec3& lo, glm::vec3& hi) {
+    const glm::vec3 a = to_gl(b.lo.x, b.lo.y, b.lo.z, time_scale), c = to_gl(b.hi.x, b.hi.y, b.hi.z, time_scale);
+    lo = glm::min(a, c);
+    hi = glm::max(a, c);
+}
+}  // namespace
+
+GLsizei DiskLayer::draw_span(const Frame& frame, const DrawContext& ctx, std::size_t c, SampleSpan span, int k) {
+    const ClipView& view = frame.clips[c];
+    Clip& clip = clips_[c];
+    Stack& s = stack_at(view, clip, k);
+    const int group = 1 << level_of(k);  // samples per instance
+    const auto g0 = GLsizei(span.first / group);
+    const GLsizei g1 = std::min(GLsizei((span.end + group - 1) / group), s.count);
+    if (g1 <= g0) return 0;
+    ctx.disk->set("u_dt", clip.dt);
+    glBindVertexArray(s.vao);
+    const bool mapped = map_values(frame, view, s, group);
+    ctx.disk->set("u_mapped", mapped ? 1 : 0);
+    point_at(s, g0, group > 1, mapped);
+    glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, g1 - g0);
+    return g1 - g0;
 }
 
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
@@ -191,25 +247,44 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     ctx.disk->set("u_time_scale", float(frame.time_scale));
     ctx.disk->set("u_grow", 1.0f);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
+    // Opaque stacks are solids seen from outside: their back faces are hidden anyway, and culling them
+    // spares llvmpipe half the rasterisation. Where the time window cuts a stack open, the disk below
+    // shows its top cap instead of the stack's inside.
+    if (!translucent_pass) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(kFrontFace);
+    }
     const float alpha = translucent_pass ? 0.28f : 1.0f;
+    const auto& table = colour_table(frame.disk_scale.map);
+    ctx.disk->set("u_map", table.data(), kColourMapEntries);
+    ctx.disk->set("u_lo", float(frame.disk_scale.lo));
+    ctx.disk->set("u_hi", float(frame.disk_scale.hi));
     for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
         if (!frame.clips[c].visible) continue;
         Clip& clip = clips_[c];
-        const int k = clip_lod(clip.bounds, double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
-        const Stack& s = stack_at(frame.clips[c], clip, k);
-        const int group = 1 << level_of(k);  // samples per instance
-        const InstanceRange range = in_window(frame, frame.clips[c], s, group);
-        if (range.count <= 0) continue;
-        ctx.disk->set("u_dt", clip.dt);
+        const SampleSpan window = in_window(frame, frame.clips[c]);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
-        glBindVertexArray(s.vao);
-        point_at(s, range.first, group > 1);
-        glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, range.count);
-        stats_.disks += frame.clips[c].tree->path().size();
-        stats_.instances += std::size_t(range.count);
-        stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
-        stats_.k_max = std::max(stats_.k_max, k);
+        bool drawn = false;
+        for (std::size_t q = 0; q < clip.chunks.size(); ++q) {
+            const auto c0 = std::int64_t(q) * kDiskChunk;
+            const SampleSpan span{std::max(c0, window.first), std::min(c0 + kDiskChunk, window.end)};
+            if (span.first >= span.end) continue;
+            glm::vec3 lo, hi;
+            chunk_gl(clip.chunks[q], frame.time_scale, lo, hi);
+            if (outside_view(ctx.view_proj, lo, hi)) continue;
+            const int k =
+                clip_lod(clip.chunks[q], double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
+            const GLsizei count = draw_span(frame, ctx, c, span, k);
+            if (count <= 0) continue;
+            drawn = true;
+            stats_.instances += std::size_t(count);
+            stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
+            stats_.k_max = std::max(stats_.k_max, k);
+        }
+        if (drawn) stats_.disks += frame.clips[c].tree->path().size();
     }
+    glDisable(GL_CULL_FACE);
     glBindVertexArray(0);
 }
 
@@ -222,6 +297,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     ctx.disk->set("u_dt", float(dt));
     ctx.disk->set("u_grow", grow);
     ctx.disk->set("u_color", color);
+    ctx.disk->set("u_mapped", 0);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);

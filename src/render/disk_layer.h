@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -44,17 +45,24 @@ private:
         GLuint vao = 0, vbo = 0;
         GLsizei count = 0;
         bool built = false;
+        GLuint values = 0;                              ///< one float per instance (location 4)
+        std::uint64_t values_revision = ~std::uint64_t(0);  ///< the frame's colour_revision uploaded
     };
     struct Clip {
         std::array<Stack, kLevels> lods;  ///< by log2 k
-        Bounds bounds;                    ///< space-time bounds, for the LOD decision
+        std::vector<Bounds> chunks;       ///< space-time bounds of each kDiskChunk samples: LOD, culling
         float dt = 0;
     };
-    struct InstanceRange {
-        GLsizei first = 0, count = 0;
+    struct SampleSpan {
+        std::int64_t first = 0, end = 0;  ///< samples [first, end)
     };
-    static InstanceRange in_window(const Frame& frame, const ClipView& clip, const Stack& s, int k);
-    static void point_at(const Stack& s, GLsizei first, bool grouped);
+    static SampleSpan in_window(const Frame& frame, const ClipView& clip);
+    /// Draws samples [span) of clip c at level of detail k; returns the instances drawn.
+    GLsizei draw_span(const Frame& frame, const DrawContext& ctx, std::size_t c, SampleSpan span, int k);
+    static void point_at(const Stack& s, GLsizei first, bool grouped, bool mapped);
+    /// Points location 4 at the clip's values (per instance of the stack) when the frame maps them to
+    /// colours; returns whether it does.
+    bool map_values(const Frame& frame, const ClipView& clip, Stack& s, int group);
     static int level_of(int k);  ///< log2 of the group size that stands for k samples
     Stack make_stack(bool grouped);
     void upload(Stack& stack, const std::vector<DiskInstance>& disks);

@@ -41,6 +41,34 @@ Bounds path_bounds(const Path& path, const Placement& place) {
     return b;
 }
 
+std::vector<Bounds> chunk_bounds(const Path& path, const Placement& place) {
+    const Rigid2 m = Rigid2::of(place);
+    std::vector<Bounds> out;
+    const std::size_t n = path.size(), step = std::size_t(kDiskChunk);
+    for (std::size_t c0 = 0; c0 < n; c0 += step) {
+        const std::size_t c1 = std::min(n, c0 + step);
+        Bounds b;
+        for (std::size_t i = c0; i < c1; ++i) {
+            const Sample& s = path.samples[i];
+            const double x = m.apply_x(s.x, s.y), y = m.apply_y(s.x, s.y);
+            b.add({x - s.r, y - s.r, sample_time(place, path.dt, std::int64_t(c0))});
+            b.add({x + s.r, y + s.r, sample_time(place, path.dt, std::int64_t(c1))});
+        }
+        out.push_back(b);
+    }
+    return out;
+}
+
+bool outside_view(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi) {
+    int left = 0, right = 0, below = 0, above = 0, behind = 0, beyond = 0;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 p = view_proj * glm::vec4((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z, 1.0f);
+        left += p.x < -p.w, right += p.x > p.w, below += p.y < -p.w, above += p.y > p.w;
+        behind += p.z < -p.w, beyond += p.z > p.w;
+    }
+    return left == 8 || right == 8 || below == 8 || above == 8 || behind == 8 || beyond == 8;
+}
+
 int clip_lod(const Bounds& bounds, double dt, double time_scale, std::size_t scene_disks, const glm::mat4& view_proj,
              int height) {
     if (bounds.empty || scene_disks <= kDiskLodAbove) return 1;
@@ -95,6 +123,19 @@ std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k
         const float r = std::nextafter(float(radius), std::numeric_limits<float>::infinity());
         out.push_back({glm::vec4(disks[i].x, disks[i].y, disks[i].z, r),
                        glm::vec4(float(c1.x - c0.x), float(c1.y - c0.y), 0.0f, float(m))});
+    }
+    return out;
+}
+
+std::vector<float> group_values(const std::vector<float>& values, int k, bool least) {
+    std::vector<float> out;
+    const std::size_t n = values.size(), step = std::size_t(std::max(k, 1));
+    out.reserve((n + step - 1) / step);
+    for (std::size_t i = 0; i < n; i += step) {
+        const std::size_t j = std::min(i + step, n);
+        double v = least ? double(values[i]) : 0.0;
+        for (std::size_t q = i; q < j; ++q) v = least ? std::min(v, double(values[q])) : v + double(values[q]);
+        out.push_back(float(least ? v : v / double(j - i)));
     }
     return out;
 }

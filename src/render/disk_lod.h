@@ -37,7 +37,7 @@ struct DiskGroup {
 /// scenes, whatever their zoom, always draw one cylinder per sample.
 constexpr std::size_t kDiskLodAbove = 100000;
 /// A group may be at most this many pixels tall on screen (at the clip's point nearest the camera).
-constexpr double kDiskLodPixels = 2.0;
+constexpr double kDiskLodPixels = 4.0;
 constexpr int kDiskLodMaxK = 256;
 
 /// Samples per drawn cylinder: 1 for scenes of at most kDiskLodAbove disks or when one sample's
@@ -52,6 +52,16 @@ double nearest_pixels_per_metre(const glm::mat4& view_proj, int height, const gl
 /// Space-time bounds of a placed path's disks (world x, y; global time from start to end).
 Bounds path_bounds(const Path& path, const Placement& place);
 
+/// Samples per chunk of a stack: each chunk gets its own level of detail and is culled on its own. A
+/// multiple of kDiskLodMaxK, so chunks start on a group boundary at every level.
+constexpr int kDiskChunk = 2 * kDiskLodMaxK;
+
+/// Space-time bounds of each chunk of kDiskChunk samples of a placed path (the last may be shorter).
+std::vector<Bounds> chunk_bounds(const Path& path, const Placement& place);
+
+/// Whether GL-world box [lo, hi] lies wholly outside the view (beyond one side of the clip volume).
+bool outside_view(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi);
+
 /// The LOD of one clip of space-time bounds `bounds` and sample spacing dt in a frame.
 int clip_lod(const Bounds& bounds, double dt, double time_scale, std::size_t scene_disks, const glm::mat4& view_proj,
              int height);
@@ -64,5 +74,9 @@ std::vector<DiskInstance> disk_instances(const Path& path, const Placement& plac
 
 /// Groups of k consecutive disks (the last group may hold fewer), as described above.
 std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k);
+
+/// The values of groups of k consecutive samples (as group_disks() groups them): each group's mean,
+/// or with `least` its smallest (clearance: a group holding a collision shows it).
+std::vector<float> group_values(const std::vector<float>& values, int k, bool least);
 
 }  // namespace mobb::render

@@ -1,6 +1,7 @@
 #include "frame.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "space.h"
 
@@ -39,5 +40,27 @@ glm::vec3 outcome_color(TraceOutcome outcome) {
     }
     return {1, 1, 1};
 }
+
+namespace {
+
+constexpr const char* kDiskColourNames[kDiskColours] = {"clip", "radius", "speed", "time", "clearance"};
+constexpr const char* kBoxColourNames[kBoxColours] = {"level", "tightness", "tests"};
+
+template <typename E, std::size_t N>
+E parse_name(const std::string& name, const char* const (&names)[N], const char* what) {
+    std::string valid;
+    for (std::size_t k = 0; k < N; ++k) {
+        if (name == names[k]) return E(k);
+        valid += (k ? ", " : "") + std::string(names[k]);
+    }
+    throw std::invalid_argument(std::string(what) + " colouring '" + name + "': expected one of " + valid);
+}
+
+}  // namespace
+
+const char* to_string(DiskColour c) { return kDiskColourNames[std::size_t(c)]; }
+const char* to_string(BoxColour c) { return kBoxColourNames[std::size_t(c)]; }
+DiskColour parse_disk_colour(const std::string& name) { return parse_name<DiskColour>(name, kDiskColourNames, "disk"); }
+BoxColour parse_box_colour(const std::string& name) { return parse_name<BoxColour>(name, kBoxColourNames, "box"); }
 
 }  // namespace mobb::render

@@ -8,6 +8,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "colour_map.h"
+
 #include "mobb/core/path.h"
 #include "mobb/core/query.h"
 #include "mobb/core/trace.h"
@@ -16,6 +18,28 @@
 
 namespace mobb::render {
 
+/// What the disks' colour shows: each clip's own colour, or a per-sample quantity on a colour map.
+enum class DiskColour : std::uint8_t {
+    Clip,
+    Radius,     ///< r, metres
+    Speed,      ///< ground speed, m/s (core sample_speeds())
+    Time,       ///< global start time, seconds
+    Clearance,  ///< gap to the nearest other clip at the same time, metres (core nearest_clearance())
+};
+/// What the boxes' colour shows: their level, or a per-node quantity on a colour map.
+enum class BoxColour : std::uint8_t {
+    Level,
+    Tightness,  ///< box volume over its sample cylinders' volume (core volume_ratio())
+    Tests,      ///< how often the shown query tested the box (core tests_per_node())
+};
+constexpr int kDiskColours = 5, kBoxColours = 3;
+/// Names on the command line and in scene files ("clip", "radius", ...; "level", "tightness", "tests").
+const char* to_string(DiskColour c);
+const char* to_string(BoxColour c);
+/// Throw std::invalid_argument naming the valid names.
+DiskColour parse_disk_colour(const std::string& name);
+BoxColour parse_box_colour(const std::string& name);
+
 struct ClipView {
     const Tree* tree = nullptr;                ///< the path and its boxes, in the clip's own frame
     const io::Animation* animation = nullptr;  ///< joints per frame for the skeleton; null for synthetic paths
@@ -23,6 +47,10 @@ struct ClipView {
     Placement place;
     glm::vec3 color{0.5f};
     bool visible = true;
+    /// With a disk colouring other than Clip: one value per sample (owned by the caller); null draws
+    /// the clip's colour. Likewise one value per tree node for a box colouring other than Level.
+    const std::vector<float>* sample_values = nullptr;
+    const std::vector<float>* node_values = nullptr;
 };
 
 struct Layers {
@@ -38,6 +66,9 @@ struct Layers {
     bool cursor = true;     ///< the time-cursor plane
     bool skeletons = true;  ///< skeletons at the cursor time
     bool trace = true;      ///< the current trace step
+    DiskColour disk_colour = DiskColour::Clip;
+    BoxColour box_colour = BoxColour::Level;
+    bool colour_bar = true;  ///< a bar for each colouring in use, at the image's right edge
 };
 
 /// A skeleton posed by the caller rather than played from a clip (a crowd agent: the viewer picks the
@@ -82,6 +113,11 @@ struct Frame {
     std::vector<Prism> prisms;         ///< the ones not on top count in the scene's bounds
     /// Changes whenever clips, placements or trees change: the renderer rebuilds cached geometry.
     std::uint64_t revision = 0;
+    /// The maps and ranges of the disk and box colourings (when not Clip / Level), and a number that
+    /// changes whenever the clips' sample or node values change (the renderer re-uploads them).
+    ColourScale disk_scale, box_scale;
+    std::uint64_t colour_revision = 0;
+    float bar_inset = 0;  ///< pixels kept free at the image's right edge (the window's panels)
 };
 
 /// Colours shared by the 3D view and the panels.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "box_layer.h"
+#include "colour_bar_layer.h"
 #include "cursor_layer.h"
 #include "disk_layer.h"
 #include "grid_layer.h"
@@ -53,6 +54,7 @@ struct Renderer::Layers {
     CursorLayer cursor;
     TraceLayer trace;
     TextLayer text;
+    ColourBarLayer colour_bars;
 };
 
 Renderer::Renderer() : layers_(std::make_unique<Layers>()) {}
@@ -127,6 +129,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     glDisable(GL_DEPTH_TEST);
     l.prisms.draw_on_top(frame, ctx);
     l.cursor.draw_posed(frame, ctx);
+    l.colour_bars.draw(frame, ctx, l.text);
     l.text.draw(ctx);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);

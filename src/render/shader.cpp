@@ -56,5 +56,8 @@ void Program::set(const char* name, const glm::vec4& v) const {
 }
 void Program::set(const char* name, float v) const { glUniform1f(glGetUniformLocation(id_, name), v); }
 void Program::set(const char* name, int v) const { glUniform1i(glGetUniformLocation(id_, name), v); }
+void Program::set(const char* name, const glm::vec3* v, int count) const {
+    glUniform3fv(glGetUniformLocation(id_, name), count, glm::value_ptr(v[0]));
+}
 
 }  // namespace mobb::render

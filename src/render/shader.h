@@ -1,6 +1,7 @@
 // GLSL programs built from the embedded copies of shaders/*.vert and *.frag.
 #pragma once
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "gl.h"
@@ -23,6 +24,7 @@ public:
     void set(const char* name, const glm::vec4& v) const;
     void set(const char* name, float v) const;
     void set(const char* name, int v) const;
+    void set(const char* name, const glm::vec3* v, int count) const;  ///< a uniform array
 
 private:
     GLuint id_ = 0;

@@ -12,16 +12,19 @@ void TextLayer::add(const glm::vec3& world, std::string text, const glm::vec4& c
     labels_.push_back({world, std::move(text), color, anchor});
 }
 
+void TextLayer::add_screen(const glm::vec2& pixel, std::string text, const glm::vec4& color, Anchor anchor) {
+    labels_.push_back({glm::vec3(pixel, 0.0f), std::move(text), color, anchor, true});
+}
+
 void TextLayer::draw(const DrawContext& ctx) {
-    // Integer pixel scale keeps the bitmap font crisp: 1 below 600 rows, 2 below 1200, then 3.
-    const float scale = ctx.height >= 1200 ? 3.0f : ctx.height >= 600 ? 2.0f : 1.0f;
+    const float scale = text_scale(ctx.height);
     tris_.clear();
     std::vector<char> quads(64 * 1024);
     for (Label& label : labels_) {
-        const glm::vec4 clip = ctx.view_proj * glm::vec4(label.world, 1.0f);
+        const glm::vec4 clip = label.screen ? glm::vec4(0, 0, 0, 1) : ctx.view_proj * glm::vec4(label.world, 1.0f);
         if (clip.w <= 0.0f) continue;  // behind the camera
-        const float sx = (clip.x / clip.w * 0.5f + 0.5f) * float(ctx.width);
-        const float sy = (0.5f - clip.y / clip.w * 0.5f) * float(ctx.height);
+        const float sx = label.screen ? label.world.x : (clip.x / clip.w * 0.5f + 0.5f) * float(ctx.width);
+        const float sy = label.screen ? label.world.y : (0.5f - clip.y / clip.w * 0.5f) * float(ctx.height);
         const float w = float(stb_easy_font_width(label.text.data())) * scale;
         const float x0 = label.anchor == Anchor::Left    ? sx + 3.0f * scale
                          : label.anchor == Anchor::Right ? sx - w - 3.0f * scale

@@ -78,7 +78,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     render::Target target(options.width, options.height);
     render::Renderer renderer;
     target.bind();
-    renderer.draw(frame_of(state), state.camera, options.width, options.height);
+    renderer.draw(frame_of(state, options.ui ? kRightPanels : 0.0f), state.camera, options.width, options.height);
     if (options.ui) draw_ui(state, options);
     return target.read();
 }

@@ -44,6 +44,20 @@ void save_to_path(State& s, Ui& ui) {
     }
 }
 
+/// The disk and box colourings (colour maps with a colour bar); a box colouring shows the boxes.
+void colouring_combos(render::Layers& l) {
+    const char* disks[render::kDiskColours];
+    const char* boxes[render::kBoxColours];
+    for (int k = 0; k < render::kDiskColours; ++k) disks[k] = to_string(render::DiskColour(k));
+    for (int k = 0; k < render::kBoxColours; ++k) boxes[k] = to_string(render::BoxColour(k));
+    int d = int(l.disk_colour), b = int(l.box_colour);
+    if (ImGui::Combo("disks by", &d, disks, render::kDiskColours)) l.disk_colour = render::DiskColour(d);
+    if (ImGui::Combo("boxes by", &b, boxes, render::kBoxColours)) {
+        l.box_colour = render::BoxColour(b);
+        if (l.box_colour != render::BoxColour::Level) l.boxes = true;
+    }
+}
+
 void scene_panel(State& s, Ui& ui) {
     if (!ui.panels.scene) return;
     ImGui::SetNextWindowPos(ImVec2(8, ui.menu_height + 8), ImGuiCond_FirstUseEver);
@@ -67,6 +81,7 @@ void scene_panel(State& s, Ui& ui) {
     ImGui::Checkbox("skeletons", &l.skeletons);
     ImGui::SameLine();
     ImGui::Checkbox("trace", &l.trace);
+    colouring_combos(l);
     drag("time", &s.scene.cursor, 0.01f, 0.0, max_time(s), "%.2f s");
     drag("window", &s.scene.window, 0.05f, 0.0, max_time(s), s.scene.window > 0 ? "+-%.2f s" : "all time");
     drag("m per s", &s.scene.time_scale, 0.01f, 0.05, 20.0, "%.2f");

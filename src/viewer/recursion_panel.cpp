@@ -67,7 +67,7 @@ void pair_row(RowContext& c, int k) {
 
 void recursion_panel(State& s, Ui& ui) {
     if (!ui.panels.recursion) return;
-    const float top = ui.menu_height + 272.0f;  // under the Scene panel, above the Tree fit panel
+    const float top = ui.menu_height + 314.0f;  // under the Scene panel, above the Tree fit panel
     ImGui::SetNextWindowPos(ImVec2(8, top), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, std::max(120.0f, float(ui.window_size.y) - top - 290.0f)),
                              ImGuiCond_FirstUseEver);

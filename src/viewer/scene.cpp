@@ -136,7 +136,7 @@ SceneClip clip_of(const json& j, const std::string& where) {
 void layers_of(const json& j, const std::string& where, render::Layers& l) {
     Reader r(j, where,
              {"grid", "labels", "disks", "disks_translucent", "boxes", "box_faces", "all_levels", "level", "levels",
-              "cursor", "skeletons", "trace"});
+              "cursor", "skeletons", "trace", "disk_colour", "box_colour", "colour_bar"});
     l.grid = r.boolean("grid", l.grid);
     l.labels = r.boolean("labels", l.labels);
     l.disks = r.boolean("disks", l.disks);
@@ -149,6 +149,18 @@ void layers_of(const json& j, const std::string& where, render::Layers& l) {
     l.cursor = r.boolean("cursor", l.cursor);
     l.skeletons = r.boolean("skeletons", l.skeletons);
     l.trace = r.boolean("trace", l.trace);
+    try {
+        if (r.has("disk_colour"))
+            l.disk_colour = render::parse_disk_colour(r.string("disk_colour", to_string(l.disk_colour)));
+    } catch (const std::invalid_argument& e) {
+        Reader::fail(r.at("disk_colour"), e.what());
+    }
+    try {
+        if (r.has("box_colour")) l.box_colour = render::parse_box_colour(r.string("box_colour", to_string(l.box_colour)));
+    } catch (const std::invalid_argument& e) {
+        Reader::fail(r.at("box_colour"), e.what());
+    }
+    l.colour_bar = r.boolean("colour_bar", l.colour_bar);
 }
 
 render::Camera camera_of(const json& j, const std::string& where, double time_scale) {
@@ -274,7 +286,10 @@ json scene_json(const Scene& s) {
                 {"levels", l.levels},
                 {"cursor", l.cursor},
                 {"skeletons", l.skeletons},
-                {"trace", l.trace}}},
+                {"trace", l.trace},
+                {"disk_colour", to_string(l.disk_colour)},
+                {"box_colour", to_string(l.box_colour)},
+                {"colour_bar", l.colour_bar}}},
               {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}, {"window", s.window}}},
               {"skeleton_scale", s.skeleton_scale},
               {"image", {{"width", s.width}, {"height", s.height}}}};

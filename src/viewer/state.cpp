@@ -123,8 +123,10 @@ int shown_step(const State& s) {
     return std::min(s.scene.step, int(s.trace.size()) - 1);
 }
 
-render::Frame frame_of(const State& s) {
+render::Frame frame_of(const State& s, float bar_inset) {
     render::Frame f;
+    Colouring& colouring = *s.colouring;
+    update_colouring(s, colouring);
     for (std::size_t k = 0; k < s.clips.size(); ++k) {
         render::ClipView v;
         v.tree = s.clips[k].tree.get();
@@ -135,6 +137,8 @@ render::Frame frame_of(const State& s) {
         v.place = s.places[k];
         v.color = k < s.colors.size() ? s.colors[k] : render::clip_color(int(k));
         v.visible = k >= s.scene.clips.size() || s.scene.clips[k].visible;
+        if (k < colouring.samples.size() && !colouring.samples[k].empty()) v.sample_values = &colouring.samples[k];
+        if (k < colouring.nodes.size() && !colouring.nodes[k].empty()) v.node_values = &colouring.nodes[k];
         f.clips.push_back(v);
     }
     f.layers = s.scene.layers;
@@ -147,6 +151,10 @@ render::Frame frame_of(const State& s) {
     if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
     if (s.crowd) f.prisms = crowd_prisms(*s.crowd, s.scene.cursor);
     f.revision = s.revision;
+    f.disk_scale = colouring.disk_scale;
+    f.box_scale = colouring.box_scale;
+    f.colour_revision = colouring.serial;
+    f.bar_inset = bar_inset;
     return f;
 }
 

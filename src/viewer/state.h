@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "colouring.h"
 #include "frame.h"
 #include "mobb/core/clearance.h"
 #include "mobb/core/query.h"
@@ -42,6 +43,8 @@ struct State {
     std::shared_ptr<CrowdView> crowd;
     std::vector<Path> fixed_paths;
     std::vector<glm::vec3> colors;
+    /// The disk and box colourings' values, filled by frame_of() when first needed (shared, not copied).
+    std::shared_ptr<Colouring> colouring = std::make_shared<Colouring>();
 };
 
 /// Loads every clip and builds the trees, runs the query, sets the camera. Throws io::LoadError or
@@ -64,6 +67,10 @@ int shown_step(const State& state);
 
 /// What the renderer draws. For a crowd it also poses every agent's skeleton at the cursor, loading
 /// the mocap sources it needs the first time (through state.crowd, which is shared, not copied).
-render::Frame frame_of(const State& state);
+/// `bar_inset`: pixels at the right edge the colour bars keep clear (kRightPanels under the panels).
+render::Frame frame_of(const State& state, float bar_inset = 0);
+
+/// Width of the panels' right column (Trace, Query) with its margins, pixels.
+constexpr float kRightPanels = 296.0f;
 
 }  // namespace mobb::viewer

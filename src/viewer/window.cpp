@@ -195,7 +195,7 @@ void run_window(State& s, const WindowOptions& options) {
             keep_settings(s, ui, settings, options.settings_key);
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            renderer.draw(frame_of(s), s.camera, fb.x, fb.y);
+            renderer.draw(frame_of(s, kRightPanels * float(fb.x) / float(std::max(size.x, 1))), s.camera, fb.x, fb.y);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             if (last) {
                 if (!options.screenshot.empty()) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "mobb/core/brute.h"
@@ -47,6 +49,48 @@ TEST(Clearance, StandingCharactersKeepTheirDistanceMinusRadii) {
 TEST(Clearance, ClipsApartInTimeHaveNone) {
     const Path a = test::standing_still(30), b = test::standing_still(30);
     EXPECT_TRUE(clearance(a, {}, b, {0, 0, 0, 30 * a.dt}).empty());  // b starts as a ends
+}
+
+/// nearest_clearance() per sample equals the least clearance() gap over every other clip, for random
+/// crowds of clips with overlapping and disjoint time ranges; +infinity where no clip overlaps in time.
+TEST(NearestClearance, LeastOfThePairwiseClearances) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int round = 0; round < 20; ++round) {
+        const int n = 2 + int(rng() % 4);
+        std::vector<Path> paths;
+        std::vector<Placement> places;
+        for (int c = 0; c < n; ++c) {
+            paths.push_back(test::random_walk(rng, 30 + int(rng() % 120)));
+            places.push_back({3 * u(rng), 3 * u(rng), 3 * u(rng), 2 * u(rng)});
+        }
+        std::vector<const Path*> ptrs;
+        for (const Path& p : paths) ptrs.push_back(&p);
+        const auto nearest = nearest_clearance(ptrs, places);
+        ASSERT_EQ(nearest.size(), paths.size());
+        for (int c = 0; c < n; ++c) {
+            std::vector<double> expected(paths[std::size_t(c)].size(), std::numeric_limits<double>::infinity());
+            for (int d = 0; d < n; ++d) {
+                if (d == c) continue;
+                for (const ClearanceSample& s :
+                     clearance(paths[std::size_t(c)], places[std::size_t(c)], paths[std::size_t(d)], places[std::size_t(d)]))
+                    expected[std::size_t(s.i)] = std::min(expected[std::size_t(s.i)], s.gap);
+            }
+            ASSERT_EQ(nearest[std::size_t(c)].size(), expected.size());
+            for (std::size_t i = 0; i < expected.size(); ++i)
+                EXPECT_EQ(nearest[std::size_t(c)][i], expected[i]) << "round " << round << " clip " << c << " sample " << i;
+        }
+    }
+}
+
+TEST(NearestClearance, AloneInTimeIsInfinite) {
+    const Path a = test::standing_still(30), b = test::standing_still(30);
+    const auto g = nearest_clearance({&a, &b}, {{}, {0, 0, 0, 30 * a.dt}});
+    for (const auto& clip : g)
+        for (double x : clip) EXPECT_TRUE(std::isinf(x) && x > 0);
+    const auto one = nearest_clearance({&a}, {{}});
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_TRUE(std::isinf(one[0][0]));
 }
 
 }  // namespace

@@ -135,6 +135,34 @@ TEST(QueryTest, CountsAndTraceDescribeTheSameWork) {
     }
 }
 
+/// tests_per_node() counts each tree's side of the trace: every non-descent event once on each side,
+/// the roots tested first.
+TEST(QueryTest, TestsPerNodeCountTheTrace) {
+    std::mt19937_64 rng(26);
+    const Path a = test::random_walk(rng, 500), b = test::random_walk(rng, 400);
+    const Tree ta = Tree::build(a, {TreeType::Mobb}), tb = Tree::build(b, {TreeType::Umobb});
+    int traces = 0;
+    for (int q = 0; q < 50; ++q) {
+        const Placement pa = random_placement(rng, 2, 1), pb = random_placement(rng, 2, 1);
+        Trace trace;
+        collide(ta, pa, tb, pb, nullptr, &trace);
+        const std::vector<int> na = tests_per_node(trace, true, ta.nodes().size());
+        const std::vector<int> nb = tests_per_node(trace, false, tb.nodes().size());
+        ASSERT_EQ(na.size(), ta.nodes().size());
+        ASSERT_EQ(nb.size(), tb.nodes().size());
+        long tested = 0;
+        for (const TraceEvent& e : trace) tested += e.test != TraceTest::Descend;
+        long sa = 0, sb = 0;
+        for (int x : na) sa += x;
+        for (int x : nb) sb += x;
+        EXPECT_EQ(sa, tested);
+        EXPECT_EQ(sb, tested);
+        EXPECT_GE(na[0], 1);
+        traces += trace.size() > 3;
+    }
+    EXPECT_GT(traces, 10);
+}
+
 TEST(QueryTest, TypesCountTheirOwnBoxTests) {
     std::mt19937_64 rng(25);
     const Path a = test::random_walk(rng, 600), b = test::random_walk(rng, 600);

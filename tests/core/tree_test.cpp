@@ -104,6 +104,25 @@ TEST(TreeTest, LevelStatsCountNodesAndAreAtLeastTight) {
     }
 }
 
+/// volume_ratio() per node is at least 1 (boxes contain their cylinders), and its mean per level is
+/// level_stats()' volume_ratio; a standing character's upright box is exactly as tight as its disks
+/// squared off: 4 / pi.
+TEST(TreeTest, VolumeRatioPerNode) {
+    std::mt19937_64 rng(14);
+    const Tree tree = Tree::build(test::random_walk(rng, 640), {TreeType::Umobb, 10});
+    const auto levels = level_stats(tree);
+    std::vector<double> sum(levels.size(), 0.0);
+    for (const Node& n : tree.nodes()) {
+        const double r = volume_ratio(tree, n);
+        EXPECT_GE(r, 1.0);
+        sum[n.level] += r;
+    }
+    for (std::size_t l = 0; l < levels.size(); ++l)
+        EXPECT_NEAR(sum[l] / levels[l].nodes, levels[l].volume_ratio, 1e-9 * levels[l].volume_ratio);
+    const Tree still = Tree::build(test::standing_still(40, 0.3), {TreeType::Mobb, 10});
+    EXPECT_NEAR(volume_ratio(still, still.root()), 4.0 / 3.141592653589793, 1e-6);
+}
+
 TEST(TreeTest, RejectsBadInput) {
     EXPECT_THROW(Tree::build(Path{}), std::invalid_argument);
     EXPECT_THROW(Tree::build(test::standing_still(3), {TreeType::Mobb, 0}), std::invalid_argument);
@@ -115,6 +134,16 @@ TEST(TreeTest, RejectsBadInput) {
     EXPECT_THROW(Tree::build(bad), std::invalid_argument);
     EXPECT_THROW(parse_tree_type("obb"), std::invalid_argument);
     for (TreeType t : kTypes) EXPECT_EQ(parse_tree_type(to_string(t)), t);
+}
+
+TEST(TreeTest, ParsesOptionNames) {
+    const TreeOptions o = parse_tree_options("hybrid2", 7, "pca");
+    EXPECT_EQ(o.type, TreeType::Hybrid2);
+    EXPECT_EQ(o.n_min, 7);
+    EXPECT_EQ(o.fit, AxisFit::Pca);
+    EXPECT_EQ(parse_tree_options("umobb1", 10, "chord").fit, AxisFit::Chord);
+    EXPECT_THROW(parse_tree_options("mobb", 10, "svd"), std::invalid_argument);
+    EXPECT_THROW(parse_tree_options("box", 10, "chord"), std::invalid_argument);
 }
 
 }  // namespace

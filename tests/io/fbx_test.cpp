@@ -95,6 +95,14 @@ TEST_F(Fbx, UnitScaleFactorAndScaleOption) {
     const Clip given = load_clip(file, o);
     EXPECT_EQ(given.scale_reason, "given: 0.001 m per unit");
     EXPECT_NEAR(given.path.samples[1].x, 0.04, 1e-6);
+    // No UnitScaleFactor: guessed from the standing height, like BVH (a 170-unit span: centimetres).
+    f.unit_cm = 0;
+    f.hips_height = 0;
+    f.reach = 170;
+    const Clip guessed = load_clip(write(f));
+    EXPECT_EQ(guessed.scale, 0.01);
+    EXPECT_EQ(guessed.scale_reason, "auto: centimetres (standing height 170.0 units)");
+    EXPECT_NEAR(guessed.path.samples[1].r, 1.7, 1e-6);
 }
 
 TEST_F(Fbx, ZUpFilesKeepTheirGroundPlane) {
@@ -112,6 +120,16 @@ TEST_F(Fbx, ZUpFilesKeepTheirGroundPlane) {
     EXPECT_EQ(y.up, UpAxis::Y);
     ASSERT_EQ(y.warnings.size(), 1u);
     EXPECT_NE(y.warnings[0].find("--up z is ignored"), std::string::npos) << y.warnings[0];
+    // No UpAxis in the file: --up decides, as for BVH.
+    test::AsciiFbx unstated = walk({0, 1 / 30.0}, {0, 0.2});
+    unstated.up_axis = 2;
+    unstated.write_up = false;
+    const std::string unstated_file = write(unstated, "unstated.fbx");
+    const Clip z_given = load_clip(unstated_file, o);
+    EXPECT_EQ(z_given.up, UpAxis::Z);
+    EXPECT_TRUE(z_given.warnings.empty());
+    EXPECT_NEAR(z_given.path.samples[1].r, 0.5, 1e-9);
+    EXPECT_EQ(load_clip(unstated_file).up, UpAxis::Y);
     // X up is turned to Y up: the keyed X becomes the height, and the hand (along X) is straight above.
     f.up_axis = 0;
     const Clip x = load_clip(write(f));
@@ -222,6 +240,7 @@ TEST_F(Fbx, ColladaGoesThroughTheSameReader) {
     EXPECT_EQ(clip.animation.skeleton.names, (std::vector<std::string>{"hips", "hand"}));
     EXPECT_EQ(clip.path.dt, 1.0 / 30.0);
     EXPECT_EQ(clip.up, UpAxis::Y);
+    EXPECT_EQ(clip.scale_reason.rfind("auto: metres", 0), 0u) << clip.scale_reason;  // Collada states no FBX unit
     ASSERT_EQ(clip.path.size(), 3u);
     const double x[] = {0, 0.1, 0.4};
     for (std::size_t i = 0; i < 3; ++i) {

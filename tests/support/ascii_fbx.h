@@ -10,7 +10,8 @@ namespace mobb::test {
 
 struct AsciiFbx {
     int up_axis = 1;                  ///< GlobalSettings UpAxis: 0 X, 1 Y, 2 Z
-    double unit_cm = 100;             ///< UnitScaleFactor: centimetres per unit
+    bool write_up = true;             ///< false: no UpAxis / UpAxisSign (the hips still stand along up_axis)
+    double unit_cm = 100;             ///< UnitScaleFactor: centimetres per unit (0: not written)
     int time_mode = 6;                ///< TimeMode: 6 = 30 fps, 3 = 60 fps
     std::vector<double> key_seconds;  ///< the hips' X keys; empty: no animation at all
     std::vector<double> key_x;
@@ -27,13 +28,12 @@ inline std::string ascii_fbx(const AsciiFbx& f) {
     t[f.up_axis] = f.hips_height;
     std::string s = "; FBX 7.4.0 project file\n"
                     "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
-                    "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n"
-                    "\t\tP: \"UpAxis\", \"int\", \"Integer\", \"\"," +
-                    std::to_string(f.up_axis) +
-                    "\n\t\tP: \"UpAxisSign\", \"int\", \"Integer\", \"\",1\n"
-                    "\t\tP: \"UnitScaleFactor\", \"double\", \"Number\", \"\"," +
-                    num(f.unit_cm) + "\n\t\tP: \"TimeMode\", \"enum\", \"\", \"\"," + std::to_string(f.time_mode) +
-                    "\n\t}\n}\nObjects:  {\n";
+                    "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n";
+    if (f.write_up)
+        s += "\t\tP: \"UpAxis\", \"int\", \"Integer\", \"\"," + std::to_string(f.up_axis) +
+             "\n\t\tP: \"UpAxisSign\", \"int\", \"Integer\", \"\",1\n";
+    if (f.unit_cm > 0) s += "\t\tP: \"UnitScaleFactor\", \"double\", \"Number\", \"\"," + num(f.unit_cm) + "\n";
+    s += "\t\tP: \"TimeMode\", \"enum\", \"\", \"\"," + std::to_string(f.time_mode) + "\n\t}\n}\nObjects:  {\n";
     const std::string kind = f.null_only ? "Null" : "LimbNode";
     s += "\tNodeAttribute: 2001, \"NodeAttribute::\", \"" + kind + "\" {\n\t\tTypeFlags: \"" +
          (f.null_only ? "Null" : "Skeleton") + "\"\n\t}\n";

@@ -113,5 +113,43 @@ TEST(DiskLod, GroupsHoldTheirDisks) {
     }
 }
 
+/// Chunks of kDiskChunk samples: each holds its samples' disks over its time slot, and together they
+/// make the path's bounds.
+TEST(DiskLod, ChunkBoundsHoldTheirDisks) {
+    Path path;
+    path.dt = 0.02;
+    for (int i = 0; i < 2 * render::kDiskChunk + 37; ++i)
+        path.samples.push_back({0.01 * i, std::sin(0.01 * i), 0.2 + 0.1 * std::cos(0.03 * i)});
+    const Placement place{1.0, -2.0, 0.7, 3.0};
+    const std::vector<render::Bounds> chunks = render::chunk_bounds(path, place);
+    ASSERT_EQ(chunks.size(), 3u);
+    const render::Bounds whole = render::path_bounds(path, place);
+    render::Bounds joined;
+    for (const auto& b : chunks) joined.add(b.lo), joined.add(b.hi);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(joined.lo[k], whole.lo[k], 1e-12);
+        EXPECT_NEAR(joined.hi[k], whole.hi[k], 1e-12);
+    }
+    const Rigid2 m = Rigid2::of(place);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const render::Bounds& b = chunks[i / std::size_t(render::kDiskChunk)];
+        const Sample& s = path.samples[i];
+        EXPECT_GE(m.apply_x(s.x, s.y) - s.r, b.lo.x - 1e-12);
+        EXPECT_LE(m.apply_y(s.x, s.y) + s.r, b.hi.y + 1e-12);
+        EXPECT_GE(sample_time(place, path.dt, std::int64_t(i)), b.lo.z);
+        EXPECT_LE(sample_time(place, path.dt, std::int64_t(i) + 1), b.hi.z + 1e-12);
+    }
+}
+
+TEST(DiskLod, OutsideViewCullsOnlyWhatIsOutside) {
+    const glm::mat4 identity(1.0f);  // clip volume = the cube [-1, 1]^3
+    EXPECT_FALSE(render::outside_view(identity, glm::vec3(-0.5f), glm::vec3(0.5f)));
+    EXPECT_FALSE(render::outside_view(identity, glm::vec3(0.9f), glm::vec3(3.0f)));  // straddles a side
+    EXPECT_FALSE(render::outside_view(identity, glm::vec3(-5.0f), glm::vec3(5.0f)));  // holds the view
+    EXPECT_TRUE(render::outside_view(identity, glm::vec3(1.5f, -0.5f, -0.5f), glm::vec3(2.0f, 0.5f, 0.5f)));
+    EXPECT_TRUE(render::outside_view(identity, glm::vec3(-0.5f, -3.0f, -0.5f), glm::vec3(0.5f, -1.1f, 0.5f)));
+    EXPECT_TRUE(render::outside_view(identity, glm::vec3(-0.5f, -0.5f, 1.2f), glm::vec3(0.5f, 0.5f, 2.0f)));
+}
+
 }  // namespace
 }  // namespace mobb::test

@@ -348,6 +348,64 @@ TEST(Golden, CrowdEventPlots) {
     for (const std::string& line : cut) ADD_FAILURE() << line;
 }
 
+/// Disks coloured by clearance to the other clip (reversed cool-warm map: the overlap warm) and the
+/// level-1 boxes by how often the query tested them, with both colour bars; 480 x 360 so they read.
+TEST(Golden, ColourClearanceAndTests) {
+    MOBB_NEEDS_MOCAP();
+    Case c{"colour_clearance_tests", "pair.json", [](State& s) {
+               ASSERT_TRUE(s.answer);
+               s.scene.layers.disk_colour = render::DiskColour::Clearance;
+               s.scene.layers.boxes = true;
+               s.scene.layers.level = 1;
+               s.scene.layers.box_colour = render::BoxColour::Tests;
+           }};
+    c.width = 480;
+    c.height = 360;
+    check_golden(c);
+}
+
+/// Synthetic walks (no mocap) with disks by speed on viridis and boxes by tightness.
+TEST(Golden, ColourSpeedAndTightness) {
+    Case c{"colour_speed_tightness", "walks.json", [](State& s) {
+               s.scene.layers.disk_colour = render::DiskColour::Speed;
+               s.scene.layers.box_colour = render::BoxColour::Tightness;
+               s.scene.layers.trace = false;
+           }};
+    c.width = 480;
+    c.height = 360;
+    check_golden(c);
+}
+
+/// The time window: only +-0.6 s about the cursor drawn, cut by the clip planes.
+TEST(Golden, TimeWindow) {
+    MOBB_NEEDS_MOCAP();
+    check_golden({"time_window", "pair.json", [](State& s) {
+                      s.scene.cursor = 2.2;
+                      s.scene.window = 0.6;
+                      s.scene.layers.cursor = s.scene.layers.skeletons = true;
+                  }});
+}
+
+/// A colouring changes the picture: the walks by time do not match the same view by clip colour, and
+/// without the colour bar the right edge is the background's.
+TEST(GoldenNegative, ColouringChangesTheImage) {
+    const Scene scene = viewer::load_scene(test_scene("walks.json"));
+    State s = viewer::load_state(scene, 320.0f / 240.0f);
+    const render::Image plain = viewer::render_headless(s, {320, 240, false});
+    s.scene.layers.disk_colour = render::DiskColour::Time;
+    const render::Image timed = viewer::render_headless(s, {320, 240, false});
+    const Tolerance tolerance;
+    EXPECT_GT(compare(plain, timed, tolerance).fraction, 0.01);
+    // The bar's middle band, 20 px from the right edge and 60 px down, is the map's middle colour.
+    const glm::vec3 mid = render::colour_at(render::ColourMap::Viridis, 0.5) * 255.0f;
+    const auto* px = timed.at(320 - 17, 60);
+    EXPECT_NEAR(px[0], mid.r, 24);
+    EXPECT_NEAR(px[1], mid.g, 24);
+    EXPECT_NEAR(px[2], mid.b, 24);
+    const auto* bg = plain.at(320 - 17, 60);
+    EXPECT_GT(bg[0], 230);
+}
+
 /// The comparator must catch a real change: the level-1 scene with one more box level drawn.
 TEST(GoldenNegative, OneMoreBoxLevelDoesNotMatch) {
     MOBB_NEEDS_MOCAP();

@@ -20,4 +20,12 @@ struct ClearanceSample {
 /// overlap in time. Some gap is negative exactly when collide_brute(a, pa, b, pb) is true.
 std::vector<ClearanceSample> clearance(const Path& a, const Placement& pa, const Path& b, const Placement& pb);
 
+/// Clearance of every sample of every clip to its nearest other clip: entry [c][i] is the smallest
+/// gap (as in clearance()) between sample i of clip c and the samples of any other clip overlapping it
+/// in time, metres; +infinity where no other clip overlaps it in time. paths and places have one entry
+/// per clip. Every pair of clips is visited once (both clips' entries updated), pairs whose time
+/// ranges are disjoint skipped: O(clips^2 + pairs overlapping in time x samples).
+std::vector<std::vector<double>> nearest_clearance(const std::vector<const Path*>& paths,
+                                                   const std::vector<Placement>& places);
+
 }  // namespace mobb

@@ -1,6 +1,7 @@
 // Fitting boxes to runs of samples: MOBB (paper 3.1) and UMOBB (paper 4, figure 6).
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "mobb/core/obb.h"
 #include "mobb/core/path.h"
@@ -12,6 +13,10 @@ enum class AxisFit {
     Chord,  ///< first-to-last sample of the node, principal axis if they coincide (paper 3.1)
     Pca,    ///< principal axis of the samples' positions (second-order statistics, as OBB trees)
 };
+
+/// The fit of a name on the command line and in scripts: "chord" or "pca". Throws std::invalid_argument
+/// "unknown axis fit 'NAME' (chord, pca)".
+AxisFit parse_axis_fit(const std::string& name);
 
 /// Safety margin (metres or seconds) added to every fitted half extent, so that rounding in the
 /// separating-axis tests can never drop a true contact: boxes are conservative, samples exact.

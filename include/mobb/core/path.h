@@ -28,6 +28,10 @@ struct Path {
 /// Throws std::invalid_argument unless dt > 0 and every value is finite with r >= 0.
 void validate(const Path& path);
 
+/// Ground speed at each sample, metres per second: the central difference |p_{i+1} - p_{i-1}| / (2 dt),
+/// one-sided at the ends; 0 for a one-sample path. The same under any placement (rigid motions keep it).
+std::vector<double> sample_speeds(const Path& path);
+
 /// Where and when a clip plays: world position R(theta) p + (x, y) in metres, theta in radians
 /// (counter-clockwise seen from above), and sample i covers global time [t0 + i*dt, t0 + (i+1)*dt).
 struct Placement {

@@ -32,6 +32,10 @@ struct TraceEvent {
 
 using Trace = std::vector<TraceEvent>;
 
+/// How often a query tested each node of one of its trees: events naming the node (node_a for
+/// side A, node_b for side B), descents excluded; `nodes` entries (that tree's node count).
+std::vector<int> tests_per_node(const Trace& trace, bool side_a, std::size_t nodes);
+
 const char* to_string(TraceTest test);
 const char* to_string(TraceOutcome outcome);
 

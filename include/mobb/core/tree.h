@@ -48,6 +48,9 @@ struct TreeOptions {
     int n_min = 10;                ///< leaves hold at most n_min samples (paper 3.1); >= 1
     AxisFit fit = AxisFit::Chord;  ///< MOBB axis choice
 };
+/// The options of a type name, n_min and an axis fit name, as the command line and the Python module
+/// take them. Throws std::invalid_argument for an unknown name (n_min is checked by Tree::build).
+TreeOptions parse_tree_options(const std::string& type, int n_min, const std::string& fit);
 
 enum class BoxKind : std::uint8_t { Box2, Box3 };
 
@@ -102,6 +105,10 @@ struct LevelStats {
     double volume_ratio = 0;  ///< mean of box volume over the volume of its sample cylinders (>= 1)
 };
 std::vector<LevelStats> level_stats(const Tree& tree);
+
+/// Tightness of one node's box: its space-time volume (2D boxes extruded over the node's time range)
+/// over the volume of its sample cylinders, >= 1 (1 would be a box as tight as the disks themselves).
+double volume_ratio(const Tree& tree, const Node& node);
 
 /// Every sample cylinder lies inside the box of every node that holds it (tolerance in metres).
 bool all_samples_contained(const Tree& tree, double tol = 1e-9);

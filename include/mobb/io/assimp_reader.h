@@ -35,8 +35,10 @@ std::vector<std::string> extensions();
 /// nodes carrying meshes are left out. Every node of the subtree is a joint, leaf bones included.
 /// Samples: on the grid of the file's frame time (FBX frame rate; the median key spacing when the file
 /// has none or its keys are denser) from the first to the last key; keys off that grid are interpolated
-/// (linear, slerp) with a warning. Units and axes: FBX UnitScaleFactor and UpAxis/UpAxisSign.
-/// Throws LoadError "FILE: message" (Assimp's own message for files it cannot parse).
+/// (linear, slerp) with a warning. Units and axes: FBX UnitScaleFactor and UpAxis/UpAxisSign when the file
+/// writes them (Assimp would report FBX's defaults), else unit 0 and options.up.
+/// Throws LoadError "FILE: message" (Assimp's own message for files it cannot parse; connections that
+/// form a cycle are refused before Assimp sees them).
 Result load(const std::string& file, const std::string& bytes, const LoadOptions& options);
 
 }  // namespace mobb::io::assimp

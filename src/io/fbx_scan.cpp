@@ -1,4 +1,4 @@
-#include "fbx_connections.h"
+#include "fbx_scan.h"
 
 #include <algorithm>
 #include <cstring>
@@ -176,6 +176,15 @@ std::optional<std::int64_t> connection_cycle(const std::string& bytes) {
     else
         ascii_scan(bytes, edges);
     return find_cycle(edges);
+}
+
+bool names_property(const std::string& bytes, const std::string& name) {
+    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) != 0)
+        return bytes.find('"' + name + '"') != std::string::npos;
+    std::string record = "S";
+    const auto length = std::uint32_t(name.size());
+    record.append(reinterpret_cast<const char*>(&length), 4);  // little-endian, like the hosts
+    return bytes.find(record + name) != std::string::npos;
 }
 
 }  // namespace mobb::io::fbx

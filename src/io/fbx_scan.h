@@ -1,0 +1,20 @@
+// What Assimp does not tell about an FBX file, read from its bytes: connections that form a cycle (Assimp
+// 5.2 follows model connections recursively and never returns on a cycle: a stack overflow), and whether a
+// global setting is written at all (Assimp fills in defaults). Internal to mobb_io.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace mobb::io::fbx {
+
+/// An object id on a cycle of the file's connections ("C" records, src -> dst, binary or ASCII FBX),
+/// or nothing. Counts every "C" record with a type string and two integer ids, wherever it stands (more
+/// than Assimp reads, never less); other bytes are left to Assimp's own checks.
+std::optional<std::int64_t> connection_cycle(const std::string& bytes);
+
+/// True when the file names the property `name` (e.g. "UnitScaleFactor") as a whole string: quoted in
+/// ASCII FBX, a length-prefixed string property in binary FBX.
+bool names_property(const std::string& bytes, const std::string& name);
+
+}  // namespace mobb::io::fbx
