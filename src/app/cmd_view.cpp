@@ -51,6 +51,28 @@ void apply_step(State& s, int step) {
     if (step >= 0) s.scene.step = step;
 }
 
+/// Whether the command line names clip files (any format load_clip reads) rather than one scene (.json).
+bool names_clip_files(const std::vector<std::string>& inputs) {
+    return !inputs.empty() &&
+           !(inputs.size() == 1 && std::filesystem::path(inputs[0]).extension() == ".json");
+}
+
+/// The scene of clip files named on the command line, each loaded with `load`.
+Scene scene_of_inputs(const std::vector<std::string>& files, const io::LoadOptionText& load) {
+    std::vector<std::string> abs;
+    for (const std::string& f : files) abs.push_back(std::filesystem::absolute(f).string());
+    Scene scene = viewer::scene_of_files(abs);
+    for (auto& c : scene.clips) c.load = load;
+    return scene;
+}
+
+/// Clip files' state as the viewer opens it: paths centred, the query's first step, everything framed.
+void arrange_clip_files(State& s, float asp) {
+    centre_clips(s);
+    if (s.queried) s.scene.step = 0;
+    viewer::frame_all(s, asp);
+}
+
 /// `render --colour-disks` / `--colour-boxes` (empty: the scene's); a box colouring shows the boxes.
 void apply_colouring(State& s, const std::string& disks, const std::string& boxes) {
     try {
@@ -122,14 +144,14 @@ viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
-        std::string scene, out, crowd, disk_colour, box_colour;
-        std::vector<std::string> picks, panels;
+        std::string out, crowd, disk_colour, box_colour;
+        std::vector<std::string> inputs, picks, panels;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1, window = -1;
         bool ui = false, help = false, bench = false, top = false;
     };
     auto a = std::make_shared<Args>();
-    cmd->add_option("SCENE", a->scene, "Scene file (JSON)");
+    cmd->add_option("SCENE_OR_FILES", a->inputs, "A scene (.json) or clip files: BVH, glTF, FBX, ...");
     cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
     cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")
         ->check(CLI::NonNegativeNumber);
@@ -168,8 +190,8 @@ void add_render(CLI::App& app, int& exit_code) {
             exit_code = kUsage;
             return;
         }
-        if (a->scene.empty() == a->crowd.empty()) {
-            std::cerr << "render: expected a SCENE or --crowd RECORD.json (one of them)\n";
+        if (a->inputs.empty() == a->crowd.empty()) {
+            std::cerr << "render: expected a SCENE, clip files or --crowd RECORD.json (one of them)\n";
             exit_code = kUsage;
             return;
         }
@@ -210,10 +232,12 @@ void add_render(CLI::App& app, int& exit_code) {
                 out << a->out << "\n";
                 return;
             }
-            Scene scene = viewer::load_scene(a->scene);
+            const bool files = names_clip_files(a->inputs);
+            Scene scene = files ? scene_of_inputs(a->inputs, {}) : viewer::load_scene(a->inputs[0]);
             const int w = a->width ? a->width : a->bench ? 1280 : scene.width;
             const int h = a->height ? a->height : a->bench ? 720 : scene.height;
             State s = viewer::load_state(scene, aspect(w, h));
+            if (files) arrange_clip_files(s, aspect(w, h));
             apply_step(s, a->step);
             apply_colouring(s, a->disk_colour, a->box_colour);
             if (a->window >= 0) s.scene.window = a->window;
@@ -297,17 +321,13 @@ void add_view(CLI::App& app, int& exit_code) {
                 show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), out);
                 return;
             }
-            const bool files = !a->inputs.empty() && !(a->inputs.size() == 1 && a->inputs[0].size() > 5 &&
-                                                       a->inputs[0].substr(a->inputs[0].size() - 5) == ".json");
+            const bool files = names_clip_files(a->inputs);
             std::string scene_file, key;
             Scene scene;
             if (files) {
-                std::vector<std::string> abs;
-                for (const std::string& f : a->inputs) abs.push_back(std::filesystem::absolute(f).string());
+                scene = scene_of_inputs(a->inputs, a->load);
                 key = "files";
-                for (const std::string& f : abs) key += " " + f;
-                scene = viewer::scene_of_files(abs);
-                for (auto& c : scene.clips) c.load = a->load;
+                for (const auto& c : scene.clips) key += " " + c.file;
             } else {
                 scene_file = a->inputs.empty() ? default_scene() : a->inputs[0];
                 scene = viewer::load_scene(scene_file);
@@ -315,11 +335,7 @@ void add_view(CLI::App& app, int& exit_code) {
             }
             if (cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit")) scene.tree = a->tree.options();
             State s = viewer::load_state(scene, aspect(a->width, a->height));
-            if (files) {
-                centre_clips(s);
-                if (s.queried) s.scene.step = 0;
-                viewer::frame_all(s, aspect(a->width, a->height));
-            }
+            if (files) arrange_clip_files(s, aspect(a->width, a->height));
             show(s, *a, scene_file.empty() ? "the clips" : scene_file, key, out);
         });
     });

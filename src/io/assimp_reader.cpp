@@ -377,6 +377,29 @@ bool reads(const std::string& extension) {
     return importer.IsExtensionSupported(ext);
 }
 
+std::vector<std::string> extensions() {
+    std::string list;  // "*.3d;*.3ds;...;*.mesh.xml;..."
+    const Assimp::Importer importer;
+    importer.GetExtensionList(list);
+    std::vector<std::string> out;
+    std::size_t begin = 0;
+    while (begin < list.size()) {
+        std::size_t end = list.find(';', begin);
+        if (end == std::string::npos) end = list.size();
+        const std::string entry = list.substr(begin, end - begin);
+        begin = end + 1;
+        const std::size_t dot = entry.rfind('.');
+        if (dot == std::string::npos || dot + 1 == entry.size()) continue;
+        std::string ext = entry.substr(dot);
+        for (char& c : ext)
+            if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+        out.push_back(ext);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 Result load(const std::string& file, const std::string& bytes, const LoadOptions& options) {
     return Loader(file, options).run(bytes);
 }

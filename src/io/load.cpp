@@ -238,13 +238,26 @@ std::vector<std::string> root_jumps(const Clip& clip, double threshold) {
     return out;
 }
 
+std::vector<std::string> clip_extensions() {
+    std::vector<std::string> out = assimp::extensions();
+    out.insert(out.end(), {".bvh", ".glb", ".gltf"});
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+bool is_clip_file(const std::string& file) {
+    const std::string ext = lower_extension(file);
+    return ext == ".bvh" || ext == ".glb" || ext == ".gltf" || assimp::reads(ext);
+}
+
 Clip load_clip(const std::string& file, const LoadOptions& options) {
     Clip clip;
     clip.file = file;
     clip.up = options.up;
     const std::string ext = lower_extension(file);
     const bool gltf = ext == ".glb" || ext == ".gltf";
-    if (ext != ".bvh" && !gltf && !assimp::reads(ext))
+    if (!is_clip_file(file))
         fail(file, "unknown file type '" + detail::quote(ext) +
                        "' (expected .bvh, .glb, .gltf, .fbx, .dae or another format Assimp reads)");
     if (options.scale) check_positive(file, "--scale", *options.scale);

@@ -1,34 +1,24 @@
-// Opening clip files from inside the window: the Open panel lists the data folder's BVH and glTF files,
-// and files dropped on the window (GLFW's drop callback fills ui.dropped) open the same way. Each opened
-// file becomes a scene clip, offered at once by the Query panel's A and B lists.
+// Opening clip files from inside the window: the Open panel lists the data folder's clip files (every
+// extension load_clip reads: BVH, glTF, FBX, Collada, ...), and files dropped on the window (GLFW's drop
+// callback fills ui.dropped) open the same way. Each opened file becomes a scene clip, offered at once by
+// the Query panel's A and B lists.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include <imgui.h>
 
+#include "mobb/io/load.h"
 #include "panels.h"
 
 namespace mobb::viewer {
 
 namespace {
 
-bool clip_file(const std::filesystem::path& p) {
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".bvh" || ext == ".glb" || ext == ".gltf";
-}
-
-/// The data folder's clip files, relative to it, sorted.
-std::vector<std::string> list_data_files(const std::string& dir) {
-    std::vector<std::string> out;
-    std::error_code ec;
-    if (dir.empty()) return out;
-    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
-         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
-        if (it->is_regular_file(ec) && clip_file(it->path()))
-            out.push_back(it->path().lexically_relative(dir).generic_string());
-    std::sort(out.begin(), out.end());
+/// "reads .3d .3ds ... .zgl": the formats, for the panel's tooltip.
+std::string extensions_text() {
+    std::string out = "reads";
+    for (const std::string& ext : io::clip_extensions()) out += " " + ext;
     return out;
 }
 
@@ -44,6 +34,18 @@ void open_file(State& s, Ui& ui, const std::string& file) {
 
 }  // namespace
 
+std::vector<std::string> list_clip_files(const std::string& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    if (dir.empty()) return out;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec) && io::is_clip_file(it->path().string()))
+            out.push_back(it->path().lexically_relative(dir).generic_string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 void open_dropped(State& s, Ui& ui) {
     for (const std::string& f : ui.dropped) open_file(s, ui, f);
     ui.dropped.clear();
@@ -56,7 +58,7 @@ void open_panel(State& s, Ui& ui) {
     if (!ImGui::Begin("Open", &ui.panels.open)) return ImGui::End();
     const std::string dir = io::data_dir();
     if (!ui.data_listed) {
-        ui.data_files = list_data_files(dir);
+        ui.data_files = list_clip_files(dir);
         ui.data_listed = true;
     }
     if (dir.empty())
@@ -65,6 +67,7 @@ void open_panel(State& s, Ui& ui) {
         ImGui::TextDisabled("%zu clip files in the data folder", ui.data_files.size());
     if (ImGui::IsItemHovered() && !dir.empty()) ImGui::SetTooltip("%s", dir.c_str());
     ImGui::TextDisabled("click to open, or drop files here");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", extensions_text().c_str());
     char filter[128];
     std::snprintf(filter, sizeof filter, "%s", ui.open_filter.c_str());
     if (ImGui::InputTextWithHint("##filter", "filter", filter, sizeof filter)) ui.open_filter = filter;

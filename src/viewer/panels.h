@@ -89,6 +89,9 @@ void inspector_panel(State& state, Ui& ui);
 void open_panel(State& state, Ui& ui);
 /// Opens the files dropped on the window; what happened goes to ui.open_status.
 void open_dropped(State& state, Ui& ui);
+/// The clip files under `dir` (every extension load_clip reads, io::is_clip_file), relative to it with
+/// '/' separators, sorted; empty when `dir` is empty or unreadable. The Open panel's listing.
+std::vector<std::string> list_clip_files(const std::string& dir);
 
 /// Moves to trace step k (clamped) and, when following, puts the time cursor on it.
 void go_to_step(State& state, Ui& ui, int k);

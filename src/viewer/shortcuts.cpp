@@ -37,7 +37,7 @@ const std::vector<Gesture>& gestures() {
         {"wheel", "zoom"},
         {"click", "pick a disk (Inspector; two picks: ruler), select its trace events"},
         {"click a box", "(away from disks) select the trace events on its node"},
-        {"drop files", "open BVH / GLB files as clips"},
+        {"drop files", "open clip files (BVH, glTF, FBX, Collada, ...)"},
         {"Ctrl+drag", "move a clip on its ground plane (the query reruns)"},
     };
     return table;

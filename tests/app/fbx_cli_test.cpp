@@ -115,6 +115,27 @@ TEST(FbxCli, ViewShowsAnFbxFile) {
     EXPECT_GT(std::filesystem::file_size(png), 1000u);
 }
 
+// `mobb render` takes clip files as `mobb view` does: FBX exports draw headless, a bad one is named.
+TEST(FbxCli, RenderDrawsFbxFiles) {
+    if (!MOBB_HAS_VIEWER) GTEST_SKIP() << "built without the viewer";
+    MOBB_REQUIRE_FBX(dir);
+    const std::string png = mobb::test::temp_file("render_fbx.png");
+    std::filesystem::remove(png);
+    const Result r = mobb("render " + dir + "/002_01.fbx " + dir + "/007_01.fbx --ui --width 320 --height 240 --out " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out, png + "\n");
+    EXPECT_GT(std::filesystem::file_size(png), 1000u);
+
+    const std::string bad = write_temp("render_bad.fbx", "Kaydara FBX Binary  \0\x1a\0");
+    const std::string bad_png = mobb::test::temp_file("render_bad.png");
+    std::filesystem::remove(bad_png);
+    const Result b = mobb("render " + dir + "/002_01.fbx " + bad + " --out " + bad_png);
+    EXPECT_EQ(b.code, 1);
+    EXPECT_EQ(count_lines(b.err), 1) << b.err;
+    EXPECT_NE(b.err.find(bad + ": "), std::string::npos) << b.err;
+    EXPECT_FALSE(std::filesystem::exists(bad_png));
+}
+
 void expect_bad_input(const std::string& file, const std::string& what) {
     for (const char* sub : {"info", "path", "tree"}) {
         const Result r = mobb(std::string(sub) + " " + file);

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Run inside xvfb-run: opens `mobb view SCENE` in a real window, holds KEY (an xdotool key name; none
-# when empty) for 0.3 s once the window is up, and saves a screenshot at frame FRAMES.
-# Usage: view_key.sh MOBB SCENE OUT FRAMES [KEY]
-# (Keys are held rather than tapped: imgui 1.86 misses a press and release that arrive within one frame.)
+# when empty) for 0.3 s once the window is up, then quits with Q; the screenshot is the last frame.
+# Usage: view_key.sh MOBB SCENE OUT FRAMES [KEY]   (FRAMES: a cap, should Q never arrive)
+# (Keys are held rather than tapped: imgui 1.86 misses a press and release that arrive within one frame.
+# Quitting by key rather than after a frame count: llvmpipe draws 1280x720 at a few frames a second
+# under load and far faster on an idle machine, so no count fits both.)
 set -euo pipefail
 # Focus can fail with BadMatch while a loaded machine is still mapping the window: try again.
 focus() {
@@ -17,11 +19,15 @@ mobb=$1 scene=$2 out=$3 frames=$4 key=${5:-}
 pid=$!
 window=$(timeout 60 xdotool search --sync --onlyvisible --name "mobb view" | head -1 || true)
 sleep 0.5
+focus "$window"
+xdotool mousemove --window "$window" 640 700
 if [ -n "$key" ]; then
-  focus "$window"
-  xdotool mousemove --window "$window" 640 700
   xdotool keydown "$key"
   sleep 0.3
   xdotool keyup "$key"
 fi
+sleep 0.8  # a frame or more after the key
+xdotool keydown q
+sleep 0.15
+xdotool keyup q
 wait "$pid"

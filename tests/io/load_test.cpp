@@ -1,7 +1,10 @@
 // load_clip on small generated BVH files: units, --frames, --fps, --up, --scale, warnings, file errors.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -199,6 +202,23 @@ TEST_F(Load, FileErrorsNameTheFile) {
     const std::string empty = write("empty.bvh", "");
     EXPECT_EQ(test::load_error([&] { load_clip(empty); }).rfind(empty + ":1: expected HIERARCHY", 0), 0u);
     EXPECT_EQ(load_clip(write("UPPER.BVH", walk_bvh(3, 0, 170, 40))).path.size(), 3u);
+}
+
+/// The list the viewer's Open panel filters by: what load_clip takes, and nothing it refuses.
+TEST(ClipExtensions, AreWhatLoadClipReads) {
+    const std::vector<std::string> exts = clip_extensions();
+    for (const char* ext : {".bvh", ".glb", ".gltf", ".fbx", ".dae"})
+        EXPECT_TRUE(std::binary_search(exts.begin(), exts.end(), std::string(ext))) << ext;
+    EXPECT_TRUE(std::is_sorted(exts.begin(), exts.end()));
+    EXPECT_EQ(std::adjacent_find(exts.begin(), exts.end()), exts.end());
+    for (const std::string& ext : exts) {
+        EXPECT_TRUE(is_clip_file("dir/clip" + ext)) << ext;
+        std::string upper = ext;
+        for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+        EXPECT_TRUE(is_clip_file("CLIP" + upper)) << upper;
+    }
+    for (const char* file : {"clip.txt", "clip.csv", "scene.json", "README.md", "clip", "bvh", "dir.bvh/clip"})
+        EXPECT_FALSE(is_clip_file(file)) << file;
 }
 
 TEST(DataDir, PrefersAnExistingMobbData) {

@@ -1,6 +1,7 @@
 // The viewer's new panels' logic without a window: the recursion rebuilt from a trace, picks and the
 // ruler, opening files, the settings file's camera lines, and the layout check itself.
 #include <algorithm>
+#include <filesystem>
 
 #include <glm/matrix.hpp>
 
@@ -184,6 +185,35 @@ TEST(OpenFiles, DroppedFilesOpenAndABadOneSaysWhy) {
     EXPECT_EQ(s.clips.size(), before + 1);
     EXPECT_NE(ui.open_status.find("/no/such/file.bvh"), std::string::npos) << ui.open_status;
     EXPECT_TRUE(ui.panels.open);
+}
+
+/// The Open panel lists every format load_clip reads, not only BVH and glTF: the data folder's FBX
+/// exports are listed (and its CSV paths and README are not), and one opens, clicked or dropped.
+TEST(OpenFiles, FbxIsListedAndOpens) {
+    MOBB_NEEDS_MOCAP();
+    const std::string dir = io::data_dir();
+    if (!std::filesystem::is_regular_file(dir + "/fbx/005_01.fbx")) GTEST_SKIP() << "no fbx/005_01.fbx in " << dir;
+    const std::vector<std::string> files = viewer::list_clip_files(dir);
+    EXPECT_TRUE(std::is_sorted(files.begin(), files.end()));
+    for (const char* f : {"fbx/005_01.fbx", "cmu/005_01.bvh"})
+        EXPECT_TRUE(std::binary_search(files.begin(), files.end(), std::string(f))) << f;
+    for (const std::string& f : files) EXPECT_TRUE(io::is_clip_file(f)) << f;
+    EXPECT_EQ(std::count_if(files.begin(), files.end(), [](const std::string& f) { return std::filesystem::path(f).extension() == ".csv"; }), 0);
+    EXPECT_EQ(std::count(files.begin(), files.end(), "README.md"), 0);
+
+    viewer::State s = load("walks.json");
+    const std::size_t before = s.clips.size();
+    viewer::Ui ui;
+    ui.dropped = {dir + "/fbx/005_01.fbx"};
+    viewer::open_dropped(s, ui);
+    ASSERT_EQ(s.clips.size(), before + 1) << ui.open_status;
+    EXPECT_EQ(s.scene.clips.back().file, "fbx/005_01.fbx");
+    const viewer::LoadedClip& c = s.clips[s.scene.clips.size() - 1];
+    EXPECT_EQ(c.name, "005_01.fbx");
+    ASSERT_TRUE(c.clip);
+    EXPECT_GT(c.clip->path.size(), 100u);  // 5 s of walking
+    EXPECT_TRUE(s.queried);
+    EXPECT_NE(ui.open_status.find("opened 005_01.fbx"), std::string::npos) << ui.open_status;
 }
 
 /// A crowd's clips are its agents: opening a file there is refused by name and changes nothing.

@@ -24,6 +24,10 @@ struct Result {
 /// True when Assimp has an importer for `extension` (with its dot, any case: ".fbx", ".DAE").
 bool reads(const std::string& extension);
 
+/// Every extension Assimp has an importer for, lower case with the dot, sorted, each once (".dae",
+/// ".fbx", ...). Assimp's two-part ones (".mesh.xml") appear by their last part, as reads() sees them.
+std::vector<std::string> extensions();
+
 /// Reads `bytes` (the whole file; `file` names it in errors, and its extension tells Assimp the format).
 /// Animation: the one named options.animation, else the first. Skeleton: the subtree of the first node,
 /// depth first, that is a mesh bone or is moved by that animation (keys that change) and is not an FBX

@@ -92,6 +92,13 @@ std::vector<std::string> root_jumps(const Clip& clip, double threshold = 0.5);
 /// uneven key times (Assimp formats).
 Clip load_clip(const std::string& file, const LoadOptions& options = {});
 
+/// The extensions load_clip reads, lower case with the dot, sorted, each once: .bvh, .glb, .gltf and
+/// every one Assimp reads (.fbx, .dae, ...; see assimp::extensions). For file lists and pickers.
+std::vector<std::string> clip_extensions();
+
+/// True when load_clip reads `file` by its extension (any case); the content is not looked at.
+bool is_clip_file(const std::string& file);
+
 /// The data folder: $MOBB_DATA if set and an existing folder, else ../shared/mocap relative to the
 /// working directory, else the one next to the source tree (compiled in). Empty if none exists.
 /// Returned as an absolute, normalised path.
