@@ -5,19 +5,13 @@
 # Actions: key:NAME (an xdotool key name, held 0.15 s: imgui 1.86 misses a press and release within one
 # frame, and 0.15 s is under its repeat delay), click:X:Y (window pixels), type:TEXT, wait:SECONDS.
 set -euo pipefail
-# Focus can fail with BadMatch while a loaded machine is still mapping the window: try again.
-focus() {
-  for _ in 1 2 3 4 5 6 7 8 9 10; do
-    xdotool windowfocus "$1" 2>/dev/null && return 0
-    sleep 0.5
-  done
-  xdotool windowfocus "$1"
-}
+# shellcheck source=x11_window.sh
+source "$(dirname "$0")/x11_window.sh"
 mobb=$1 scene=$2 out=$3 state=$4
 shift 4
 "$mobb" view "$scene" --frames 100000 --screenshot "$out" --save-state "$state" --width 1280 --height 720 &
 pid=$!
-window=$(timeout 60 xdotool search --sync --onlyvisible --name "mobb view" | head -1 || true)
+window=$(find_window)
 sleep 1
 focus "$window"
 xdotool mousemove --window "$window" 640 700

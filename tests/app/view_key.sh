@@ -6,18 +6,12 @@
 # Quitting by key rather than after a frame count: llvmpipe draws 1280x720 at a few frames a second
 # under load and far faster on an idle machine, so no count fits both.)
 set -euo pipefail
-# Focus can fail with BadMatch while a loaded machine is still mapping the window: try again.
-focus() {
-  for _ in 1 2 3 4 5 6 7 8 9 10; do
-    xdotool windowfocus "$1" 2>/dev/null && return 0
-    sleep 0.5
-  done
-  xdotool windowfocus "$1"
-}
+# shellcheck source=x11_window.sh
+source "$(dirname "$0")/x11_window.sh"
 mobb=$1 scene=$2 out=$3 frames=$4 key=${5:-}
 "$mobb" view "$scene" --frames "$frames" --screenshot "$out" --width 1280 --height 720 &
 pid=$!
-window=$(timeout 60 xdotool search --sync --onlyvisible --name "mobb view" | head -1 || true)
+window=$(find_window)
 sleep 0.5
 focus "$window"
 xdotool mousemove --window "$window" 640 700
