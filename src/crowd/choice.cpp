@@ -212,13 +212,17 @@ PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const 
     return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box, m};
 }
 
-void Choice::record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
-    Candidate& cand = point_.candidates[std::size_t(k)];
-    ++cand.queries;
+void Choice::count_query(const QueryStats& st) {
     ++point_.queries;
     point_.tests2d += st.tests2d;
     point_.tests3d += st.tests3d;
     point_.samples += st.samples;
+}
+
+void Choice::record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
+    Candidate& cand = point_.candidates[std::size_t(k)];
+    ++cand.queries;
+    count_query(st);
     if (q.hit) ++cand.hits;
     if (!s.options.record_queries) return;
     q.mine = mine.index;
@@ -226,8 +230,9 @@ void Choice::record_query(const CrowdState& s, int k, const Piece& mine, Candida
 }
 
 // The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
-// solid index; tested first: they stop most plans that fail near a wall, without an agent query.
-bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
+// solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
+// ever yields.
+bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits) {
     const Hold& h = mine.hold;
     const SpaceTimeBox box = mine.kind == Piece::Held
                                  ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
@@ -240,16 +245,28 @@ bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, bool 
         if (!hit) continue;
         point_.candidates[std::size_t(k)].outside = true;
         free = false;
-        if (stop_at_hit) return false;
+        if (hits != Hits::Count) return false;
     }
     return free;
 }
 
+// Whether another agent's piece may give way to an agent with the right of way: a reservation (escape
+// clip or held ground, not the clip it plays nor where it started) of an agent that plays a clip moving
+// beyond this frame (not at a choice point now, not standing, not at its goal).
+bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
+    if (other.index == 0 || other.commit < 0) return false;
+    const Agent& owner = s.agents[std::size_t(other.agent)];
+    if (owner.arrived || owner.clips.empty()) return false;
+    const PlacedClip& playing = owner.clips.back();
+    const auto end = playing.start + std::int64_t(s.graph.clips[std::size_t(playing.clip)].path.size());
+    return end > frame_ && !s.escapes.in_place[std::size_t(playing.clip)];
+}
+
 // The queries of one piece of candidate k's plan: the solids, then every other agent's piece live in
 // the broad phase.
-bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit) {
-    bool free = free_of_solids(s, k, mine, stop_at_hit);
-    if (!free && stop_at_hit) return false;
+bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits) {
+    bool free = free_of_solids(s, k, mine, hits);
+    if (!free && hits != Hits::Count) return false;
     const SpaceTimeBox box = mine.kind == Piece::Held ? hold_box(mine.hold) : mine.clip.box;
     queried_boxes_.push_back(box);
     s.broad.query(box, agent_, near_);
@@ -272,9 +289,16 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, bool 
         if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
             log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
         if (!hit) continue;
+        if (hits == Hits::Yield && may_yield(s, other)) {
+            if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) continue;
+            if (yielding_.size() < kMaxYielding) {
+                yielding_.push_back(other.agent);
+                continue;
+            }
+        }
         last_hit_ = id;
         free = false;
-        if (stop_at_hit) return false;
+        if (hits != Hits::Count) return false;
     }
     return free;
 }
@@ -330,7 +354,7 @@ bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const 
                         std::size_t& refused) {
     refused = 0;
     return build_plan(s, c, route, plan, [&](const Piece& piece) {
-        if (free_of_others(s, k, piece, true)) return true;
+        if (free_of_others(s, k, piece, Hits::Stop)) return true;
         if (piece.kind == Piece::Clip) refused = std::size_t(piece.index);
         return false;
     });
@@ -408,7 +432,7 @@ void Choice::fall_back(const CrowdState& s) {
         point_.candidates[std::size_t(k)] = {c.clip, false, 0, 0, {}};
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, false);
+        free_of_others(s, k, mine, Hits::Count);
         const Candidate& cand = point_.candidates[std::size_t(k)];
         const std::pair<int, int> key{cand.outside ? 1 : 0, cand.hits};
         if (key < best_key) best = k, best_key = key;
@@ -425,7 +449,7 @@ void Choice::evaluate_random(const CrowdState& s) {
         point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, false);
+        free_of_others(s, k, mine, Hits::Count);
         point_.candidates.back().outside = c.outside;  // the random mode's meaning: leaves the world
     }
     take(random_pick_, Outcome::Candidate);
@@ -441,6 +465,7 @@ void Choice::evaluate(const CrowdState& s) {
     root_rejected_ = 0;
     last_hit_ = -1;
     log_.clear();
+    reroutes_.clear();
     outcome_ = Outcome::Candidate;
     order(s);
     point_.candidates.reserve(order_.size());
@@ -451,12 +476,19 @@ void Choice::evaluate(const CrowdState& s) {
         if (a.arrived) outcome_ = Outcome::Arrived;
         return;
     }
+    // With the right of way, the moving candidates tried so far get a second chance before the agent
+    // settles for one that does not move.
+    bool right_of_way = has_right_of_way(s);
     for (int k = 0; k < int(order_.size()); ++k) {
         const Placed& c = place(s, k);
+        if (right_of_way && !s.escapes.moves[std::size_t(c.clip)]) {
+            if (take_right_of_way(s, k)) return;
+            right_of_way = false;
+        }
         point_.candidates.push_back({c.clip, false, 0, 0, {}});
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        if (!free_of_others(s, k, mine, true)) continue;
+        if (!free_of_others(s, k, mine, Hits::Stop)) continue;
         const std::vector<int>* refused_route = nullptr;
         std::size_t refused = 0;
         for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
@@ -473,13 +505,148 @@ void Choice::evaluate(const CrowdState& s) {
             return;
         }
     }
+    if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
+}
+
+bool Choice::has_right_of_way(const CrowdState& s) const {
+    const Agent& a = s.agents[std::size_t(agent_)];
+    return !arriving_ && double(frame_ - a.moved_until) * s.graph.dt() >= kRightOfWay;
+}
+
+// The moving candidates before `end` again, in order, now past the reservations that may yield (at most kMaxYielding
+// owners): the first whose plan is free but for them, and whose owners all find another way to stop, is
+// taken.
+bool Choice::take_right_of_way(const CrowdState& s, int end) {
+    for (int k = 0; k < end; ++k) {
+        const Placed& c = placed_[std::size_t(k)];
+        if (!s.escapes.moves[std::size_t(c.clip)]) continue;
+        Piece mine;
+        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+        yielding_.clear();
+        if (!free_of_others(s, k, mine, Hits::Yield)) continue;
+        const std::size_t owners = yielding_.size();
+        for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
+            yielding_.resize(owners);
+            const bool free = build_plan(s, mine.clip, route, plan_,
+                                         [&](const Piece& piece) { return free_of_others(s, k, piece, Hits::Yield); });
+            if (!free || !reroute_yielding(s, mine.clip)) continue;
+            take(k, Outcome::RightOfWay);
+            return true;
+        }
+    }
+    reroutes_.clear();
+    return false;
+}
+
+// Another way to stop for every owner in yielding_, each free of the new plan (clip c and plan_), of the
+// reroutes found before it and of everything else but what the taking would release.
+bool Choice::reroute_yielding(const CrowdState& s, const PlannedClip& c) {
+    excluded_.clear();
+    excluded_.insert(excluded_.end(), s.agents[std::size_t(agent_)].reserved.begin(),
+                     s.agents[std::size_t(agent_)].reserved.end());
+    for (int w : yielding_) {
+        const auto& r = s.agents[std::size_t(w)].reserved;
+        excluded_.insert(excluded_.end(), r.begin(), r.end());
+    }
+    extra_.clear();
+    Piece p;
+    p.agent = agent_;
+    p.clip = c;
+    extra_.push_back(p);
+    for (const PlannedClip& e : plan_.escape) {
+        p.clip = e;
+        extra_.push_back(p);
+    }
+    if (plan_.hold) {
+        p.kind = Piece::Held;
+        p.hold = *plan_.hold;
+        extra_.push_back(p);
+    }
+    reroutes_.clear();
+    for (int w : yielding_)
+        if (!reroute(s, w)) return false;
+    return true;
+}
+
+// The first escape route of `owner` from the clip it plays whose pieces are free (free_for_reroute); it
+// joins reroutes_ and extra_.
+bool Choice::reroute(const CrowdState& s, int owner) {
+    const Agent& a = s.agents[std::size_t(owner)];
+    const PlacedClip& playing = a.clips.back();
+    const PlannedClip c = frame_clip(s, playing.clip, playing.place, Rigid2::of(playing.place), playing.start);
+    Plan plan;
+    for (const std::vector<int>& route : s.escapes.routes[std::size_t(playing.clip)]) {
+        const bool free = build_plan(s, c, route, plan, [&](Piece piece) {
+            piece.agent = owner;
+            return free_for_reroute(s, piece);
+        });
+        if (!free) continue;
+        Reroute r{owner, plan, {}};
+        for (int id : a.reserved) {
+            const Piece& old = s.pieces[std::size_t(id)];
+            r.released.push_back(old.kind == Piece::Held ? hold_box(old.hold) : old.clip.box);
+        }
+        for (const PlannedClip& e : plan.escape) {
+            Piece p;
+            p.agent = owner;
+            p.clip = e;
+            extra_.push_back(p);
+        }
+        Piece h;
+        h.kind = Piece::Held;
+        h.agent = owner;
+        h.hold = *plan.hold;
+        extra_.push_back(h);
+        reroutes_.push_back(std::move(r));
+        return true;
+    }
+    return false;
+}
+
+// A piece of a reroute: free of the solids, of every live piece of the others but the excluded ones, and of
+// the extra pieces. Its queries count for the choice point (not for a candidate: they are another agent's).
+bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
+    const Hold& h = piece.hold;
+    const SpaceTimeBox solid_box = piece.kind == Piece::Held
+                                       ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
+                                       : piece.clip.box;
+    s.solid_grid.query(solid_box, -2, near_);
+    for (int i : near_) {
+        count_query({});
+        if (meets_solid(s, piece, i)) return false;
+    }
+    const SpaceTimeBox box = piece.kind == Piece::Held ? hold_box(piece.hold) : piece.clip.box;
+    queried_boxes_.push_back(box);
+    s.broad.query(box, piece.agent, near_);
+    for (int id : near_) {
+        if (std::find(excluded_.begin(), excluded_.end(), id) != excluded_.end()) continue;
+        QueryStats st;
+        const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
+        count_query(st);
+        if (hit) return false;
+    }
+    for (const Piece& e : extra_) {
+        if (e.agent == piece.agent) continue;
+        QueryStats st;
+        const bool hit = pieces_collide(s, piece, e, &st);
+        count_query(st);
+        if (hit) return false;
+    }
+    return true;
 }
 
 std::vector<SpaceTimeBox> Choice::boxes() const {
     std::vector<SpaceTimeBox> out = {taken_.box};
-    for (const PlannedClip& c : plan_.escape) out.push_back(c.box);
-    if (plan_.hold) out.push_back(hold_box(*plan_.hold));
+    const auto add = [&](const Plan& p) {
+        for (const PlannedClip& c : p.escape) out.push_back(c.box);
+        if (p.hold) out.push_back(hold_box(*p.hold));
+    };
+    add(plan_);
+    for (const Reroute& r : reroutes_) {
+        add(r.plan);
+        out.insert(out.end(), r.released.begin(), r.released.end());
+    }
     return out;
 }
 

@@ -93,6 +93,7 @@ struct Agent {
     std::vector<int> reserved;      ///< broad-phase ids of the plan's pieces
     bool arrived = false;           ///< reached its goal: stays for good
     int waited = 0;                 ///< choice points in a row it followed its escape
+    std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
 };
 
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
@@ -112,10 +113,30 @@ struct CrowdState {
 
 /// How a choice point ended.
 enum class Outcome : std::uint8_t {
-    Candidate,  ///< a candidate with a free plan (or, in random mode, the random pick)
-    Escape,     ///< none was free: the agent's own escape (its next stopping clip, or one more held clip)
-    Arrived,    ///< the agent is at its goal: it stands there (a free idle clip, then its held ground)
-    Fallback,   ///< nothing free and no escape left: the least bad candidate
+    Candidate,   ///< a candidate with a free plan (or, in random mode, the random pick)
+    Escape,      ///< none was free: the agent's own escape (its next stopping clip, or one more held clip)
+    Arrived,     ///< the agent is at its goal: it stands there (a free idle clip, then its held ground)
+    Fallback,    ///< nothing free and no escape left: the least bad candidate
+    RightOfWay,  ///< none was free, but the agent had waited long enough and a moving candidate was free once
+                 ///< the other agents whose reservations it met took other ways to stop (Reroute)
+};
+
+/// The right of way: an agent that has not moved for kRightOfWay seconds may take a moving candidate whose
+/// plan meets other agents' reservations - the escape clips and held ground beyond the clip they play,
+/// never the clip itself - when each of those agents (at most kMaxYielding, none at a choice point in the
+/// frame, none standing) has another escape route from the clip it plays, free of everything else and of
+/// the new plan. The other agent then reserves that route instead: safe as before, it just stops
+/// elsewhere. (Priority to the agent that waited longest, as in Okumura et al.'s priority inheritance
+/// with backtracking, PIBT 2019: the higher-priority agent pushes the lower ones, which plan again.)
+inline constexpr double kRightOfWay = 2.0;  // seconds without a clip that moves
+inline constexpr std::size_t kMaxYielding = 2;
+
+/// Another agent's plan that gives way to a choice point's: what it reserves from now on, and the boxes
+/// of the pieces it releases.
+struct Reroute {
+    int agent = 0;
+    Plan plan;
+    std::vector<SpaceTimeBox> released;
 };
 
 // Aligned to a cache line: neighbouring choice points are evaluated by different threads.
@@ -138,7 +159,10 @@ public:
     /// The clip taken and what is reserved beyond it.
     const PlannedClip& taken() const { return taken_; }
     const Plan& plan() const { return plan_; }
-    /// The boxes of the taken clip and its plan (for the frame's check of later choice points).
+    /// The other agents' plans that gave way (Outcome::RightOfWay).
+    const std::vector<Reroute>& reroutes() const { return reroutes_; }
+    /// The boxes the commit changes beyond the agent's own released pieces: the taken clip, its plan, and
+    /// the new and released boxes of the reroutes (for the frame's check of later choice points).
     std::vector<SpaceTimeBox> boxes() const;
     const Placed& candidate(int k) const { return placed_[std::size_t(k)]; }
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
@@ -150,13 +174,25 @@ public:
     const std::vector<LoggedQuery>& log() const { return log_; }
 
 private:
+    /// What a piece's queries do at a hit: stop; go on and count them all (fallback); or, with the right
+    /// of way, go on past another agent's reservation that may yield (noting its owner) and stop at any
+    /// other hit.
+    enum class Hits { Stop, Count, Yield };
+
     void order(const CrowdState& s);
-    bool free_of_solids(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
+    bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
+    void count_query(const QueryStats& st);
     void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
     const Placed& place(const CrowdState& s, int k);
-    bool free_of_others(const CrowdState& s, int k, const Piece& mine, bool stop_at_hit);
+    bool free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits);
+    bool may_yield(const CrowdState& s, const Piece& other) const;
     bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
+    bool has_right_of_way(const CrowdState& s) const;
+    bool take_right_of_way(const CrowdState& s, int end);
+    bool reroute_yielding(const CrowdState& s, const PlannedClip& c);
+    bool reroute(const CrowdState& s, int owner);
+    bool free_for_reroute(const CrowdState& s, const Piece& piece);
     void evaluate_random(const CrowdState& s);
     bool take_escape(const CrowdState& s);
     bool hold_on(const CrowdState& s);
@@ -180,6 +216,10 @@ private:
     Outcome outcome_ = Outcome::Candidate;
     PlannedClip taken_;
     Plan plan_;
+    std::vector<int> yielding_;  // right of way: owners of the reservations the plan being tried meets
+    std::vector<int> excluded_;  // right of way: broad-phase ids released if it is taken (theirs and its own)
+    std::vector<Piece> extra_;   // right of way: the new plan's pieces and the reroutes found so far
+    std::vector<Reroute> reroutes_;
     ChoicePoint point_;
     std::vector<LoggedQuery> log_;
 };

@@ -88,6 +88,7 @@ private:
     void gather(std::size_t n);
     int add_piece(const Piece& piece, bool pending);
     SpaceTimeBox box_of(const Piece& p) const;
+    void reserve(int agent, int commit, const Plan& plan);
     void commit(Choice& c);
     void record_plan(const Choice& c, ChoicePoint& cp) const;
     void count(const Choice& c, const ChoicePoint& cp);
@@ -176,7 +177,8 @@ void Simulation::place_agents() {
         Placement p = s.start;
         p.t0 = 0;
         const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
-        agents_.push_back({p, std::max<std::int64_t>(0, frame), s.goal, {}, {}, {}, false});
+        const std::int64_t start = std::max<std::int64_t>(0, frame);
+        agents_.push_back({p, start, s.goal, {}, {}, {}, false, 0, start});
     }
 }
 
@@ -284,7 +286,7 @@ void Simulation::log_queries(const Choice& c) {
 }
 
 void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
-    static const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback"};
+    static const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback", "right of way"};
     cp.outcome = kOutcomes[int(c.outcome())];
     cp.escape.clear();
     for (const PlannedClip& e : c.plan().escape) cp.escape.push_back({e.clip, e.frame, e.place});
@@ -293,6 +295,14 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
         const Hold& h = *c.plan().hold;
         cp.hold = {h.x, h.y, h.r};
         cp.hold_frame = h.frame;
+    }
+    cp.reroutes.clear();
+    for (const Reroute& r : c.reroutes()) {
+        ReroutedPlan& out = cp.reroutes.emplace_back();
+        out.agent = r.agent;
+        for (const PlannedClip& e : r.plan.escape) out.escape.push_back({e.clip, e.frame, e.place});
+        out.hold = {r.plan.hold->x, r.plan.hold->y, r.plan.hold->r};
+        out.hold_frame = r.plan.hold->frame;
     }
 }
 
@@ -308,6 +318,7 @@ void Simulation::count(const Choice& c, const ChoicePoint& cp) {
     s.root_rejected += c.root_rejected();
     for (const Candidate& k : cp.candidates) s.hits += std::uint64_t(k.hits);
     if (c.outcome() == Outcome::Escape) ++s.escapes;
+    if (c.outcome() == Outcome::RightOfWay) ++s.right_of_way, s.reroutes += c.reroutes().size();
     if (cp.fallback) {
         ++s.fallbacks;
         for (const Candidate& k : cp.candidates)
@@ -316,6 +327,28 @@ void Simulation::count(const Choice& c, const ChoicePoint& cp) {
                 break;
             }
     }
+}
+
+// Agent `agent`'s plan from now on, by choice point `commit`: what it reserved before is released.
+void Simulation::reserve(int agent, int commit, const Plan& plan) {
+    Agent& a = agents_[std::size_t(agent)];
+    for (int id : a.reserved) released_.push_back(id);
+    a.reserved.clear();
+    Piece p;
+    p.agent = agent;
+    p.commit = commit;
+    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
+        p.index = int(i) + 1;
+        p.clip = plan.escape[i];
+        a.reserved.push_back(add_piece(p, true));
+    }
+    if (plan.hold) {
+        p.kind = Piece::Held;
+        p.index = -1;
+        p.hold = *plan.hold;
+        a.reserved.push_back(add_piece(p, true));
+    }
+    a.plan = plan;
 }
 
 void Simulation::commit(Choice& c) {
@@ -334,24 +367,8 @@ void Simulation::commit(Choice& c) {
     clip.commit = commit;
     clip.clip = t;
     add_piece(clip, true);
-    for (int id : a.reserved) released_.push_back(id);
-    a.reserved.clear();
-    for (std::size_t i = 0; i < c.plan().escape.size(); ++i) {
-        Piece e = clip;
-        e.index = int(i) + 1;
-        e.clip = c.plan().escape[i];
-        a.reserved.push_back(add_piece(e, true));
-    }
-    if (c.plan().hold) {
-        Piece h;
-        h.kind = Piece::Held;
-        h.agent = c.agent();
-        h.commit = commit;
-        h.index = -1;
-        h.hold = *c.plan().hold;
-        a.reserved.push_back(add_piece(h, true));
-    }
-    a.plan = c.plan();
+    reserve(c.agent(), commit, c.plan());
+    for (const Reroute& r : c.reroutes()) reserve(r.agent, commit, r.plan);
     if (c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold) {
         a.arrived = true;
         policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
@@ -360,6 +377,7 @@ void Simulation::commit(Choice& c) {
     const bool stays = reserves(o_) && escapes_.in_place[std::size_t(t.clip)];
     a.waited = c.outcome() == Outcome::Escape || stays ? a.waited + 1 : 0;
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
+    if (escapes_.moves.empty() || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
@@ -474,6 +492,8 @@ std::string summary_json(const CrowdSummary& s) {
     j["time_overlapping_pairs"] = s.time_pairs;
     j["pairs_pruned"] = s.pruned;
     j["escapes"] = s.escapes;
+    j["right_of_way"] = s.right_of_way;
+    j["reroutes"] = s.reroutes;
     j["fallbacks"] = s.fallbacks;
     j["fallbacks_outside_world"] = s.outside;
     j["contacts"] = s.contacts;
@@ -492,6 +512,7 @@ std::string summary_text(const CrowdSummary& s) {
         << "pairs pruned (broad)     " << s.pruned << " of " << s.time_pairs << " overlapping in time\n"
         << "escapes taken            " << s.escapes << " (" << 100.0 * per(s.escapes, s.choice_points)
         << " % of choice points)\n"
+        << "right of way             " << s.right_of_way << " (" << s.reroutes << " plans of others gave way)\n"
         << "fallbacks                " << s.fallbacks << " (" << 100.0 * per(s.fallbacks, s.choice_points) << " %, "
         << s.outside << " leaving the world)\n"
         << "contacts (frame check)   " << s.contacts << " agent-pair frames, " << s.contacts_unexcused

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mobb/crowd/metrics.h"
+
 namespace mobb::crowd {
 
 namespace {
@@ -60,6 +62,8 @@ EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_rout
         t.kind.push_back(kind_of(clip, c));
         t.in_place.push_back(t.kind.back() == ClipKind::InPlace || t.kind.back() == ClipKind::Idle);
         t.footprint.push_back(footprint_of(clip.path));
+        const double duration = double(clip.path.size()) * g.dt();
+        t.moves.push_back(std::hypot(clip.exit_x, clip.exit_y) >= CrowdMetrics::kIdleSpeed * duration);
         if (t.kind.back() == ClipKind::Idle) t.hold_radius = std::max(t.hold_radius, t.hold_of(c));
     }
     for (int c = 0; c < int(g.clips.size()); ++c)

@@ -12,8 +12,11 @@
 namespace mobb::crowd {
 
 struct EscapeTable {
-    std::vector<ClipKind> kind;     ///< per clip
-    std::vector<char> in_place;     ///< per clip: InPlace or Idle
+    std::vector<ClipKind> kind;  ///< per clip
+    std::vector<char> in_place;  ///< per clip: InPlace or Idle
+    /// Per clip: from its start to its exit at CrowdMetrics::kIdleSpeed or faster (an agent playing it is
+    /// not idle). An agent that played none for a while has the right of way (choice.h).
+    std::vector<char> moves;
     std::vector<double> footprint;  ///< per clip: max over samples of |p_i - p_0| + r_i
     /// Per clip: successor chains c1..ck, ck idle (k = 1 when a successor already is), the shortest first,
     /// then one clip longer, at most max_routes of them; none when an idle clip is more than max_steps

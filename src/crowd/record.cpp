@@ -128,15 +128,43 @@ std::vector<Contact> frame_contacts(const Record& record) {
     return out;
 }
 
+namespace {
+
+// The escape clips and held ground choice point `cp` reserved for `agent`: its own or a reroute's.
+struct ReservedPlan {
+    const std::vector<FramedClip>* escape = nullptr;
+    std::optional<HeldGround> hold;
+};
+
+ReservedPlan reserved_plan(const ChoicePoint& cp, int agent) {
+    if (agent == cp.agent) {
+        ReservedPlan p{&cp.escape, std::nullopt};
+        if (cp.holds) p.hold = HeldGround{cp.hold, cp.hold_frame};
+        return p;
+    }
+    for (const ReroutedPlan& r : cp.reroutes)
+        if (r.agent == agent) return {&r.escape, HeldGround{r.hold, r.hold_frame}};
+    throw std::out_of_range("no plan of that agent at that commit");
+}
+
+}  // namespace
+
 std::optional<FramedClip> query_clip(const Record& r, const CandidateQuery& q) {
     if (q.agent < 0 || q.piece < 0) return std::nullopt;
     const ChoicePoint& cp = r.choices.at(std::size_t(q.commit));
-    if (q.piece > 0) return cp.escape.at(std::size_t(q.piece - 1));
+    if (q.piece > 0) return reserved_plan(cp, q.agent).escape->at(std::size_t(q.piece - 1));
     const auto& clips = r.tracks.at(std::size_t(q.agent)).clips;
     const auto it = std::lower_bound(clips.begin(), clips.end(), std::int64_t(q.commit),
                                      [](const PlacedClip& c, std::int64_t x) { return c.commit < x; });
     if (it == clips.end() || it->commit != q.commit) throw std::out_of_range("no clip of that commit");
     return FramedClip{it->clip, it->start, it->place};
+}
+
+std::optional<HeldGround> query_hold(const Record& r, const CandidateQuery& q) {
+    if (q.agent < 0 || q.piece != -1 || q.commit < 0) return std::nullopt;
+    const std::optional<HeldGround> h = reserved_plan(r.choices.at(std::size_t(q.commit)), q.agent).hold;
+    if (!h) throw std::out_of_range("no held ground in that plan");
+    return h;
 }
 
 namespace {
@@ -175,11 +203,23 @@ J track_json(const AgentTrack& t) {
     return out;
 }
 
-J plan_json(const ChoicePoint& c) {
+J escape_json(const std::vector<FramedClip>& clips) {
     J escape = J::array();
-    for (const FramedClip& e : c.escape) escape.push_back({e.clip, e.frame, e.place.x, e.place.y, e.place.theta});
-    J out = {{"escape", escape}};
-    if (c.holds) out["hold"] = {c.hold[0], c.hold[1], c.hold[2], c.hold_frame};
+    for (const FramedClip& e : clips) escape.push_back({e.clip, e.frame, e.place.x, e.place.y, e.place.theta});
+    return escape;
+}
+
+J hold_json(const std::array<double, 3>& h, std::int64_t frame) { return {h[0], h[1], h[2], frame}; }
+
+J plan_json(const ChoicePoint& c) {
+    J out = {{"escape", escape_json(c.escape)}};
+    if (c.holds) out["hold"] = hold_json(c.hold, c.hold_frame);
+    if (c.reroutes.empty()) return out;
+    J reroutes = J::array();
+    for (const ReroutedPlan& r : c.reroutes)
+        reroutes.push_back(
+            {{"agent", r.agent}, {"escape", escape_json(r.escape)}, {"hold", hold_json(r.hold, r.hold_frame)}});
+    out["reroutes"] = reroutes;
     return out;
 }
 
@@ -238,18 +278,37 @@ AgentTrack track_of(const nlohmann::json& t, std::int64_t frames) {
     return track;
 }
 
-void plan_of(const nlohmann::json& c, ChoicePoint& cp) {
+std::vector<FramedClip> escape_of(const nlohmann::json& escape, double dt) {
+    std::vector<FramedClip> out;
+    for (const auto& e : escape) {
+        const auto frame = e.at(1).get<std::int64_t>();
+        out.push_back({e.at(0).get<int>(),
+                       frame,
+                       {e.at(2).get<double>(), e.at(3).get<double>(), e.at(4).get<double>(), double(frame) * dt}});
+    }
+    return out;
+}
+
+HeldGround hold_of(const nlohmann::json& h) {
+    return {{h.at(0).get<double>(), h.at(1).get<double>(), h.at(2).get<double>()}, h.at(3).get<std::int64_t>()};
+}
+
+void plan_of(const nlohmann::json& c, ChoicePoint& cp, const Record& r) {
     if (!c.contains("plan")) return;
     const auto& plan = c.at("plan");
-    for (const auto& e : plan.at("escape"))
-        cp.escape.push_back({e.at(0).get<int>(),
-                             e.at(1).get<std::int64_t>(),
-                             {e.at(2).get<double>(), e.at(3).get<double>(), e.at(4).get<double>(), 0.0}});
+    cp.escape = escape_of(plan.at("escape"), r.dt);
     if (plan.contains("hold")) {
-        const auto& h = plan.at("hold");
+        const HeldGround h = hold_of(plan.at("hold"));
         cp.holds = true;
-        cp.hold = {h.at(0).get<double>(), h.at(1).get<double>(), h.at(2).get<double>()};
-        cp.hold_frame = h.at(3).get<std::int64_t>();
+        cp.hold = h.disk;
+        cp.hold_frame = h.frame;
+    }
+    for (const auto& j : plan.value("reroutes", nlohmann::json::array())) {
+        const HeldGround h = hold_of(j.at("hold"));
+        const int agent = j.at("agent").get<int>();
+        if (agent < 0 || std::size_t(agent) >= r.tracks.size())
+            throw std::runtime_error("choice " + std::to_string(r.choices.size()) + ": a reroute names no agent");
+        cp.reroutes.push_back({agent, escape_of(j.at("escape"), r.dt), h.disk, h.frame});
     }
 }
 
@@ -265,8 +324,7 @@ ChoicePoint choice_of(const nlohmann::json& c, const Record& r) {
     cp.tests3d = c.at("tests3d").get<std::uint64_t>();
     cp.samples = c.at("samples").get<std::uint64_t>();
     cp.pruned = c.at("pruned").get<std::uint64_t>();
-    plan_of(c, cp);
-    for (auto& e : cp.escape) e.place.t0 = double(e.frame) * r.dt;
+    plan_of(c, cp, r);
     for (const auto& k : c.at("candidates")) {
         Candidate cand{k.at("clip").get<int>(),
                        k.at("outside").get<bool>(),

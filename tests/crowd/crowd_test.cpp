@@ -12,6 +12,7 @@
 #include "files.h"
 #include "mobb/core/brute.h"
 #include "mobb/crowd/crowd.h"
+#include "mobb/crowd/metrics.h"
 
 namespace mobb::crowd {
 namespace {
@@ -52,9 +53,9 @@ CrowdRun run(const CrowdOptions& o, const NarrowPhase& narrow = fixture().sweep)
 
 // Every counter of a summary but the times.
 std::vector<std::uint64_t> counters(const CrowdSummary& s) {
-    return {s.choice_points, s.candidates,         s.queries,     s.hits,   s.tests2d,   s.tests3d,
-            s.samples,       s.root_rejected,      s.time_pairs,  s.pruned, s.fallbacks, s.outside,
-            s.contacts,      s.contacts_unexcused, s.reevaluated, s.escapes};
+    return {s.choice_points, s.candidates,         s.queries,     s.hits,    s.tests2d,      s.tests3d,
+            s.samples,       s.root_rejected,      s.time_pairs,  s.pruned,  s.fallbacks,    s.outside,
+            s.contacts,      s.contacts_unexcused, s.reevaluated, s.escapes, s.right_of_way, s.reroutes};
 }
 
 std::string logged_text(const std::vector<LoggedQuery>& log) {
@@ -220,16 +221,17 @@ TEST(Crowd, RecordedQueriesReplayByBruteForce) {
                         << "choice " << n;
                     ++replayed;
                 } else if (q.commit >= 0) {
-                    const ChoicePoint& holder = r.choices[std::size_t(q.commit)];
-                    ASSERT_TRUE(holder.holds);
+                    const std::optional<HeldGround> held_ground = query_hold(r, q);
+                    ASSERT_TRUE(held_ground);
+                    const auto& [disk, from] = *held_ground;
                     bool hit = false;
                     const double cs = std::cos(at->place.theta), sn = std::sin(at->place.theta);
                     const Path& p = path_of(k.clip);
                     for (std::size_t i = 0; i < p.size(); ++i) {
-                        if (cp.frame + std::int64_t(i) + 1 <= holder.hold_frame) continue;
+                        if (cp.frame + std::int64_t(i) + 1 <= from) continue;
                         const Sample& s = p.samples[i];
                         const double x = at->place.x + cs * s.x - sn * s.y, y = at->place.y + sn * s.x + cs * s.y;
-                        hit = hit || std::hypot(x - holder.hold[0], y - holder.hold[1]) < s.r + holder.hold[2] - 1e-9;
+                        hit = hit || std::hypot(x - disk[0], y - disk[1]) < s.r + disk[2] - 1e-9;
                     }
                     if (hit) {
                         EXPECT_TRUE(q.hit) << "choice " << n;
@@ -377,6 +379,89 @@ TEST(Crowd, AgentsKeepClearOfObstacles) {
             }
     EXPECT_GT(near, 0) << "agents come near the obstacles";
     EXPECT_EQ(c.summary.contacts_unexcused, 0u);
+}
+
+// Whether a clip moves as the right of way counts it: its exit at least the idle speed away.
+bool moves(int clip) {
+    const GraphClip& c = fixture().graph.clips[std::size_t(clip)];
+    return std::hypot(c.exit_x, c.exit_y) >= CrowdMetrics::kIdleSpeed * double(c.path.size()) * fixture().graph.dt();
+}
+
+// The first choice point of `agent` after choice point `n`, or nullptr.
+const ChoicePoint* next_choice(const Record& r, std::size_t n, int agent) {
+    for (std::size_t m = n + 1; m < r.choices.size(); ++m)
+        if (r.choices[m].agent == agent) return &r.choices[m];
+    return nullptr;
+}
+
+// Whether a candidate clip of choice point `cp` (placed where the clip taken there starts) meets held
+// ground, by its samples.
+bool meets_ground(const Record& r, const ChoicePoint& cp, int clip, const HeldGround& ground) {
+    const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+    const auto at = std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.start == cp.frame; });
+    const double cs = std::cos(at->place.theta), sn = std::sin(at->place.theta);
+    const Path& p = path_of(clip);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (cp.frame + std::int64_t(i) + 1 <= ground.frame) continue;
+        const Sample& s = p.samples[i];
+        const double x = at->place.x + cs * s.x - sn * s.y, y = at->place.y + sn * s.x + cs * s.y;
+        if (std::hypot(x - ground.disk[0], y - ground.disk[1]) < s.r + ground.disk[2] - 1e-9) return true;
+    }
+    return false;
+}
+
+// An agent that has not moved for 2 s may take a moving clip whose plan meets other agents' reservations
+// once they found other ways to stop: those are reserved instead (later queries meet them, and replay by
+// brute force), and nobody ever touches.
+TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
+    int taken = 0, replayed = 0;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        CrowdOptions o = wander(60, 30, seed);
+        o.world.x1 = 20, o.world.y1 = 25;  // denser than the paper's: 8.3 m^2 per agent
+        const CrowdRun c = run(o);
+        const Record& r = c.record;
+        EXPECT_TRUE(frame_contacts(r).empty()) << "seed " << seed;
+        for (std::size_t n = 0; n < r.choices.size(); ++n) {
+            const ChoicePoint& cp = r.choices[n];
+            for (const Candidate& k : cp.candidates)
+                for (const CandidateQuery& q : k.against) {
+                    if (q.mine != 0 || q.agent < 0 || q.commit < 0) continue;
+                    const ChoicePoint& holder = r.choices[std::size_t(q.commit)];
+                    if (holder.outcome != "right of way" || q.agent == holder.agent) continue;
+                    if (const auto other = query_clip(r, q)) {
+                        const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+                        const auto at = std::find_if(own.begin(), own.end(),
+                                                     [&](const PlacedClip& p) { return p.start == cp.frame; });
+                        EXPECT_EQ(collide_brute(path_of(k.clip), at->place, path_of(other->clip), other->place), q.hit);
+                    } else if (meets_ground(r, cp, k.clip, *query_hold(r, q))) {
+                        EXPECT_TRUE(q.hit);
+                    }
+                    ++replayed;
+                }
+            if (cp.outcome != "right of way") continue;
+            ++taken;
+            EXPECT_TRUE(moves(cp.taken));
+            std::int64_t moved_until = 0;
+            for (const PlacedClip& p : r.tracks[std::size_t(cp.agent)].clips)
+                if (p.commit < std::int64_t(n) && moves(p.clip))
+                    moved_until = p.start + std::int64_t(path_of(p.clip).size());
+            EXPECT_GE(double(cp.frame - moved_until) * r.dt, 2.0 - 1e-9) << "choice " << n;
+            ASSERT_FALSE(cp.reroutes.empty());
+            EXPECT_LE(cp.reroutes.size(), 2u);
+            for (const ReroutedPlan& rr : cp.reroutes) {
+                EXPECT_NE(rr.agent, cp.agent);
+                ASSERT_FALSE(rr.escape.empty());
+                if (const ChoicePoint* next = next_choice(r, n, rr.agent)) {
+                    EXPECT_EQ(next->frame, rr.escape[0].frame) << "the reroute starts where its clip ends";
+                    if (next->outcome == "escape") {
+                        EXPECT_EQ(next->taken, rr.escape[0].clip) << "it stops the new way";
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GE(taken, 5);
+    EXPECT_GE(replayed, 5) << "later queries meet the rerouted plans";
 }
 
 TEST(Crowd, RejectsImpossibleWorlds) {

@@ -61,6 +61,8 @@ struct CrowdSummary {
     std::uint64_t time_pairs = 0;                        ///< (candidate, committed piece) pairs overlapping in time
     std::uint64_t pruned = 0;                            ///< of those, skipped by the broad phase
     std::uint64_t escapes = 0;                           ///< choice points where the agent took its own escape
+    std::uint64_t right_of_way = 0;                      ///< choice points taken by the right of way (choice.h)
+    std::uint64_t reroutes = 0;                          ///< other agents' plans that gave way to them
     std::uint64_t fallbacks = 0, outside = 0;            ///< fallback clips taken; of them, clips leaving the world
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
     std::uint64_t reevaluated = 0;  ///< choice points evaluated again: a commit earlier in their frame was near
@@ -99,7 +101,12 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 /// Avoid and goal: a candidate is taken only when its plan is free - the clip, the clips that would stop
 /// the agent after it and the ground it would then hold (escape.h) - of every other agent's plan, of the
 /// obstacles and of the world's walls; the first such candidate in the policy's order is taken, and when
-/// there is none the agent follows its own escape, which the others planned around. So, outside
+/// there is none the agent follows its own escape, which the others planned around. The right of way:
+/// an agent that has not moved for 2 s (a clip moves when its exit is at least CrowdMetrics::kIdleSpeed
+/// times its duration away) may take a moving candidate whose plan meets only the reservations (escape
+/// clips, held ground) of at most two agents walking a clip now, when each of them finds another escape
+/// route from that clip free of everything else; they reserve those instead (the record's "reroutes";
+/// priority to the agent that waited, after Okumura et al.'s PIBT, 2019). So, outside
 /// fallbacks (no escape left), no two agents ever touch and no disk crosses a wall. Random: a random
 /// successor; every candidate's queries still run; no escapes, no walls (the paper's timing workload).
 ///

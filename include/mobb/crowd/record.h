@@ -16,9 +16,10 @@
 //        "samples": [ [t, x, y, r], ... ]             // F samples: the world disk at frames 0..F-1
 //     }, ... ],
 //     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "outcome": "candidate" | "escape" |
-//                   "arrived" | "fallback", "fallback": bool, "queries": q, "tests2d": n, "tests3d": n,
-//                   "samples": n, "pruned": n,
-//                   "plan": {"escape": [[clip, frame, x, y, theta], ...], "hold": [x, y, r, frame]},
+//                   "arrived" | "fallback" | "right of way", "fallback": bool, "queries": q, "tests2d": n,
+//                   "tests3d": n, "samples": n, "pruned": n,
+//                   "plan": {"escape": [[clip, frame, x, y, theta], ...], "hold": [x, y, r, frame],
+//                            "reroutes": [ {"agent": b, "escape": [...], "hold": [...]}, ... ]},
 //                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h,
 //                                    "against": [ [agent, commit, piece, mine, hit], ... ]}, ... ]}, ... ]
 //   }
@@ -30,7 +31,9 @@
 // the piece of the candidate's own plan that asked ("mine": 0 the candidate clip, 1, 2, ... the escape
 // clips of the route being tried, -1 the ground it would then hold) and the answer (0 or 1); for a wall or an obstacle the agent is -1 and the commit is the solid's index
 // (the obstacles in order, then the four walls when walled). "outside": in random mode the candidate's
-// root leaves the world; otherwise it met a wall or an obstacle.
+// root leaves the world; otherwise it met a wall or an obstacle. "reroutes" (only at a "right of way"
+// choice point) are the plans other agents reserve from then on instead of theirs: their pieces are
+// named by that choice point's index and their own agent.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -79,19 +82,29 @@ struct FramedClip {
     Placement place;
 };
 
+/// Another agent's plan that gave way to a choice point's (the right of way, crowd.h): from then on it
+/// reserves these clips to stop with and this ground instead of what it reserved before.
+struct ReroutedPlan {
+    int agent = 0;
+    std::vector<FramedClip> escape;
+    std::array<double, 3> hold{};  ///< x, y, r (metres)
+    std::int64_t hold_frame = 0;
+};
+
 struct ChoicePoint {
     int agent = 0;
     std::int64_t frame = 0;
     std::vector<Candidate> candidates;  ///< in the order tested
     int taken = 0;                      ///< clip id
-    std::string outcome = "candidate";  ///< "candidate", "escape", "arrived" or "fallback"
+    std::string outcome = "candidate";  ///< "candidate", "escape", "arrived", "fallback" or "right of way"
     bool fallback = false;
     std::uint64_t queries = 0, tests2d = 0, tests3d = 0, samples = 0;
-    std::uint64_t pruned = 0;        ///< time-overlapping committed pieces the broad phase skipped
-    std::vector<FramedClip> escape;  ///< reserved after the clip taken: the clips that would stop the agent,
-    bool holds = false;              ///< then the held ground:
-    std::array<double, 3> hold{};    ///< x, y, r (metres)
-    std::int64_t hold_frame = 0;     ///< from this frame on
+    std::uint64_t pruned = 0;            ///< time-overlapping committed pieces the broad phase skipped
+    std::vector<FramedClip> escape;      ///< reserved after the clip taken: the clips that would stop the agent,
+    bool holds = false;                  ///< then the held ground:
+    std::array<double, 3> hold{};        ///< x, y, r (metres)
+    std::int64_t hold_frame = 0;         ///< from this frame on
+    std::vector<ReroutedPlan> reroutes;  ///< the other agents' plans that gave way ("right of way")
 };
 
 /// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].
@@ -123,8 +136,19 @@ struct Contact {
 std::vector<Contact> frame_contacts(const Record& record);
 
 /// The clip a query was against: piece `piece` of choice point `commit`'s plan (the clip taken, or one of
-/// its escape clips); nothing for held ground and solids. Throws std::out_of_range for a bad query.
+/// its escape clips; for another agent than the choice point's, one of the escape clips of its reroute);
+/// nothing for held ground and solids. Throws std::out_of_range for a bad query.
 std::optional<FramedClip> query_clip(const Record& record, const CandidateQuery& query);
+
+/// Held ground: the disk x, y, r (metres) an agent keeps from global frame `frame` on.
+struct HeldGround {
+    std::array<double, 3> disk{};
+    std::int64_t frame = 0;
+};
+/// The held ground a query was against (piece -1): that of choice point `commit`'s plan, or of its
+/// reroute for another agent; nothing for the ground an agent started on (commit -1), clips and solids.
+/// Throws std::out_of_range for a bad query.
+std::optional<HeldGround> query_hold(const Record& record, const CandidateQuery& query);
 
 /// JSON text of a record (see the layout above); `summary` and `metrics` (JSON objects) are inserted as
 /// given.
