@@ -535,8 +535,9 @@ void crowd_panel(State& s, Ui& ui) {
     for (int k : choices) {
         const crowd::ChoicePoint& c = r.choices[std::size_t(k)];
         char label[96];
+        const std::string outcome = c.outcome == "candidate" ? "" : " (" + c.outcome + ")";
         std::snprintf(label, sizeof label, "%.2f s: clip %d, %zu candidates%s##%d", double(c.frame) * r.dt, c.taken,
-                      c.candidates.size(), c.fallback ? " (fallback)" : "", k);
+                      c.candidates.size(), outcome.c_str(), k);
         if (ImGui::Selectable(label, v.choice == k)) {
             select_choice(s, v.agent, v.choice == k ? -1 : k);
             if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;
@@ -547,6 +548,8 @@ void crowd_panel(State& s, Ui& ui) {
         const crowd::ChoicePoint& c = r.choices[std::size_t(v.choice)];
         ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
                     static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
+        for (const crowd::ReroutedPlan& rr : c.reroutes)
+            ImGui::Text("right of way: agent %d stops another way (%zu clips)", rr.agent, rr.escape.size());
         // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
         std::size_t rows = c.candidates.size();
         for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();
@@ -632,9 +635,8 @@ void apply_style() {
 
 const std::vector<PanelInfo>& panel_list() {
     static const std::vector<PanelInfo> list = {
-        {"Scene", &PanelsOpen::scene},         {"Query", &PanelsOpen::query},
-        {"Trace", &PanelsOpen::trace},         {"Recursion", &PanelsOpen::recursion},
-        {"Tree fit", &PanelsOpen::fit},        {"Inspector", &PanelsOpen::inspector},
+        {"Scene", &PanelsOpen::scene},         {"Query", &PanelsOpen::query},  {"Trace", &PanelsOpen::trace},
+        {"Recursion", &PanelsOpen::recursion}, {"Tree fit", &PanelsOpen::fit}, {"Inspector", &PanelsOpen::inspector},
         {"Crowd", &PanelsOpen::crowd},         {"Open", &PanelsOpen::open},
     };
     return list;
