@@ -3,12 +3,11 @@
 #include "mobb/util/worker_pool.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace mobb::crowd {
 
-BroadPhase::BroadPhase(double cell) : cell_(cell) {
+BroadPhase::BroadPhase(double cell) : cell_(cell), inv_cell_(1 / cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
 
@@ -23,9 +22,6 @@ BroadPhase::BroadPhase(double cell, double x0, double y0, double x1, double y1) 
     ny_ = index_y(y1) + 1;
     flat_.resize(std::size_t(nx_ * ny_));
 }
-
-std::int64_t BroadPhase::index_x(double x) const { return std::int64_t(std::floor((x - x0_) / cell_)); }
-std::int64_t BroadPhase::index_y(double y) const { return std::int64_t(std::floor((y - y0_) / cell_)); }
 
 BroadPhase::Cell& BroadPhase::cell(std::int64_t ix, std::int64_t iy) {
     if (flat(ix, iy)) return flat_[std::size_t(ix * ny_ + iy)];
@@ -57,11 +53,17 @@ bool BroadPhase::enroll(int id, int owner, const SpaceTimeBox& box) {
     return true;
 }
 
-// Expired entries leave a cell when something is next put into it.
+// Expired entries leave a cell when something is next put into it (and one may have expired).
 void BroadPhase::put(Cell& c, const Entry& e) const {
     const std::int64_t expired = expired_;
-    c.erase(std::remove_if(c.begin(), c.end(), [expired](const Entry& x) { return x.box.f1 <= expired; }), c.end());
-    c.push_back(e);
+    if (c.ends <= expired) {
+        auto& v = c.entries;
+        v.erase(std::remove_if(v.begin(), v.end(), [expired](const Entry& x) { return x.box.f1 <= expired; }), v.end());
+        c.ends = std::numeric_limits<std::int64_t>::max();
+        for (const Entry& x : v) c.ends = std::min(c.ends, x.box.f1);
+    }
+    c.entries.push_back(e);
+    c.ends = std::min(c.ends, e.box.f1);
 }
 
 void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
@@ -72,28 +74,24 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
 
 void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) {
     if (items.empty()) return;  // no need to wake the pool
-    std::vector<char> kept(items.size());
-    for (std::size_t k = 0; k < items.size(); ++k) {
-        const Insertion& it = items[k];
-        kept[k] = enroll(it.id, it.owner, it.box);
-        if (!kept[k]) continue;
-        cells(it.box, [&](std::int64_t ix, std::int64_t iy) {  // hashing is not thread-safe: here
-            if (!flat(ix, iy)) put(hashed_[key(ix, iy)], entry(it.box, it.id, it.owner));
-        });
+    placing_.clear();
+    for (const Insertion& it : items) {
+        if (!enroll(it.id, it.owner, it.box)) continue;
+        const Placing p{entry(it.box, it.id, it.owner), index_x(it.box.x1), index_y(it.box.y1)};
+        for (std::int64_t ix = p.e.ix; ix <= p.ix1; ++ix)  // hashing is not thread-safe: here
+            for (std::int64_t iy = p.e.iy; iy <= p.iy1; ++iy)
+                if (!flat(ix, iy)) put(hashed_[key(ix, iy)], p.e);
+        placing_.push_back(p);
     }
     // Bands of columns: a cell belongs to one band, so each cell still receives its items in order.
     const std::int64_t bands = std::min<std::int64_t>(nx_, 4 * pool.size());
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
-        for (std::size_t k = 0; k < items.size(); ++k) {
-            const Insertion& it = items[k];
-            if (!kept[k]) continue;
-            const Entry e = entry(it.box, it.id, it.owner);
-            const std::int64_t ix0 = std::max(lo, index_x(it.box.x0)), ix1 = std::min(hi - 1, index_x(it.box.x1));
-            const std::int64_t iy0 = std::max<std::int64_t>(0, index_y(it.box.y0)),
-                               iy1 = std::min(ny_ - 1, index_y(it.box.y1));
+        for (const Placing& p : placing_) {
+            const std::int64_t ix0 = std::max(lo, p.e.ix), ix1 = std::min(hi - 1, p.ix1);
+            const std::int64_t iy0 = std::max<std::int64_t>(0, p.e.iy), iy1 = std::min(ny_ - 1, p.iy1);
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], e);
+                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], p.e);
         }
     });
 }
@@ -114,7 +112,7 @@ void BroadPhase::remove(int id) {
     if (id < 0 || std::size_t(id) >= items_.size() || !items_[std::size_t(id)].live) return;
     Item& item = items_[std::size_t(id)];
     cells(item.box, [&](std::int64_t ix, std::int64_t iy) {
-        Cell& v = cell(ix, iy);
+        auto& v = cell(ix, iy).entries;
         v.erase(std::remove_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; }), v.end());
     });
     item.live = false;
@@ -123,19 +121,31 @@ void BroadPhase::remove(int id) {
 
 void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {
     out.clear();
-    const std::int64_t qx = index_x(box.x0), qy = index_y(box.y0);
-    cells(box, [&](std::int64_t ix, std::int64_t iy) {
-        const Cell* c = find(ix, iy);
-        if (!c) return;
-        for (const Entry& e : *c) {
-            if (e.owner == owner || e.box.f1 <= expired_ || !e.box.overlaps(box)) continue;
-            // An item spans several cells: report it only from the cell holding the lower corner of
-            // the two boxes' intersection, which both cover (the query's first column, or the item's
-            // when it starts further on; rows alike). No visited marks, so the query is const.
-            if ((ix != qx && e.ix != ix) || (iy != qy && e.iy != iy)) continue;
+    const std::int64_t qx = index_x(box.x0), qy = index_y(box.y0), qx1 = index_x(box.x1), qy1 = index_y(box.y1);
+    const std::int64_t expired = expired_;
+    const auto scan = [&](const Cell& c, std::int64_t ix, std::int64_t iy) {
+        // An item spans several cells: report it only from the cell holding the lower corner of the
+        // two boxes' intersection, which both cover (the query's first column, or the item's when it
+        // starts further on; rows alike). No visited marks, so the query is const. Tested first: it
+        // is the cheapest test, and rules out an item in every cell but one.
+        const bool first_x = ix == qx, first_y = iy == qy;
+        for (const Entry& e : c.entries) {
+            if ((!first_x && e.ix != ix) || (!first_y && e.iy != iy)) continue;
+            if (e.owner == owner || e.box.f1 <= expired || !e.box.overlaps(box)) continue;
             out.push_back(e.id);
         }
-    });
+    };
+    if (flat(qx, qy) && flat(qx1, qy1)) {  // the common case: no hashing, so no duplicates
+        for (std::int64_t ix = qx; ix <= qx1; ++ix) {
+            const Cell* column = &flat_[std::size_t(ix * ny_)];
+            for (std::int64_t iy = qy; iy <= qy1; ++iy) scan(column[iy], ix, iy);
+        }
+        if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
+        return;
+    }
+    for (std::int64_t ix = qx; ix <= qx1; ++ix)
+        for (std::int64_t iy = qy; iy <= qy1; ++iy)
+            if (const Cell* c = find(ix, iy)) scan(*c, ix, iy);
     std::sort(out.begin(), out.end());
     // Two far cells may share a hash key; then an item could be met twice in one array.
     out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -81,12 +81,25 @@ private:
         int id = 0, owner = -1;
         std::int64_t ix = 0, iy = 0;  // the cell of the box's lower corner (index_x(box.x0), index_y(box.y0))
     };
-    using Cell = std::vector<Entry>;
+    struct Cell {
+        std::vector<Entry> entries;
+        std::int64_t ends = std::numeric_limits<std::int64_t>::max();  // no entry ends before (a lower bound)
+    };
+    struct Placing {  // an item of insert_all(): its entry and the last cell it covers
+        Entry e;
+        std::int64_t ix1 = 0, iy1 = 0;
+    };
     Entry entry(const SpaceTimeBox& box, int id, int owner) const {
         return {box, id, owner, index_x(box.x0), index_y(box.y0)};
     }
-    std::int64_t index_x(double x) const;
-    std::int64_t index_y(double y) const;
+    // floor() by hand: the library call costs more than the rest of a cell lookup. Multiplying by the
+    // inverse may put a box one cell over, but consistently (it is monotonic), which is all the grid needs.
+    static std::int64_t floor_index(double v) {
+        const auto i = std::int64_t(v);
+        return i - std::int64_t(double(i) > v);
+    }
+    std::int64_t index_x(double x) const { return floor_index((x - x0_) * inv_cell_); }
+    std::int64_t index_y(double y) const { return floor_index((y - y0_) * inv_cell_); }
     template <class F>
     void cells(const SpaceTimeBox& box, F&& f) const;
     Cell& cell(std::int64_t ix, std::int64_t iy);
@@ -98,7 +111,7 @@ private:
         return (std::uint64_t(ix) << 32) ^ (std::uint64_t(iy) & 0xffffffffull);
     }
 
-    double cell_;
+    double cell_, inv_cell_;
     double x0_ = 0, y0_ = 0;  // origin of the cells
     // Emptied cells keep their (empty) arrays: agents walk back and forth over the same ground, and
     // reusing the arrays saves an allocation per cell per clip.
@@ -106,6 +119,7 @@ private:
     std::vector<Cell> flat_;
     std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;
+    std::vector<Placing> placing_;  // scratch of insert_all()
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
     std::priority_queue<std::pair<std::int64_t, int>, std::vector<std::pair<std::int64_t, int>>, std::greater<>> ends_;
