@@ -1,7 +1,6 @@
 #include "batch_grid.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace mobb::crowd {
@@ -11,21 +10,26 @@ BatchGrid::BatchGrid(double cell, double x0, double y0, double x1, double y1) : 
     if (!(cell > 0)) throw std::invalid_argument("batch grid: cell size must be positive");
     const double width = std::max(0.0, x1 - x0), height = std::max(0.0, y1 - y0);
     cell_ = std::max({cell, width / 512, height / 512});
+    inv_cell_ = 1 / cell_;
     nx_ = int(width / cell_) + 1;
     ny_ = int(height / cell_) + 1;
     cells_.resize(std::size_t(nx_) * std::size_t(ny_));
 }
 
+// Clamped first, so no floor() is needed (a library call): truncation is floor from 0 on. Multiplying
+// by the inverse may put a box one cell over, but add() and any_before() alike.
 int BatchGrid::column(double v, double origin, int n) const {
-    const double c = std::floor((v - origin) / cell_);
+    const double c = (v - origin) * inv_cell_;
     return c < 0 ? 0 : c >= double(n - 1) ? n - 1 : int(c);
 }
 
 void BatchGrid::add(int index, const SpaceTimeBox& box) {
     const int e = int(entries_.size());
     entries_.push_back({index, box});
-    for (int ix = column(box.x0, x0_, nx_); ix <= column(box.x1, x0_, nx_); ++ix)
-        for (int iy = column(box.y0, y0_, ny_); iy <= column(box.y1, y0_, ny_); ++iy) {
+    const int ix0 = column(box.x0, x0_, nx_), ix1 = column(box.x1, x0_, nx_);
+    const int iy0 = column(box.y0, y0_, ny_), iy1 = column(box.y1, y0_, ny_);
+    for (int ix = ix0; ix <= ix1; ++ix)
+        for (int iy = iy0; iy <= iy1; ++iy) {
             const std::size_t c = std::size_t(ix) * std::size_t(ny_) + std::size_t(iy);
             if (cells_[c].empty()) used_.push_back(c);
             cells_[c].push_back(e);
@@ -33,8 +37,10 @@ void BatchGrid::add(int index, const SpaceTimeBox& box) {
 }
 
 bool BatchGrid::any_before(const SpaceTimeBox& box, int below) const {
-    for (int ix = column(box.x0, x0_, nx_); ix <= column(box.x1, x0_, nx_); ++ix)
-        for (int iy = column(box.y0, y0_, ny_); iy <= column(box.y1, y0_, ny_); ++iy)
+    const int ix0 = column(box.x0, x0_, nx_), ix1 = column(box.x1, x0_, nx_);
+    const int iy0 = column(box.y0, y0_, ny_), iy1 = column(box.y1, y0_, ny_);
+    for (int ix = ix0; ix <= ix1; ++ix)
+        for (int iy = iy0; iy <= iy1; ++iy)
             for (int e : cells_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)]) {
                 const Entry& entry = entries_[std::size_t(e)];
                 if (entry.index >= below) break;  // indices were added in increasing order

@@ -31,7 +31,7 @@ private:
     };
     int column(double v, double origin, int n) const;
 
-    double cell_ = 1, x0_ = 0, y0_ = 0;
+    double cell_ = 1, inv_cell_ = 1, x0_ = 0, y0_ = 0;
     int nx_ = 1, ny_ = 1;
     std::vector<std::vector<int>> cells_;  // entries, in order of addition
     std::vector<std::size_t> used_;        // cells holding something
