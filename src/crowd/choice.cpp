@@ -178,7 +178,7 @@ void Choice::order(const CrowdState& s) {
         const SpaceTimeBox around{base_.x - reach, base_.y - reach,
                                   base_.x + reach, base_.y + reach,
                                   frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
-        queried_boxes_.push_back(around);
+        note_query(around);
         s.broad.query(around, agent_, near_);
         for (int id : near_) {
             const Piece& p = s.pieces[std::size_t(id)];
@@ -268,7 +268,7 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
     bool free = free_of_solids(s, k, mine, hits);
     if (!free && hits != Hits::Count) return false;
     const SpaceTimeBox box = mine.kind == Piece::Held ? hold_box(mine.hold) : mine.clip.box;
-    queried_boxes_.push_back(box);
+    note_query(box);
     s.broad.query(box, agent_, near_);
     near_total_ += near_.size();
     // The piece that refused the last piece tested here first: the candidates of one choice point start
@@ -617,7 +617,7 @@ bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
         if (meets_solid(s, piece, i)) return false;
     }
     const SpaceTimeBox box = piece.kind == Piece::Held ? hold_box(piece.hold) : piece.clip.box;
-    queried_boxes_.push_back(box);
+    note_query(box);
     s.broad.query(box, piece.agent, near_);
     for (int id : near_) {
         if (std::find(excluded_.begin(), excluded_.end(), id) != excluded_.end()) continue;
@@ -650,21 +650,25 @@ std::vector<SpaceTimeBox> Choice::boxes() const {
     return out;
 }
 
+void Choice::note_query(const SpaceTimeBox& b) {
+    SpaceTimeBox& all = queried_all_;
+    if (queried_boxes_.empty()) all = b;
+    all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.f0 = std::min(all.f0, b.f0);
+    all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1), all.f1 = std::max(all.f1, b.f1);
+    queried_boxes_.push_back(b);
+}
+
 bool Choice::affected_by(const BatchGrid& chosen, int below) const {
     if (queried_boxes_.empty()) return false;
     // Their union first: most choice points are far from every other of their frame.
-    SpaceTimeBox all = queried_boxes_.front();
-    for (const SpaceTimeBox& b : queried_boxes_) {
-        all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.f0 = std::min(all.f0, b.f0);
-        all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1), all.f1 = std::max(all.f1, b.f1);
-    }
-    if (!chosen.any_before(all, below)) return false;
+    if (!chosen.any_before(queried_all_, below)) return false;
     for (const SpaceTimeBox& b : queried_boxes_)
         if (chosen.any_before(b, below)) return true;
     return false;
 }
 
 bool Choice::affected_by(const SpaceTimeBox& box) const {
+    if (queried_boxes_.empty() || !queried_all_.overlaps(box)) return false;  // most are far
     for (const SpaceTimeBox& b : queried_boxes_)
         if (b.overlaps(box)) return true;
     return false;

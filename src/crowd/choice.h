@@ -180,6 +180,7 @@ private:
     enum class Hits { Stop, Count, Yield };
 
     void order(const CrowdState& s);
+    void note_query(const SpaceTimeBox& box);
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
     void count_query(const QueryStats& st);
     void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
@@ -211,6 +212,7 @@ private:
     bool arriving_ = false;                    // at its goal: stops as soon as it can
     std::vector<int> near_;                    // scratch: broad-phase ids of one query
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
+    SpaceTimeBox queried_all_;                 // their union (bounding box)
     std::uint64_t near_total_ = 0, root_rejected_ = 0;
     int last_hit_ = -1;  // broad-phase id of the other agent's piece that refused the last piece
     Outcome outcome_ = Outcome::Candidate;
