@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <vector>
 
 #include "mobb/crowd/broad_phase.h"
@@ -100,6 +101,59 @@ TEST(BroadPhase, InsertAllMatchesInsertingOneByOne) {
     std::vector<int> out;
     all.query({-10, -10, 40, 40, 0, 100}, -1, out);
     EXPECT_EQ(out.size(), batch.size() - 1);
+}
+
+// Inserts (one by one and by batches), removals and expiry in random order, frame after frame, the
+// boxes spanning several cells, some beyond the flat cells: every query answers as a scan of the items
+// held (cells compacted lazily must never lose or revive an item).
+TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> pos(-6, 30), size(0, 7);
+    BroadPhase bp(2.0, 24, 24);
+    util::WorkerPool pool(2);
+    std::vector<SpaceTimeBox> boxes;
+    std::vector<int> owners;
+    std::vector<char> held;
+    const auto random_box = [&](std::int64_t frame) {
+        const double x = pos(rng), y = pos(rng);
+        const std::int64_t f0 = frame + std::int64_t(rng() % 5), f1 = f0 + 1 + std::int64_t(rng() % 20);
+        return SpaceTimeBox{x, y, x + size(rng), y + size(rng), f0, rng() % 10 ? f1 : f1 + 1000000};
+    };
+    int wrong = 0;
+    for (std::int64_t frame = 0; frame < 120; ++frame) {
+        bp.expire(frame);
+        for (std::size_t i = 0; i < held.size(); ++i) held[i] = held[i] && boxes[i].f1 > frame;
+        std::vector<BroadPhase::Insertion> batch;
+        for (int k = int(rng() % 12); k > 0; --k) {
+            const int id = int(boxes.size());
+            boxes.push_back(random_box(frame));
+            owners.push_back(int(rng() % 6));
+            held.push_back(1);
+            if (rng() % 2)
+                bp.insert(id, owners.back(), boxes.back());
+            else
+                batch.push_back({id, owners.back(), boxes.back()});
+        }
+        bp.insert_all(batch, pool);
+        for (int k = int(rng() % 4); k > 0 && !boxes.empty(); --k) {
+            const int id = int(rng() % boxes.size());
+            bp.remove(id);
+            held[std::size_t(id)] = 0;
+        }
+        std::size_t live = 0;
+        for (char h : held) live += std::size_t(h);
+        wrong += bp.size() != live;
+        for (int q = 0; q < 20; ++q) {
+            const SpaceTimeBox box = random_box(frame);
+            const int owner = int(rng() % 7);
+            std::vector<int> got, want;
+            bp.query(box, owner, got);
+            for (std::size_t i = 0; i < boxes.size(); ++i)
+                if (held[i] && owners[i] != owner && boxes[i].overlaps(box)) want.push_back(int(i));
+            wrong += got != want;
+        }
+    }
+    EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace
