@@ -31,6 +31,10 @@ struct ClipOutline {
     /// one skips its samples.
     std::vector<std::array<double, 3>> blocks;
     static constexpr std::size_t kBlock = 8;
+    /// Per direction bin (kBins over the turn, bin b around the angle 2 pi (b + 0.5) / kBins), the hull
+    /// vertex farthest that way: where place_clip starts its walk to each side of a placed box.
+    std::vector<int> extreme;
+    static constexpr int kBins = 64;  // a power of two
 };
 ClipOutline outline_of(const Path& path);
 std::vector<ClipOutline> outlines_of(const MotionGraph& g);
