@@ -298,6 +298,23 @@ void Choice::record_query(const CrowdState& s, int k, const Piece& mine, Candida
     cand.against.push_back(q);
 }
 
+// The solids whose bounds overlap `box`, by solid index, into near_ (solid_grid.query). Walls and
+// obstacles never change: where one query around the choice point's first box finds none, every box
+// of the evaluation on that ground has none near.
+void Choice::solids_near(const CrowdState& s, const SpaceTimeBox& box) {
+    constexpr double kAround = 6.0;  // metres: most candidates and their plans stay this close
+    constexpr auto kAll = std::numeric_limits<std::int64_t>::max();
+    if (!solids_asked_) {
+        solids_asked_ = true;
+        const SpaceTimeBox around{box.x0 - kAround, box.y0 - kAround, box.x1 + kAround, box.y1 + kAround, -kAll, kAll};
+        s.solid_grid.query(around, -2, near_);
+        solid_free_ = near_.empty() ? around : SpaceTimeBox{0, 0, -1, -1, 0, 0};
+    }
+    const SpaceTimeBox& f = solid_free_;
+    if (f.x0 <= box.x0 && box.x1 <= f.x1 && f.y0 <= box.y0 && box.y1 <= f.y1) return near_.clear();
+    s.solid_grid.query(box, -2, near_);
+}
+
 // The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
 // solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
 // ever yields.
@@ -306,7 +323,7 @@ bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits 
     const SpaceTimeBox box = mine.kind == Piece::Held
                                  ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
                                  : mine.clip.box;
-    s.solid_grid.query(box, -2, near_);
+    solids_near(s, box);
     bool free = true;
     for (int i : near_) {
         const bool hit = meets_solid(s, mine, i);
@@ -530,6 +547,7 @@ void Choice::evaluate(const CrowdState& s) {
     point_.agent = agent_;
     point_.frame = frame_;
     queried_boxes_.clear();
+    solids_asked_ = false;
     near_total_ = 0;
     root_rejected_ = 0;
     last_hit_ = -1;
@@ -680,7 +698,7 @@ bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
     const SpaceTimeBox solid_box = piece.kind == Piece::Held
                                        ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
                                        : piece.clip.box;
-    s.solid_grid.query(solid_box, -2, near_);
+    solids_near(s, solid_box);
     for (int i : near_) {
         count_query({});
         if (meets_solid(s, piece, i)) return false;

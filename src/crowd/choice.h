@@ -185,6 +185,7 @@ private:
 
     void order(const CrowdState& s);
     void note_query(const SpaceTimeBox& box);
+    void solids_near(const CrowdState& s, const SpaceTimeBox& box);
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
     void count_query(const QueryStats& st);
     void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
@@ -217,6 +218,8 @@ private:
     std::vector<int> near_;                    // scratch: broad-phase ids of one query
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     SpaceTimeBox queried_all_;                 // their union (bounding box)
+    bool solids_asked_ = false;                // solid_free_ is set for this evaluation
+    SpaceTimeBox solid_free_;                  // ground without solids (its time: all)
     std::uint64_t near_total_ = 0, root_rejected_ = 0;
     int last_hit_ = -1;  // broad-phase id of the other agent's piece that refused the last piece
     Outcome outcome_ = Outcome::Candidate;
