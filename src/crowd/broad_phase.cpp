@@ -7,6 +7,12 @@
 
 namespace mobb::crowd {
 
+namespace {
+
+constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
+
+}  // namespace
+
 BroadPhase::BroadPhase(double cell) : cell_(cell), inv_cell_(1 / cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
@@ -49,7 +55,9 @@ bool BroadPhase::enroll(int id, int owner, const SpaceTimeBox& box) {
     if (box.f1 <= expired_) return false;
     items_[std::size_t(id)] = {box, owner, true};
     ++live_;
-    ends_.emplace(box.f1, id);
+    // Items held for ever (the crowd's held ground: most are removed later) stay out of the queue, which
+    // would keep every one of them for good; expire() meets them only at the end of time.
+    if (box.f1 != kNever) ends_.emplace(box.f1, id);
     return true;
 }
 
@@ -77,9 +85,10 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
     placing_.clear();
     for (const Insertion& it : items) {
         if (!enroll(it.id, it.owner, it.box)) continue;
-        const Placing p{entry(it.box, it.id, it.owner), index_x(it.box.x1), index_y(it.box.y1)};
-        for (std::int64_t ix = p.e.ix; ix <= p.ix1; ++ix)  // hashing is not thread-safe: here
-            for (std::int64_t iy = p.e.iy; iy <= p.iy1; ++iy)
+        const Placing p{entry(it.box, it.id, it.owner), index_x(it.box.x0), index_y(it.box.y0), index_x(it.box.x1),
+                        index_y(it.box.y1)};
+        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)  // hashing is not thread-safe: here
+            for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
                 if (!flat(ix, iy)) put(hashed_[key(ix, iy)], p.e);
         placing_.push_back(p);
     }
@@ -88,8 +97,8 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
         for (const Placing& p : placing_) {
-            const std::int64_t ix0 = std::max(lo, p.e.ix), ix1 = std::min(hi - 1, p.ix1);
-            const std::int64_t iy0 = std::max<std::int64_t>(0, p.e.iy), iy1 = std::min(ny_ - 1, p.iy1);
+            const std::int64_t ix0 = std::max(lo, p.ix0), ix1 = std::min(hi - 1, p.ix1);
+            const std::int64_t iy0 = std::max<std::int64_t>(0, p.iy0), iy1 = std::min(ny_ - 1, p.iy1);
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
                 for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], p.e);
         }
@@ -97,6 +106,9 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
 }
 
 void BroadPhase::expire(std::int64_t frame) {
+    if (frame == kNever && expired_ != kNever)  // the end of time: the items held for ever end too
+        for (Item& item : items_)
+            if (item.live && item.box.f1 == kNever) item.live = false, --live_;
     expired_ = std::max(expired_, frame);
     for (; !ends_.empty() && ends_.top().first <= expired_; ends_.pop()) {
         Item& item = items_[std::size_t(ends_.top().second)];
@@ -129,8 +141,9 @@ void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out
         // starts further on; rows alike). No visited marks, so the query is const. Tested first: it
         // is the cheapest test, and rules out an item in every cell but one.
         const bool first_x = ix == qx, first_y = iy == qy;
+        const auto cx = std::int32_t(ix), cy = std::int32_t(iy);
         for (const Entry& e : c.entries) {
-            if ((!first_x && e.ix != ix) || (!first_y && e.iy != iy)) continue;
+            if ((!first_x && e.ix != cx) || (!first_y && e.iy != cy)) continue;
             if (e.owner == owner || e.box.f1 <= expired || !e.box.overlaps(box)) continue;
             out.push_back(e.id);
         }
@@ -147,7 +160,8 @@ void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out
         for (std::int64_t iy = qy; iy <= qy1; ++iy)
             if (const Cell* c = find(ix, iy)) scan(*c, ix, iy);
     std::sort(out.begin(), out.end());
-    // Two far cells may share a hash key; then an item could be met twice in one array.
+    // Two far cells may share a hash key, or the low bits of their indices; then an item could be met
+    // twice.
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 

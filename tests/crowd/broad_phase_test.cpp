@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -154,6 +156,34 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
         }
     }
     EXPECT_EQ(wrong, 0);
+}
+
+// Items held for ever stay until the end of time, which drops them too; far beyond the flat cells,
+// cells whose indices share their low 32 bits do not confuse the queries.
+TEST(BroadPhase, ForeverItemsAndFarCells) {
+    constexpr auto kNever = std::numeric_limits<std::int64_t>::max();
+    BroadPhase bp(1.0, 10, 10);
+    bp.insert(0, 0, {1, 1, 2, 2, 0, kNever});
+    bp.insert(1, 0, {1, 1, 2, 2, 0, 50});
+    const double far = std::ldexp(1.0, 32);  // cell 2^32: its low bits are those of cell 0
+    bp.insert(2, 0, {far + 0.5, 0.5, far + 2.5, 1.5, 0, kNever});
+    std::vector<int> out;
+    bp.expire(1000);
+    EXPECT_EQ(bp.size(), 2u);
+    bp.query({0, 0, 3, 3, 1000, 1001}, 1, out);
+    EXPECT_EQ(out, std::vector<int>({0}));
+    bp.query({far - 0.5, 0, far + 3, 2, 1000, 1001}, 1, out);
+    EXPECT_EQ(out, std::vector<int>({2}));
+    bp.query({far + 1.2, 0, far + 1.3, 2, 1000, 1001}, 1, out);
+    EXPECT_EQ(out, std::vector<int>({2}));
+    bp.expire(kNever);
+    EXPECT_EQ(bp.size(), 0u);
+    bp.query({0, 0, 3, 3, 0, kNever}, 1, out);
+    EXPECT_TRUE(out.empty());
+    bp.query({far - 0.5, 0, far + 3, 2, 0, kNever}, 1, out);
+    EXPECT_TRUE(out.empty());
+    bp.insert(3, 0, {1, 1, 2, 2, 0, kNever});  // ends by the expiry frame: dropped
+    EXPECT_EQ(bp.size(), 0u);
 }
 
 }  // namespace

@@ -79,18 +79,20 @@ private:
     struct Entry {  // an item as a cell holds it: the box inline, so a query reads one array per cell
         SpaceTimeBox box;
         int id = 0, owner = -1;
-        std::int64_t ix = 0, iy = 0;  // the cell of the box's lower corner (index_x(box.x0), index_y(box.y0))
+        // The cell of the box's lower corner (index_x(box.x0), index_y(box.y0)), its low 32 bits: 64 bytes
+        // an entry. (Far cells alike in them share a hash key too: query() drops the duplicates.)
+        std::int32_t ix = 0, iy = 0;
     };
     struct Cell {
         std::vector<Entry> entries;
         std::int64_t ends = std::numeric_limits<std::int64_t>::max();  // no entry ends before (a lower bound)
     };
-    struct Placing {  // an item of insert_all(): its entry and the last cell it covers
+    struct Placing {  // an item of insert_all(): its entry and the cells it covers
         Entry e;
-        std::int64_t ix1 = 0, iy1 = 0;
+        std::int64_t ix0 = 0, iy0 = 0, ix1 = 0, iy1 = 0;
     };
     Entry entry(const SpaceTimeBox& box, int id, int owner) const {
-        return {box, id, owner, index_x(box.x0), index_y(box.y0)};
+        return {box, id, owner, std::int32_t(index_x(box.x0)), std::int32_t(index_y(box.y0))};
     }
     // floor() by hand: the library call costs more than the rest of a cell lookup. Multiplying by the
     // inverse may put a box one cell over, but consistently (it is monotonic), which is all the grid needs.
