@@ -723,8 +723,8 @@ bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
     return true;
 }
 
-std::vector<SpaceTimeBox> Choice::boxes() const {
-    std::vector<SpaceTimeBox> out = {taken_.box};
+void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
+    out.push_back(taken_.box);
     const auto add = [&](const Plan& p) {
         for (const PlannedClip& c : p.escape) out.push_back(c.box);
         if (p.hold) out.push_back(hold_box(*p.hold));
@@ -734,7 +734,6 @@ std::vector<SpaceTimeBox> Choice::boxes() const {
         add(r.plan);
         out.insert(out.end(), r.released.begin(), r.released.end());
     }
-    return out;
 }
 
 void Choice::note_query(const SpaceTimeBox& b) {

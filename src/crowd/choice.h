@@ -166,8 +166,9 @@ public:
     /// The other agents' plans that gave way (Outcome::RightOfWay).
     const std::vector<Reroute>& reroutes() const { return reroutes_; }
     /// The boxes the commit changes beyond the agent's own released pieces: the taken clip, its plan, and
-    /// the new and released boxes of the reroutes (for the frame's check of later choice points).
-    std::vector<SpaceTimeBox> boxes() const;
+    /// the new and released boxes of the reroutes (for the frame's check of later choice points), appended
+    /// to `out` (no list made per choice point).
+    void boxes(std::vector<SpaceTimeBox>& out) const;
     const Placed& candidate(int k) const { return placed_[std::size_t(k)]; }
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
     ChoicePoint& point() { return point_; }

@@ -111,6 +111,7 @@ private:
     BatchGrid chosen_;                            // boxes of the current batch's plans, by position
     std::vector<char> stale_;                     // per position: a plan chosen before may change it
     std::vector<SpaceTimeBox> moved_;             // boxes of plans chosen again on re-evaluation
+    std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
     std::vector<Agent> agents_;
     std::vector<Piece> pieces_;          // by broad-phase id
     std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
@@ -231,7 +232,9 @@ void Simulation::reserve_starts() {
 void Simulation::gather(std::size_t n) {
     chosen_.clear();
     for (std::size_t i = 0; i < n; ++i) {
-        for (const SpaceTimeBox& b : slots_[i].boxes()) chosen_.add(int(i), b);
+        boxes_.clear();
+        slots_[i].boxes(boxes_);
+        for (const SpaceTimeBox& b : boxes_) chosen_.add(int(i), b);
         for (int id : agents_[std::size_t(slots_[i].agent())].reserved)
             chosen_.add(int(i), box_of(pieces_[std::size_t(id)]));
     }
@@ -262,7 +265,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
             flush();
             c.evaluate(s);
             ++out_.summary.reevaluated;
-            for (const SpaceTimeBox& b : c.boxes()) moved_.push_back(b);
+            c.boxes(moved_);
         }
         commit(c);
     }
