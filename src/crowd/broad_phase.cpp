@@ -7,12 +7,6 @@
 
 namespace mobb::crowd {
 
-namespace {
-
-constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
-
-}  // namespace
-
 BroadPhase::BroadPhase(double cell) : cell_(cell), inv_cell_(1 / cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
@@ -51,13 +45,11 @@ void BroadPhase::cells(const SpaceTimeBox& box, F&& f) const {
 bool BroadPhase::enroll(int id, int owner, const SpaceTimeBox& box) {
     if (id < 0) throw std::invalid_argument("broad phase: negative id");
     if (std::size_t(id) >= items_.size()) items_.resize(std::size_t(id) + 1);
-    if (items_[std::size_t(id)].live) remove(id);
+    remove(id);  // when held
     if (box.f1 <= expired_) return false;
     items_[std::size_t(id)] = {box, owner, true};
     ++live_;
-    // Items held for ever (the crowd's held ground: most are removed later) stay out of the queue, which
-    // would keep every one of them for good; expire() meets them only at the end of time.
-    if (box.f1 != kNever) ends_.emplace(box.f1, id);
+    ++ending_[box.f1];
     return true;
 }
 
@@ -105,23 +97,16 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
     });
 }
 
+// Counts only: an expired item's own flag stays set (held() reads the frame too), so expiry touches no
+// item, and the counts per end frame are few (the frames of the clips in play).
 void BroadPhase::expire(std::int64_t frame) {
-    if (frame == kNever && expired_ != kNever)  // the end of time: the items held for ever end too
-        for (Item& item : items_)
-            if (item.live && item.box.f1 == kNever) item.live = false, --live_;
     expired_ = std::max(expired_, frame);
-    for (; !ends_.empty() && ends_.top().first <= expired_; ends_.pop()) {
-        Item& item = items_[std::size_t(ends_.top().second)];
-        // A removed item, or one inserted again since, is not this entry's to expire.
-        if (item.live && item.box.f1 <= expired_) {
-            item.live = false;
-            --live_;
-        }
-    }
+    for (auto it = ending_.begin(); it != ending_.end() && it->first <= expired_; it = ending_.erase(it))
+        live_ -= it->second;
 }
 
 void BroadPhase::remove(int id) {
-    if (id < 0 || std::size_t(id) >= items_.size() || !items_[std::size_t(id)].live) return;
+    if (id < 0 || std::size_t(id) >= items_.size() || !held(items_[std::size_t(id)])) return;
     Item& item = items_[std::size_t(id)];
     cells(item.box, [&](std::int64_t ix, std::int64_t iy) {
         auto& v = cell(ix, iy).entries;
@@ -129,6 +114,8 @@ void BroadPhase::remove(int id) {
     });
     item.live = false;
     --live_;
+    const auto ends = ending_.find(item.box.f1);
+    if (--ends->second == 0) ending_.erase(ends);
 }
 
 void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {

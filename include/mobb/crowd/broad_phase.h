@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <queue>
+#include <map>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -74,8 +74,9 @@ private:
     struct Item {
         SpaceTimeBox box;
         int owner = -1;
-        bool live = false;
+        bool live = false;  // inserted and not removed since (held() also asks it has not expired)
     };
+    bool held(const Item& item) const { return item.live && item.box.f1 > expired_; }
     struct Entry {  // an item as a cell holds it: the box inline, so a query reads one array per cell
         SpaceTimeBox box;
         int id = 0, owner = -1;
@@ -124,7 +125,7 @@ private:
     std::vector<Placing> placing_;  // scratch of insert_all()
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
-    std::priority_queue<std::pair<std::int64_t, int>, std::vector<std::pair<std::int64_t, int>>, std::greater<>> ends_;
+    std::map<std::int64_t, std::size_t> ending_;                       // items held by the frame they end at
 };
 
 }  // namespace mobb::crowd
