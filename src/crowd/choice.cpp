@@ -543,7 +543,10 @@ void Choice::evaluate_random(const CrowdState& s) {
 }
 
 void Choice::evaluate(const CrowdState& s) {
+    std::vector<Candidate> candidates = std::move(point_.candidates);  // their memory, when the record left it
+    candidates.clear();
     point_ = ChoicePoint{};
+    point_.candidates = std::move(candidates);
     point_.agent = agent_;
     point_.frame = frame_;
     queried_boxes_.clear();

@@ -384,7 +384,11 @@ void Simulation::commit(Choice& c) {
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
+    if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
+    // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
+    std::vector<Candidate> candidates = std::move(cp.candidates);
     out_.record.choices.push_back(std::move(cp));
+    cp.candidates = std::move(candidates);
 }
 
 void Simulation::run_frames(const std::function<void(double)>& progress) {

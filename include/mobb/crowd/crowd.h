@@ -34,7 +34,8 @@ struct CrowdOptions {
     double cell = 4.0;         ///< broad-phase grid cell, metres
     bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Keep each candidate's queries (Candidate::against) in the record, for the viewer and the record
-    /// digests; off, the record's choice points keep only their counts (the runs are otherwise the same).
+    /// digests; off, the record's choice points keep only their counts, not their candidates (the runs are
+    /// otherwise the same).
     bool record_queries = true;
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
