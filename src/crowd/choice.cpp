@@ -19,6 +19,12 @@ double excursion(double x, double y, const World& w) { return std::max({0.0, w.x
 
 SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x + h.r, h.y + h.r, h.frame, kForever}; }
 
+// What a piece's solid queries cover: its held ground reaches as far as it keeps clear of the walls.
+SpaceTimeBox solid_box(const CrowdState& s, const Piece& p) {
+    const Hold& h = p.hold;
+    return p.kind == Piece::Held ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame}) : p.clip.box;
+}
+
 // A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
 // f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap. Blocks
 // of samples whose circle stays a millimetre clear of the disk are skipped (the exact test decides).
@@ -53,6 +59,8 @@ bool holds_meet(const Hold& a, const Hold& b) {
 }
 
 }  // namespace
+
+SpaceTimeBox box_of(const Piece& p) { return p.kind == Piece::Held ? hold_box(p.hold) : p.clip.box; }
 
 ClipOutline outline_of(const Path& path) {
     ClipOutline out;
@@ -319,11 +327,7 @@ void Choice::solids_near(const CrowdState& s, const SpaceTimeBox& box) {
 // solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
 // ever yields.
 bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits) {
-    const Hold& h = mine.hold;
-    const SpaceTimeBox box = mine.kind == Piece::Held
-                                 ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
-                                 : mine.clip.box;
-    solids_near(s, box);
+    solids_near(s, solid_box(s, mine));
     bool free = true;
     for (int i : near_) {
         const bool hit = meets_solid(s, mine, i);
@@ -353,7 +357,7 @@ bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
 bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits) {
     bool free = free_of_solids(s, k, mine, hits);
     if (!free && hits != Hits::Count) return false;
-    const SpaceTimeBox box = mine.kind == Piece::Held ? hold_box(mine.hold) : mine.clip.box;
+    const SpaceTimeBox box = box_of(mine);
     note_query(box);
     s.broad.query(box, agent_, near_);
     near_total_ += near_.size();
@@ -675,7 +679,7 @@ bool Choice::reroute(const CrowdState& s, int owner) {
         Reroute r{owner, plan, {}};
         for (int id : a.reserved) {
             const Piece& old = s.pieces[std::size_t(id)];
-            r.released.push_back(old.kind == Piece::Held ? hold_box(old.hold) : old.clip.box);
+            r.released.push_back(box_of(old));
         }
         for (const PlannedClip& e : plan.escape) {
             Piece p;
@@ -697,16 +701,12 @@ bool Choice::reroute(const CrowdState& s, int owner) {
 // A piece of a reroute: free of the solids, of every live piece of the others but the excluded ones, and of
 // the extra pieces. Its queries count for the choice point (not for a candidate: they are another agent's).
 bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
-    const Hold& h = piece.hold;
-    const SpaceTimeBox solid_box = piece.kind == Piece::Held
-                                       ? hold_box({h.x, h.y, std::max(h.r, s.escapes.wall_clearance), h.frame})
-                                       : piece.clip.box;
-    solids_near(s, solid_box);
+    solids_near(s, solid_box(s, piece));
     for (int i : near_) {
         count_query({});
         if (meets_solid(s, piece, i)) return false;
     }
-    const SpaceTimeBox box = piece.kind == Piece::Held ? hold_box(piece.hold) : piece.clip.box;
+    const SpaceTimeBox box = box_of(piece);
     note_query(box);
     s.broad.query(box, piece.agent, near_);
     for (int id : near_) {

@@ -87,6 +87,10 @@ struct Piece {
     Hold hold;         ///< Held
 };
 
+/// The space-time box a piece takes in the broad phase: its clip's, or its held disk's bounds from its
+/// first frame on, for good.
+SpaceTimeBox box_of(const Piece& piece);
+
 /// One agent of the simulation.
 struct Agent {
     Placement start;

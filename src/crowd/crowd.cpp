@@ -24,8 +24,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
-
 void check(const CrowdOptions& o) {
     const bool agents = o.agents >= 1 || !o.placed.empty();
     if (!agents || !(o.seconds > 0) || !(o.world.width() > 0) || !(o.world.height() > 0))
@@ -87,7 +85,6 @@ private:
     void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void gather(std::size_t n);
     int add_piece(const Piece& piece, bool pending);
-    SpaceTimeBox box_of(const Piece& p) const;
     void reserve(int agent, int commit, const Plan& plan);
     void commit(Choice& c);
     void record_plan(const Choice& c, ChoicePoint& cp) const;
@@ -181,13 +178,6 @@ void Simulation::place_agents() {
         const std::int64_t start = std::max<std::int64_t>(0, frame);
         agents_.push_back({p, start, s.goal, {}, {}, {}, false, 0, start});
     }
-}
-
-SpaceTimeBox Simulation::box_of(const Piece& p) const {
-    if (p.kind == Piece::Held)
-        return {p.hold.x - p.hold.r, p.hold.y - p.hold.r, p.hold.x + p.hold.r,
-                p.hold.y + p.hold.r, p.hold.frame,        kForever};
-    return p.clip.box;
 }
 
 int Simulation::add_piece(const Piece& piece, bool pending) {
