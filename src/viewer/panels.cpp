@@ -549,7 +549,7 @@ void crowd_panel(State& s, Ui& ui) {
         ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
                     static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
         for (const crowd::ReroutedPlan& rr : c.reroutes)
-            ImGui::Text("right of way: agent %d stops another way (%zu clips)", rr.agent, rr.escape.size());
+            ImGui::TextWrapped("agent %d gave way (right of way)", rr.agent);
         // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
         std::size_t rows = c.candidates.size();
         for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();
