@@ -1,13 +1,15 @@
 // Wandering without collisions: the candidates in the choice point's random order, except that walking
 // clips come before slow ones (starting, stopping) and those before clips that stay in place (so agents
-// keep walking while they can); walks heading for a wall come after those heading into the open (a bias
-// toward the interior that turns agents early, a few degrees per clip); slow clips the faster first; and
-// near a wall, turns on the spot that end facing the open first.
+// keep walking while they can), except that slow clips slower than the idle speed (creeping) come last;
+// walks heading for a wall come after those heading into the open (a bias toward the interior that turns
+// agents early, a few degrees per clip); slow clips the faster first; and near a wall, turns on the spot
+// that end facing the open first.
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <utility>
 
+#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/policy.h"
 
 namespace mobb::crowd {
@@ -72,8 +74,10 @@ private:
     static constexpr int kBands = int(kOpenAhead / kBand);
     static constexpr std::size_t kMaxSlower = 256;  // order_in_open counts them on the stack
 
-    // Clips that do not walk, after every walk: slow ones (starts, stops) before those in place, each
-    // kind the faster first (an agent that must slow down keeps as much of its speed as it can).
+    // Clips that do not walk, after every walk: slow ones (starts, stops) that move at kIdleSpeed or
+    // faster, then those in place, then the slow ones that only creep; each kind the faster first (an
+    // agent that must slow down keeps as much of its speed as it can, and one that cannot move turns to
+    // find a way out rather than creep along the way it is stuck in).
     void rank_slower_clips() {
         std::vector<int> slower;
         for (int k = 0; k < int(kinds_.size()); ++k)
@@ -81,7 +85,9 @@ private:
         const auto key = [&](int k) {
             const ClipKind kind = kinds_[std::size_t(k)];
             const double duration = double(graph_.clips[std::size_t(k)].path.size()) * graph_.dt();
-            return std::pair{kind == ClipKind::Slow ? 0 : 1, -reach_[std::size_t(k)] / duration};
+            const double speed = reach_[std::size_t(k)] / duration;
+            if (kind != ClipKind::Slow) return std::pair{1, -speed};
+            return std::pair{speed >= CrowdMetrics::kIdleSpeed ? 0 : 2, -speed};
         };
         std::stable_sort(slower.begin(), slower.end(), [&](int a, int b) { return key(a) < key(b); });
         slower_rank_.assign(kinds_.size(), 0);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/policy.h"
 
 namespace mobb::crowd {
@@ -54,11 +55,15 @@ TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
     World w;  // [0, 30] x [0, 40]
     const Fixture& f = fixture();
     const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, 0.45});
-    // In the open: every walking clip before every slow one, before every clip in place.
+    // In the open: every walking clip before every slow one that moves (at the idle speed or faster),
+    // before every clip in place, before the slow ones that only creep.
     const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, 0, false, {}};
     auto rank = [&](int c) {
         const ClipKind k = f.kinds[std::size_t(c)];
-        return k == ClipKind::Walk ? 0 : k == ClipKind::Slow ? 1 : 2;
+        const GraphClip& g = f.graph.clips[std::size_t(c)];
+        const double speed = std::hypot(g.exit_x, g.exit_y) / (double(g.path.size()) * f.graph.dt());
+        if (k == ClipKind::Slow) return speed >= CrowdMetrics::kIdleSpeed ? 1 : 3;
+        return k == ClipKind::Walk ? 0 : 2;
     };
     const std::vector<int> c = ordered(*p, open);
     for (std::size_t k = 1; k < c.size(); ++k) EXPECT_LE(rank(c[k - 1]), rank(c[k])) << "position " << k;
