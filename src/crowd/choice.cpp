@@ -573,8 +573,10 @@ void Choice::evaluate(const CrowdState& s) {
     // With the right of way, the moving candidates tried so far get a second chance before the agent
     // settles for one that does not move.
     bool right_of_way = has_right_of_way(s);
+    deferred_ = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
         const Placed& c = place(s, k);
+        if (deferred_ >= 0 && !s.escapes.moves[std::size_t(c.clip)]) return take_deferred();
         if (right_of_way && !s.escapes.moves[std::size_t(c.clip)]) {
             if (take_right_of_way(s, k)) return;
             right_of_way = false;
@@ -592,6 +594,10 @@ void Choice::evaluate(const CrowdState& s) {
                 continue;
             refused_route = &route;
             if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
+            if (s.escapes.moves[std::size_t(c.clip)] && passes_waiting(s, k)) {
+                if (deferred_ < 0) deferred_ = k, deferred_plan_ = plan_;
+                break;
+            }
             // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
             const bool stops =
                 arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan_.escape.empty();
@@ -599,8 +605,33 @@ void Choice::evaluate(const CrowdState& s) {
             return;
         }
     }
+    if (deferred_ >= 0) return take_deferred();
     if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
+}
+
+void Choice::take_deferred() {
+    std::swap(plan_, deferred_plan_);
+    take(deferred_, Outcome::Candidate);
+}
+
+// Whether candidate k's clip passes within kGiveWayReach of an agent that waits (CrowdState::waiting).
+bool Choice::passes_waiting(const CrowdState& s, int k) {
+    const Placed& c = placed_[std::size_t(k)];
+    const SpaceTimeBox& b = c.box;
+    s.waiting.query({b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(),
+                     std::numeric_limits<std::int64_t>::max()},
+                    agent_, waiters_);
+    if (waiters_.empty()) return false;
+    constexpr double r2 = kGiveWayReach * kGiveWayReach;
+    for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {
+        const double px = base_m_.apply_x(x.x, x.y), py = base_m_.apply_y(x.x, x.y);
+        for (int w : waiters_) {
+            const auto& at = s.waiting_at[std::size_t(w)];
+            if ((px - at[0]) * (px - at[0]) + (py - at[1]) * (py - at[1]) < r2) return true;
+        }
+    }
+    return false;
 }
 
 bool Choice::has_right_of_way(const CrowdState& s) const {

@@ -117,6 +117,8 @@ struct CrowdState {
     const BroadPhase& broad;             ///< pieces live now
     const std::vector<Agent>& agents;
     const std::vector<Piece>& pieces;  ///< by broad-phase id
+    const BroadPhase& waiting;         ///< agents that waited kGiveWay or longer, by agent id (their ground)
+    const std::vector<std::array<double, 2>>& waiting_at;  ///< per agent: where it waits (metres)
 };
 
 /// How a choice point ended.
@@ -138,6 +140,13 @@ enum class Outcome : std::uint8_t {
 /// with backtracking, PIBT 2019: the higher-priority agent pushes the lower ones, which plan again.)
 inline constexpr double kRightOfWay = 2.0;  // seconds without a clip that moves
 inline constexpr std::size_t kMaxYielding = 2;
+
+/// Giving way: a free moving candidate whose clip passes within kGiveWayReach of an agent that has not
+/// moved for kGiveWay seconds (CrowdState::waiting) is taken only when no later moving candidate is free
+/// and clear of such agents: walkers keep out of the way of those who wait, when they can, so that the
+/// ground they would walk into stays open. It only reorders free candidates: nothing is refused for it.
+inline constexpr double kGiveWay = kRightOfWay;  // seconds
+inline constexpr double kGiveWayReach = 2.5;     // metres
 
 /// Another agent's plan that gives way to a choice point's: what it reserves from now on, and the boxes
 /// of the pieces it releases.
@@ -200,6 +209,8 @@ private:
     bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
     bool has_right_of_way(const CrowdState& s) const;
+    bool passes_waiting(const CrowdState& s, int k);
+    void take_deferred();
     bool take_right_of_way(const CrowdState& s, int end);
     bool reroute_yielding(const CrowdState& s, const PlannedClip& c);
     bool reroute(const CrowdState& s, int owner);
@@ -221,6 +232,9 @@ private:
     int random_pick_ = 0;                      // random mode: index of the clip taken
     bool arriving_ = false;                    // at its goal: stops as soon as it can
     std::vector<int> near_;                    // scratch: broad-phase ids of one query
+    std::vector<int> waiters_;                 // scratch: agents waiting near a candidate
+    int deferred_ = -1;                        // the first free moving candidate that passes a waiting agent
+    Plan deferred_plan_;
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     SpaceTimeBox queried_all_;                 // their union (bounding box)
     bool solids_asked_ = false;                // solid_free_ is set for this evaluation

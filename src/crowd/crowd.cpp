@@ -69,13 +69,16 @@ public:
           policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, 0.45})),
           pool_(o.threads),
           broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
-          chosen_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
+          chosen_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+          waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
 
 private:
     CrowdState state() const {
-        return {g_, outlines_, narrow_, escapes_, *policy_, o_, solids_, solid_grid_, broad_, agents_, pieces_};
+        return {g_,          outlines_, narrow_, escapes_, *policy_,  o_,
+                solids_,     solid_grid_, broad_, agents_, pieces_, waiting_,
+                waiting_at_};
     }
     double max_radius() const;
     void place_agents();
@@ -83,6 +86,8 @@ private:
     void reserve_starts();
     void run_frames(const std::function<void(double)>& progress);
     void run_batch(std::int64_t frame, const std::vector<int>& batch);
+    void note_waiting(int agent, std::int64_t end);
+    void apply_waiting();
     void gather(std::size_t n);
     int add_piece(const Piece& piece, bool pending);
     void reserve(int agent, int commit, const Plan& plan);
@@ -113,6 +118,10 @@ private:
     std::vector<Piece> pieces_;          // by broad-phase id
     std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
     std::vector<Choice> slots_;          // one per choice point of a batch, reused
+    BroadPhase waiting_;                 // agents that waited kGiveWay or longer: their ground, by agent id
+    std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
+    std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
+    std::vector<char> in_waiting_;                       // per agent: in waiting_
     CrowdRun out_;
 };
 
@@ -260,6 +269,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         commit(c);
     }
     flush();
+    apply_waiting();
 }
 
 // Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
@@ -344,6 +354,31 @@ void Simulation::reserve(int agent, int commit, const Plan& plan) {
     a.plan = plan;
 }
 
+// Whether the agent will have waited kGiveWay by the end of the clip it took (`end`): others' walks keep
+// clear of it from the next frame on, until it moves.
+void Simulation::note_waiting(int agent, std::int64_t end) {
+    const Agent& a = agents_[std::size_t(agent)];
+    const bool waits = reserves(o_) && !a.arrived && a.plan.hold && double(end - a.moved_until) * g_.dt() >= kGiveWay;
+    if (!waits && !in_waiting_[std::size_t(agent)]) return;
+    wait_changes_.push_back({agent, waits});
+}
+
+void Simulation::apply_waiting() {
+    for (const auto& [agent, waits] : wait_changes_) {
+        in_waiting_[std::size_t(agent)] = waits;
+        if (!waits) {
+            waiting_.remove(agent);
+            continue;
+        }
+        const Hold& h = *agents_[std::size_t(agent)].plan.hold;
+        waiting_at_[std::size_t(agent)] = {h.x, h.y};
+        waiting_.insert(agent, agent,
+                        {h.x - kGiveWayReach, h.y - kGiveWayReach, h.x + kGiveWayReach, h.y + kGiveWayReach,
+                         std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()});
+    }
+    wait_changes_.clear();
+}
+
 void Simulation::commit(Choice& c) {
     ChoicePoint& cp = c.point();
     // Every piece live now overlaps the candidates in time (it started before and ends after).
@@ -371,6 +406,7 @@ void Simulation::commit(Choice& c) {
     a.waited = c.outcome() == Outcome::Escape || stays ? a.waited + 1 : 0;
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
     if (escapes_.moves.empty() || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
+    note_waiting(c.agent(), end);
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
@@ -385,6 +421,8 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     const std::int64_t frames = out_.record.frames;
     due_.assign(std::size_t(frames), {});
     for (int a = 0; a < int(agents_.size()); ++a) due_[0].push_back(a);
+    in_waiting_.assign(agents_.size(), 0);
+    waiting_at_.assign(agents_.size(), {0.0, 0.0});
     // About agents x frames / mean clip length choice points: reserving saves moving them while committing.
     std::size_t samples = 0;
     for (const GraphClip& c : g_.clips) samples += c.path.size();

@@ -107,7 +107,9 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 /// times its duration away) may take a moving candidate whose plan meets only the reservations (escape
 /// clips, held ground) of at most two agents walking a clip now, when each of them finds another escape
 /// route from that clip free of everything else; they reserve those instead (the record's "reroutes";
-/// priority to the agent that waited, after Okumura et al.'s PIBT, 2019). So, outside
+/// priority to the agent that waited, after Okumura et al.'s PIBT, 2019). Giving way: a free moving
+/// candidate whose clip passes within 2.5 m of an agent that has not moved for 2 s is taken only when no
+/// later free moving candidate keeps clear of such agents (it reorders, never refuses). So, outside
 /// fallbacks (no escape left), no two agents ever touch and no disk crosses a wall. Random: a random
 /// successor; every candidate's queries still run; no escapes, no walls (the paper's timing workload).
 ///
