@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -471,6 +472,80 @@ TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
     }
     EXPECT_GE(taken, 5);
     EXPECT_GE(replayed, 5) << "later queries meet the rerouted plans";
+}
+
+// Where each agent waits at `frame`, as the crowd sees it then: agents whose last clip started before the
+// frame ends 2 s or more after the end of their last clip that moves (else nullopt), at their held ground.
+std::vector<std::optional<std::array<double, 2>>> waiting_at(const Record& r, std::int64_t frame) {
+    std::vector<std::optional<std::array<double, 2>>> out(r.tracks.size());
+    for (std::size_t w = 0; w < r.tracks.size(); ++w) {
+        std::int64_t moved_until = 0, end = 0;
+        const PlacedClip* last = nullptr;
+        for (const PlacedClip& p : r.tracks[w].clips) {
+            if (p.start >= frame) break;
+            last = &p;
+            end = p.start + std::int64_t(path_of(p.clip).size());
+            if (moves(p.clip)) moved_until = end;
+        }
+        if (!last || double(end - moved_until) * r.dt < 2.0 - 1e-9) continue;
+        const ChoicePoint& own = r.choices[std::size_t(last->commit)];
+        if (own.holds) out[w] = std::array<double, 2>{own.hold[0], own.hold[1]};
+    }
+    return out;
+}
+
+// Giving way: a free moving candidate passed over for a later one (or for none) passes within 2.5 m of
+// an agent that waits; the one taken after it does not, unless no later moving candidate was free.
+TEST(Crowd, GivesWayToThoseWhoWait) {
+    int gave_way = 0, taken_anyway = 0;
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        CrowdOptions o = wander(60, 30, seed);
+        o.world.x1 = 20, o.world.y1 = 25;
+        const CrowdRun c = run(o);
+        const Record& r = c.record;
+        EXPECT_TRUE(frame_contacts(r).empty()) << "seed " << seed;
+        for (const ChoicePoint& cp : r.choices) {
+            if (cp.outcome != "candidate") continue;
+            std::size_t t = 0;
+            while (t < cp.candidates.size() && cp.candidates[t].clip != cp.taken) ++t;
+            ASSERT_LT(t, cp.candidates.size());
+            const auto& own = r.tracks[std::size_t(cp.agent)].clips;
+            const auto at =
+                std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.start == cp.frame; });
+            ASSERT_NE(at, own.end());
+            const auto waiting = waiting_at(r, cp.frame);
+            const auto passes = [&](int clip) {
+                const double cs = std::cos(at->place.theta), sn = std::sin(at->place.theta);
+                for (const Sample& x : path_of(clip).samples)
+                    for (std::size_t w = 0; w < waiting.size(); ++w) {
+                        if (!waiting[w] || int(w) == cp.agent) continue;
+                        const double px = at->place.x + cs * x.x - sn * x.y, py = at->place.y + sn * x.x + cs * x.y;
+                        if (std::hypot(px - (*waiting[w])[0], py - (*waiting[w])[1]) < 2.5 - 1e-9) return true;
+                    }
+                return false;
+            };
+            bool skipped = false;
+            for (std::size_t k = 0; k < t; ++k) {
+                if (cp.candidates[k].hits > 0) continue;
+                EXPECT_TRUE(moves(cp.candidates[k].clip));
+                EXPECT_TRUE(passes(cp.candidates[k].clip)) << "agent " << cp.agent << " frame " << cp.frame;
+                skipped = true;
+                ++gave_way;
+            }
+            const std::size_t n = cp.candidates.size();
+            if (skipped) {  // taken after those it passed over: the first free one clear of who waits
+                EXPECT_EQ(t + 1, n);
+                EXPECT_FALSE(passes(cp.taken));
+            }
+            if (t + 1 < n) {  // passed over and taken all the same: no later moving candidate was free and clear
+                EXPECT_TRUE(passes(cp.taken));
+                for (std::size_t k = t + 1; k < n; ++k) EXPECT_TRUE(moves(cp.candidates[k].clip));
+                ++taken_anyway;
+            }
+        }
+    }
+    EXPECT_GE(gave_way, 5);
+    EXPECT_GE(taken_anyway, 1);
 }
 
 TEST(Crowd, RejectsImpossibleWorlds) {
