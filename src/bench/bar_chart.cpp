@@ -60,13 +60,19 @@ struct Image {
 
 void write_bar_chart(const std::string& file, const std::string& title, const std::vector<Bar>& bars,
                      const std::string& unit) {
-    const int scale = 2, row = 34, left = 230, right = 170, top = 56, width = 1000;
+    // The label column as wide as the longest label, so that no bar is drawn over one.
+    const int scale = 2, row = 34, right = 170, top = 56, span = 600;
+    int labels = 0;
+    for (const Bar& b : bars) {
+        std::string copy = b.label;
+        labels = std::max(labels, stb_easy_font_width(copy.data()) * scale);
+    }
+    const int left = 16 + labels + 14, width = left + span + right;
     Image img{width, top + row * int(bars.size()) + 24, {}};
     img.rgb.assign(std::size_t(img.w) * std::size_t(img.h) * 3, 255);
     img.text(16, 14, title, scale, 0x202020);
     double vmax = 0;
     for (const Bar& b : bars) vmax = std::max(vmax, b.value);
-    const int span = width - left - right;
     img.fill(left - 1, top - 6, left, top + row * int(bars.size()), 0x808080);
     for (std::size_t k = 0; k < bars.size(); ++k) {
         const int y = top + row * int(k);
