@@ -619,9 +619,9 @@ void Choice::take_deferred() {
 bool Choice::passes_waiting(const CrowdState& s, int k) {
     const Placed& c = placed_[std::size_t(k)];
     const SpaceTimeBox& b = c.box;
-    s.waiting.query({b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(),
-                     std::numeric_limits<std::int64_t>::max()},
-                    agent_, waiters_);
+    s.waiting.query(
+        {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},
+        agent_, waiters_);
     if (waiters_.empty()) return false;
     constexpr double r2 = kGiveWayReach * kGiveWayReach;
     for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {

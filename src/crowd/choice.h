@@ -223,17 +223,17 @@ private:
 
     int agent_ = 0;
     std::int64_t frame_ = 0;
-    std::vector<int> drawn_;                   // candidate clips in the stream's random order
-    std::vector<int> order_;                   // the same in the policy's order, for the current evaluation
-    std::vector<int> next_;                    // scratch: the order being made
-    Placement base_;                           // where and when the next clip starts
-    Rigid2 base_m_;                            // Rigid2::of(base_): every candidate starts there
-    std::vector<Placed> placed_;               // order_[0 .. placed_.size()) placed
-    int random_pick_ = 0;                      // random mode: index of the clip taken
-    bool arriving_ = false;                    // at its goal: stops as soon as it can
-    std::vector<int> near_;                    // scratch: broad-phase ids of one query
-    std::vector<int> waiters_;                 // scratch: agents waiting near a candidate
-    int deferred_ = -1;                        // the first free moving candidate that passes a waiting agent
+    std::vector<int> drawn_;      // candidate clips in the stream's random order
+    std::vector<int> order_;      // the same in the policy's order, for the current evaluation
+    std::vector<int> next_;       // scratch: the order being made
+    Placement base_;              // where and when the next clip starts
+    Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there
+    std::vector<Placed> placed_;  // order_[0 .. placed_.size()) placed
+    int random_pick_ = 0;         // random mode: index of the clip taken
+    bool arriving_ = false;       // at its goal: stops as soon as it can
+    std::vector<int> near_;       // scratch: broad-phase ids of one query
+    std::vector<int> waiters_;    // scratch: agents waiting near a candidate
+    int deferred_ = -1;           // the first free moving candidate that passes a waiting agent
     Plan deferred_plan_;
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     SpaceTimeBox queried_all_;                 // their union (bounding box)

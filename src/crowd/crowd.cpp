@@ -76,9 +76,8 @@ public:
 
 private:
     CrowdState state() const {
-        return {g_,          outlines_, narrow_, escapes_, *policy_,  o_,
-                solids_,     solid_grid_, broad_, agents_, pieces_, waiting_,
-                waiting_at_};
+        return {g_,          outlines_, narrow_, escapes_, *policy_, o_,         solids_,
+                solid_grid_, broad_,    agents_, pieces_,  waiting_, waiting_at_};
     }
     double max_radius() const;
     void place_agents();
@@ -115,13 +114,13 @@ private:
     std::vector<SpaceTimeBox> moved_;             // boxes of plans chosen again on re-evaluation
     std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
     std::vector<Agent> agents_;
-    std::vector<Piece> pieces_;          // by broad-phase id
-    std::vector<std::vector<int>> due_;  // per frame: agents at a choice point
-    std::vector<Choice> slots_;          // one per choice point of a batch, reused
-    BroadPhase waiting_;                 // agents that waited kGiveWay or longer: their ground, by agent id
+    std::vector<Piece> pieces_;                      // by broad-phase id
+    std::vector<std::vector<int>> due_;              // per frame: agents at a choice point
+    std::vector<Choice> slots_;                      // one per choice point of a batch, reused
+    BroadPhase waiting_;                             // agents that waited kGiveWay or longer: their ground, by agent id
     std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
     std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
-    std::vector<char> in_waiting_;                       // per agent: in waiting_
+    std::vector<char> in_waiting_;                    // per agent: in waiting_
     CrowdRun out_;
 };
 
