@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +125,7 @@ private:
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
         const auto size = static_cast<unsigned int>(bytes.size());
         const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+        if (binary) check_chunks(bytes);
         std::string err;
         std::string warn;
         bool ok = false;
@@ -135,6 +137,32 @@ private:
         }
         if (!ok)
             fail(binary ? "GLB" : "glTF", "not a valid file: " + (err.empty() ? "unknown error" : first_line(err)));
+    }
+
+    // The GLB container (glTF 2.0 spec, section 4.4): a 12-byte header whose length fits the file, then
+    // chunks of an 8-byte header and their data, each inside that length. Checked here because Debian's
+    // tinygltf copies a binary chunk that runs past the end (found by fuzz/gltf_fuzz).
+    void check_chunks(const std::string& bytes) const {
+        const auto u32 = [&](std::size_t at) {
+            std::uint32_t v = 0;
+            for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + std::size_t(k)]);
+            return std::size_t(v);
+        };
+        if (bytes.size() < 12)
+            fail("GLB", "not a valid file: header cut short: " + std::to_string(bytes.size()) + " bytes");
+        const std::size_t length = u32(8);
+        if (length > bytes.size())
+            fail("GLB", "not a valid file: header gives " + std::to_string(length) + " bytes, the file has " +
+                            std::to_string(bytes.size()));
+        for (std::size_t at = 12; at < length;) {
+            if (length - at < 8)
+                fail("GLB", "not a valid file: chunk header at byte " + std::to_string(at) + " cut short");
+            const std::size_t data = u32(at);
+            if (data > length - at - 8)
+                fail("GLB", "not a valid file: chunk at byte " + std::to_string(at) + " runs past the end (" +
+                                std::to_string(data) + " bytes of data, " + std::to_string(length - at - 8) + " left)");
+            at += 8 + data;
+        }
     }
 
     // Parents of every node from the children lists; rejects bad indices, shared children and cycles.

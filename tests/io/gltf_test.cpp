@@ -1,9 +1,11 @@
 // glTF loading on small hand-written files: samplers, node hierarchy, options and errors.
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+
 #include <sys/stat.h>
 
 #include "mobb/io/load.h"
@@ -323,6 +325,15 @@ TEST_F(Gltf, CorruptFilesAreErrors) {
     const std::string glb = test::make_glb(full, bin_bytes());
     const std::string truncated = dir_.write("truncated.glb", glb.substr(0, glb.size() / 2));
     EXPECT_EQ(test::load_error([&] { load_clip(truncated); }).rfind(truncated + ": GLB: not a valid file", 0), 0u);
+    // The header's length one byte short of the file: the BIN chunk runs past it (tinygltf read past the
+    // end of such a file before the chunks were checked).
+    std::string past = glb;
+    const auto declared = std::uint32_t(past.size() - 1);
+    for (int k = 0; k < 4; ++k) past[std::size_t(8 + k)] = char((declared >> (8 * k)) & 0xff);
+    const std::string overrun = dir_.write("overrun.glb", past);
+    EXPECT_EQ(
+        test::load_error([&] { load_clip(overrun); }).rfind(overrun + ": GLB: not a valid file: chunk at byte ", 0),
+        0u);
 }
 
 TEST_F(Gltf, GlbWithoutSkinOrAnimation) {
