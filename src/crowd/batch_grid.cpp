@@ -16,16 +16,16 @@ BatchGrid::BatchGrid(double cell, double x0, double y0, double x1, double y1) : 
     cells_.resize(std::size_t(nx_) * std::size_t(ny_));
 }
 
-// Clamped first, so no floor() is needed (a library call): truncation is floor from 0 on. Multiplying
-// by the inverse may put a box one cell over, but add() and any_before() alike.
-int BatchGrid::column(double v, double origin, int n) const {
-    const double c = (v - origin) * inv_cell_;
-    return c < 0 ? 0 : c >= double(n - 1) ? n - 1 : int(c);
-}
-
-void BatchGrid::add(int index, const SpaceTimeBox& box) {
-    const int e = int(entries_.size());
-    entries_.push_back({index, box});
+void BatchGrid::add(int index, const std::vector<SpaceTimeBox>& boxes) {
+    if (boxes.empty()) return;
+    SpaceTimeBox box = boxes[0];
+    for (const SpaceTimeBox& b : boxes) {
+        box.x0 = std::min(box.x0, b.x0), box.y0 = std::min(box.y0, b.y0), box.f0 = std::min(box.f0, b.f0);
+        box.x1 = std::max(box.x1, b.x1), box.y1 = std::max(box.y1, b.y1), box.f1 = std::max(box.f1, b.f1);
+    }
+    const int e = int(groups_.size());
+    groups_.push_back({index, box, boxes_.size(), boxes_.size() + boxes.size()});
+    boxes_.insert(boxes_.end(), boxes.begin(), boxes.end());
     const int ix0 = column(box.x0, x0_, nx_), ix1 = column(box.x1, x0_, nx_);
     const int iy0 = column(box.y0, y0_, ny_), iy1 = column(box.y1, y0_, ny_);
     for (int ix = ix0; ix <= ix1; ++ix)
@@ -42,9 +42,11 @@ bool BatchGrid::any_before(const SpaceTimeBox& box, int below) const {
     for (int ix = ix0; ix <= ix1; ++ix)
         for (int iy = iy0; iy <= iy1; ++iy)
             for (int e : cells_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)]) {
-                const Entry& entry = entries_[std::size_t(e)];
-                if (entry.index >= below) break;  // indices were added in increasing order
-                if (entry.box.overlaps(box)) return true;
+                const Group& g = groups_[std::size_t(e)];
+                if (g.index >= below) break;  // indices were added in increasing order
+                if (!g.all.overlaps(box)) continue;
+                for (std::size_t b = g.begin; b < g.end; ++b)
+                    if (boxes_[b].overlaps(box)) return true;
             }
     return false;
 }
@@ -52,7 +54,8 @@ bool BatchGrid::any_before(const SpaceTimeBox& box, int below) const {
 void BatchGrid::clear() {
     for (std::size_t c : used_) cells_[c].clear();
     used_.clear();
-    entries_.clear();
+    groups_.clear();
+    boxes_.clear();
 }
 
 }  // namespace mobb::crowd

@@ -12,30 +12,39 @@ namespace mobb::crowd {
 
 /// A flat grid over the world [x0, x1] x [y0, y1]; boxes beyond it land in the border cells (clamping
 /// keeps every overlap findable), so no hashing. Filled sequentially, then read by any number of threads.
+/// A choice point's boxes enter as one group under their union: one entry per cell for all of them (a
+/// plan's boxes lie close together), its boxes tested only where the union overlaps.
 class BatchGrid {
 public:
     BatchGrid(double cell, double x0, double y0, double x1, double y1);
 
-    /// Adds a box of the batch's choice point `index` (any number per index); indices are added in
-    /// increasing order.
-    void add(int index, const SpaceTimeBox& box);
+    /// Adds the boxes of the batch's choice point `index`; indices are added in increasing order.
+    void add(int index, const std::vector<SpaceTimeBox>& boxes);
     /// Whether a box added with an index below `below` overlaps `box`.
     bool any_before(const SpaceTimeBox& box, int below) const;
     /// Empties the grid (only the cells used are visited).
     void clear();
 
 private:
-    struct Entry {
+    struct Group {
         int index;
-        SpaceTimeBox box;
+        SpaceTimeBox all;        // the union of its boxes
+        std::size_t begin, end;  // its boxes in boxes_
     };
-    int column(double v, double origin, int n) const;
+    // Clamped first, so no floor() is needed (a library call): truncation is floor from 0 on. Multiplying
+    // by the inverse may put a box one cell over, but add() and any_before() alike. Inline: a call
+    // costs as much as the rest.
+    int column(double v, double origin, int n) const {
+        const double c = (v - origin) * inv_cell_;
+        return c < 0 ? 0 : c >= double(n - 1) ? n - 1 : int(c);
+    }
 
     double cell_ = 1, inv_cell_ = 1, x0_ = 0, y0_ = 0;
     int nx_ = 1, ny_ = 1;
-    std::vector<std::vector<int>> cells_;  // entries, in order of addition
+    std::vector<std::vector<int>> cells_;  // groups, in order of addition
     std::vector<std::size_t> used_;        // cells holding something
-    std::vector<Entry> entries_;
+    std::vector<Group> groups_;
+    std::vector<SpaceTimeBox> boxes_;
 };
 
 }  // namespace mobb::crowd

@@ -49,13 +49,25 @@ void BroadPhase::cells(const SpaceTimeBox& box, F&& f) const {
 // The item table's part of an insertion; false when the item is gone already.
 bool BroadPhase::enroll(int id, int owner, const SpaceTimeBox& box) {
     if (id < 0) throw std::invalid_argument("broad phase: negative id");
-    if (std::size_t(id) >= items_.size()) items_.resize(std::size_t(id) + 1);
+    // Doubling: ids come one more at a time, and resize() to each would take its slow path each time.
+    if (std::size_t(id) >= items_.size()) items_.resize(std::max(std::size_t(id) + 1, 2 * items_.size()));
     remove(id);  // when held
     if (box.f1 <= expired_) return false;
     items_[std::size_t(id)] = {box, owner, true};
     ++live_;
-    ++ending_[box.f1];
+    count_end(box.f1, +1);
     return true;
+}
+
+void BroadPhase::count_end_rarely(std::int64_t f1, int delta) {
+    if (f1 < 0 || f1 >= kFlatEnds) {
+        const auto it = ending_.try_emplace(f1, 0).first;
+        if ((it->second += std::size_t(delta)) == 0) ending_.erase(it);
+        return;
+    }
+    if (std::size_t(f1) >= ending_flat_.size())
+        ending_flat_.resize(std::max(std::size_t(f1) + 1, 2 * ending_flat_.size()));
+    ending_flat_[std::size_t(f1)] += std::size_t(delta);
 }
 
 // Expired entries leave a cell when something is next put into it (and one may have expired).
@@ -108,19 +120,28 @@ void BroadPhase::expire(std::int64_t frame) {
     expired_ = std::max(expired_, frame);
     for (auto it = ending_.begin(); it != ending_.end() && it->first <= expired_; it = ending_.erase(it))
         live_ -= it->second;
+    const std::int64_t last = std::min<std::int64_t>(expired_, std::int64_t(ending_flat_.size()) - 1);
+    for (; counted_from_ <= last; ++counted_from_) {
+        live_ -= ending_flat_[std::size_t(counted_from_)];
+        ending_flat_[std::size_t(counted_from_)] = 0;
+    }
+    if (expired_ == std::numeric_limits<std::int64_t>::max()) live_ -= std::exchange(ending_never_, 0);
 }
 
 void BroadPhase::remove(int id) {
     if (id < 0 || std::size_t(id) >= items_.size() || !held(items_[std::size_t(id)])) return;
     Item& item = items_[std::size_t(id)];
+    // A cell's order does not matter (query() sorts its answer): the last entry fills the gap.
     cells(item.box, [&](std::int64_t ix, std::int64_t iy) {
         auto& v = cell(ix, iy).entries;
-        v.erase(std::remove_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; }), v.end());
+        const auto it = std::find_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; });
+        if (it == v.end()) return;  // dropped with the expired ones
+        *it = v.back();
+        v.pop_back();
     });
     item.live = false;
     --live_;
-    const auto ends = ending_.find(item.box.f1);
-    if (--ends->second == 0) ending_.erase(ends);
+    count_end(item.box.f1, -1);
 }
 
 void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {

@@ -119,7 +119,9 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
     const auto random_box = [&](std::int64_t frame) {
         const double x = pos(rng), y = pos(rng);
         const std::int64_t f0 = frame + std::int64_t(rng() % 5), f1 = f0 + 1 + std::int64_t(rng() % 20);
-        return SpaceTimeBox{x, y, x + size(rng), y + size(rng), f0, rng() % 10 ? f1 : f1 + 1000000};
+        // Some end far on: the end counts keep frames up to 2^20 in an array, the others apart.
+        const std::int64_t far = rng() % 2 ? 1000000 : 5000000;
+        return SpaceTimeBox{x, y, x + size(rng), y + size(rng), f0, rng() % 10 ? f1 : f1 + far};
     };
     int wrong = 0;
     for (std::int64_t frame = 0; frame < 120; ++frame) {
@@ -142,6 +144,12 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             bp.remove(id);
             held[std::size_t(id)] = 0;
         }
+        if (rng() % 3 == 0 && !boxes.empty()) {  // an id inserted again replaces its item
+            const int id = int(rng() % boxes.size());
+            boxes[std::size_t(id)] = random_box(frame);
+            bp.insert(id, owners[std::size_t(id)], boxes[std::size_t(id)]);
+            held[std::size_t(id)] = 1;
+        }
         std::size_t live = 0;
         for (char h : held) live += std::size_t(h);
         wrong += bp.size() != live;
@@ -154,6 +162,13 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
                 if (held[i] && owners[i] != owner && boxes[i].overlaps(box)) want.push_back(int(i));
             wrong += got != want;
         }
+    }
+    for (const std::int64_t frame : {1000200, 5000200}) {  // past the far ends: counted apart, then in the array
+        bp.expire(frame);
+        std::size_t live = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i) live += std::size_t(held[i] && boxes[i].f1 > frame);
+        wrong += bp.size() != live;
+        if (frame == 1000200) EXPECT_GT(live, 0u);  // the far ones are left
     }
     EXPECT_EQ(wrong, 0);
 }

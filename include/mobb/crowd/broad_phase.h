@@ -125,7 +125,23 @@ private:
     std::vector<Placing> placing_;  // scratch of insert_all()
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
-    std::map<std::int64_t, std::size_t> ending_;                       // items held by the frame they end at
+    // Items held, by the frame they end at: counted in an array for frames [0, kFlatEnds) (a clip's end;
+    // a map costs more than a query), apart for the largest frame (held ground: for good), in a map
+    // for the others.
+    static constexpr std::int64_t kFlatEnds = std::int64_t(1) << 20;
+    std::vector<std::size_t> ending_flat_;
+    std::int64_t counted_from_ = 0;  // the frames of ending_flat_ below have been expired
+    std::size_t ending_never_ = 0;
+    std::map<std::int64_t, std::size_t> ending_;
+    void count_end(std::int64_t f1, int delta) {
+        if (0 <= f1 && std::size_t(f1) < ending_flat_.size())
+            ending_flat_[std::size_t(f1)] += std::size_t(delta);
+        else if (f1 == std::numeric_limits<std::int64_t>::max())
+            ending_never_ += std::size_t(delta);
+        else
+            count_end_rarely(f1, delta);
+    }
+    void count_end_rarely(std::int64_t f1, int delta);
 };
 
 }  // namespace mobb::crowd
