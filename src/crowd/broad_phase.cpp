@@ -101,8 +101,9 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
                 if (!flat(ix, iy)) put(hashed_[key(ix, iy)], p.e);
         placing_.push_back(p);
     }
-    // Bands of columns: a cell belongs to one band, so each cell still receives its items in order.
-    const std::int64_t bands = std::min<std::int64_t>(nx_, 4 * pool.size());
+    // Bands of columns: a cell belongs to one band, so each cell still receives its items in order (one
+    // band for one thread: each band visits every item).
+    const std::int64_t bands = pool.size() > 1 ? std::min<std::int64_t>(nx_, 4 * pool.size()) : 1;
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
         for (const Placing& p : placing_) {
