@@ -787,14 +787,4 @@ bool Choice::affected_by(const BatchGrid& chosen, int below) const {
     return false;
 }
 
-bool Choice::affected_by(const std::vector<SpaceTimeBox>& boxes) const {
-    if (queried_boxes_.empty()) return false;
-    for (const SpaceTimeBox& box : boxes) {
-        if (!queried_all_.overlaps(box)) continue;  // most are far
-        for (const SpaceTimeBox& b : queried_boxes_)
-            if (b.overlaps(box)) return true;
-    }
-    return false;
-}
-
 }  // namespace mobb::crowd

@@ -168,8 +168,6 @@ public:
     /// could change the evaluation: one of its boxes (new pieces, or released ones) overlaps a box this
     /// evaluation queried. Read-only: choice points check in parallel.
     bool affected_by(const BatchGrid& chosen, int below) const;
-    /// The same for any of `boxes` (the frame's re-evaluated plans so far).
-    bool affected_by(const std::vector<SpaceTimeBox>& boxes) const;
 
     int agent() const { return agent_; }
     Outcome outcome() const { return outcome_; }

@@ -70,6 +70,7 @@ public:
           pool_(o.threads),
           broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
           chosen_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+          moved_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
           waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
 
     CrowdRun run(const std::function<void(double)>& progress);
@@ -112,7 +113,7 @@ private:
     std::vector<int> released_;                   // released in this frame, still in broad_
     BatchGrid chosen_;                            // boxes of the current batch's plans, by position
     std::vector<char> stale_;                     // per position: a plan chosen before may change it
-    std::vector<SpaceTimeBox> moved_;             // boxes of plans chosen again on re-evaluation
+    BatchGrid moved_;                             // boxes of the current batch's plans chosen again on re-evaluation
     std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
     std::vector<Agent> agents_;
     std::vector<Piece> pieces_;                      // by broad-phase id
@@ -259,11 +260,13 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     moved_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         Choice& c = slots_[i];
-        if (stale_[i] || c.affected_by(moved_)) {
+        if (stale_[i] || c.affected_by(moved_, int(i))) {
             flush();
             c.evaluate(s);
             ++out_.summary.reevaluated;
-            c.boxes(moved_);
+            boxes_.clear();
+            c.boxes(boxes_);
+            moved_.add(int(i), boxes_);
         }
         commit(c);
     }
