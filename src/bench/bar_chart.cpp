@@ -60,14 +60,21 @@ struct Image {
 
 void write_bar_chart(const std::string& file, const std::string& title, const std::vector<Bar>& bars,
                      const std::string& unit) {
-    // The label column as wide as the longest label, so that no bar is drawn over one.
-    const int scale = 2, row = 34, right = 170, top = 56, span = 600;
-    int labels = 0;
+    // The label column as wide as the longest label, so that no bar is drawn over one; room on the
+    // right for the longest value, and for the title.
+    const int scale = 2, row = 34, top = 56, span = 600;
+    const auto text_width = [&](std::string s) { return stb_easy_font_width(s.data()) * scale; };
+    const auto value_text = [&](double v) {
+        char value[64];
+        std::snprintf(value, sizeof value, "%.3g %s", v, unit.c_str());
+        return std::string(value);
+    };
+    int labels = 0, values = 0;
     for (const Bar& b : bars) {
-        std::string copy = b.label;
-        labels = std::max(labels, stb_easy_font_width(copy.data()) * scale);
+        labels = std::max(labels, text_width(b.label));
+        values = std::max(values, text_width(value_text(b.value)));
     }
-    const int left = 16 + labels + 14, width = left + span + right;
+    const int left = 16 + labels + 14, width = std::max(left + span + 8 + values + 16, 16 + text_width(title) + 16);
     Image img{width, top + row * int(bars.size()) + 24, {}};
     img.rgb.assign(std::size_t(img.w) * std::size_t(img.h) * 3, 255);
     img.text(16, 14, title, scale, 0x202020);
@@ -79,9 +86,7 @@ void write_bar_chart(const std::string& file, const std::string& title, const st
         img.text(16, y + 6, bars[k].label, scale, 0x202020);
         const int len = vmax > 0 ? int(double(span) * bars[k].value / vmax + 0.5) : 0;
         img.fill(left, y + 2, left + std::max(1, len), y + row - 8, k % 2 ? 0x4a7fb5 : 0x2f5f8f);
-        char value[64];
-        std::snprintf(value, sizeof value, "%.3g %s", bars[k].value, unit.c_str());
-        img.text(left + len + 8, y + 6, value, scale, 0x202020);
+        img.text(left + len + 8, y + 6, value_text(bars[k].value), scale, 0x202020);
     }
     if (!stbi_write_png(file.c_str(), img.w, img.h, 3, img.rgb.data(), img.w * 3))
         throw std::runtime_error(file + ": cannot write PNG");
