@@ -168,7 +168,9 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
         std::size_t live = 0;
         for (std::size_t i = 0; i < boxes.size(); ++i) live += std::size_t(held[i] && boxes[i].f1 > frame);
         wrong += bp.size() != live;
-        if (frame == 1000200) EXPECT_GT(live, 0u);  // the far ones are left
+        if (frame == 1000200) {
+            EXPECT_GT(live, 0u);  // the far ones are left
+        }
     }
     EXPECT_EQ(wrong, 0);
 }
