@@ -78,7 +78,8 @@ private:
 
 // ASCII FBX: tokens as Assimp cuts them (whitespace and commas separate, ';' comments to the end of the
 // line, strings in double quotes, braces, a key ends with ':'). A "C" key followed by a string and two
-// whole numbers is a connection.
+// tokens that start with digits is a connection: Assimp reads an id's leading digits and ignores the
+// rest of its token ("1001yy" is object 1001).
 void ascii_scan(const std::string& s, std::vector<Edge>& edges) {
     struct Token {
         char kind;  // 'k' key, 's' string, 'd' data, '{', '}'
@@ -89,9 +90,10 @@ void ascii_scan(const std::string& s, std::vector<Edge>& edges) {
         if (pending.size() >= 4 && pending[1].kind == 's' && pending[2].kind == 'd' && pending[3].kind == 'd') {
             const auto id = [](const std::string& t, std::int64_t& out) {
                 const auto digit = [](char c) { return c >= '0' && c <= '9'; };
-                if (t.empty() || t.size() > 20 || !std::all_of(t.begin(), t.end(), digit)) return false;
+                const std::size_t digits = std::size_t(std::find_if_not(t.begin(), t.end(), digit) - t.begin());
+                if (digits == 0 || digits > 20) return false;  // Assimp refuses those
                 try {
-                    out = static_cast<std::int64_t>(std::stoull(t));  // Assimp's ids are unsigned 64-bit
+                    out = static_cast<std::int64_t>(std::stoull(t.substr(0, digits)));  // unsigned 64-bit ids
                 } catch (const std::out_of_range&) {
                     return false;
                 }
@@ -104,8 +106,10 @@ void ascii_scan(const std::string& s, std::vector<Edge>& edges) {
     };
     const auto token = [&](char kind, std::string text) {
         if (kind == 'k' || kind == '{' || kind == '}') flush();
-        if (kind == 'k' && text == "C") pending.push_back({kind, std::move(text)});
-        else if (!pending.empty() && pending.size() < 4) pending.push_back({kind, std::move(text)});
+        if (kind == 'k' && text == "C")
+            pending.push_back({kind, std::move(text)});
+        else if (!pending.empty() && pending.size() < 4)
+            pending.push_back({kind, std::move(text)});
     };
     std::string word;
     const auto end_word = [&](bool key) {
