@@ -19,10 +19,7 @@ BatchGrid::BatchGrid(double cell, double x0, double y0, double x1, double y1) : 
 void BatchGrid::add(int index, const std::vector<SpaceTimeBox>& boxes) {
     if (boxes.empty()) return;
     SpaceTimeBox box = boxes[0];
-    for (const SpaceTimeBox& b : boxes) {
-        box.x0 = std::min(box.x0, b.x0), box.y0 = std::min(box.y0, b.y0), box.f0 = std::min(box.f0, b.f0);
-        box.x1 = std::max(box.x1, b.x1), box.y1 = std::max(box.y1, b.y1), box.f1 = std::max(box.f1, b.f1);
-    }
+    for (const SpaceTimeBox& b : boxes) box.enclose(b);
     const int e = int(groups_.size());
     groups_.push_back({index, box, boxes_.size(), boxes_.size() + boxes.size()});
     boxes_.insert(boxes_.end(), boxes.begin(), boxes.end());

@@ -771,10 +771,8 @@ void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
 }
 
 void Choice::note_query(const SpaceTimeBox& b) {
-    SpaceTimeBox& all = queried_all_;
-    if (queried_boxes_.empty()) all = b;
-    all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.f0 = std::min(all.f0, b.f0);
-    all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1), all.f1 = std::max(all.f1, b.f1);
+    if (queried_boxes_.empty()) queried_all_ = b;
+    queried_all_.enclose(b);
     queried_boxes_.push_back(b);
 }
 

@@ -2,6 +2,7 @@
 // bounding boxes of the clips agents have committed to, so a candidate clip is queried only against
 // clips that can be near.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -21,6 +22,11 @@ struct SpaceTimeBox {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     std::int64_t f0 = 0, f1 = 0;
 
+    /// Grows to hold `o` too (the union's bounding box).
+    void enclose(const SpaceTimeBox& o) {
+        x0 = std::min(x0, o.x0), y0 = std::min(y0, o.y0), f0 = std::min(f0, o.f0);
+        x1 = std::max(x1, o.x1), y1 = std::max(y1, o.y1), f1 = std::max(f1, o.f1);
+    }
     /// Closed on the ground (touching rectangles overlap), half-open in time.
     bool overlaps(const SpaceTimeBox& o) const {
         return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1 && f0 < o.f1 && o.f0 < f1;
