@@ -210,6 +210,13 @@ bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, 
     return holds_meet(mine.hold, other.hold);
 }
 
+void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out) {
+    s.broad.query(box, owner, out);
+    if (out.size() < 2) return;
+    const std::vector<Piece>& p = s.pieces;
+    std::sort(out.begin(), out.end(), [&](int a, int b) { return p[std::size_t(a)].seq < p[std::size_t(b)].seq; });
+}
+
 bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
     const Polygon& solid = s.solids[std::size_t(k)];
     // Held ground keeps room to turn on the spot from the walls, so a stop is never a trap.
@@ -256,7 +263,7 @@ void Choice::order(const CrowdState& s) {
                                   base_.x + reach, base_.y + reach,
                                   frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
         note_query(around);
-        s.broad.query(around, agent_, near_);
+        query_pieces(s, around, agent_, near_);
         for (int id : near_) {
             const Piece& p = s.pieces[std::size_t(id)];
             if (p.kind == Piece::Held) site.neighbours.push_back({p.hold.x, p.hold.y});
@@ -359,12 +366,12 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
     if (!free && hits != Hits::Count) return false;
     const SpaceTimeBox box = box_of(mine);
     note_query(box);
-    s.broad.query(box, agent_, near_);
+    query_pieces(s, box, agent_, near_);
     near_total_ += near_.size();
     // The piece that refused the last piece tested here first: the candidates of one choice point start
     // at the same place and mostly meet the same neighbour (same answers, fewer queries before the hit).
-    const auto last = std::lower_bound(near_.begin(), near_.end(), last_hit_);
-    if (last != near_.end() && *last == last_hit_) std::rotate(near_.begin(), last, last + 1);
+    const auto last = std::find(near_.begin(), near_.end(), last_hit_);
+    if (last != near_.end()) std::rotate(near_.begin(), last, last + 1);
     auto& against = point_.candidates[std::size_t(k)].against;
     if (s.options.record_queries && against.capacity() < against.size() + near_.size())
         against.reserve(std::max(2 * against.capacity(), against.size() + near_.size()));
@@ -739,7 +746,7 @@ bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
     }
     const SpaceTimeBox box = box_of(piece);
     note_query(box);
-    s.broad.query(box, piece.agent, near_);
+    query_pieces(s, box, piece.agent, near_);
     for (int id : near_) {
         if (std::find(excluded_.begin(), excluded_.end(), id) != excluded_.end()) continue;
         QueryStats st;

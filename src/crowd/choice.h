@@ -80,11 +80,12 @@ struct Plan {
 /// (Walls and obstacles never change: they have a grid of their own, CrowdState::solid_grid.)
 struct Piece {
     enum Kind : std::uint8_t { Clip, Held } kind = Clip;
-    int agent = -1;    ///< owner
-    int commit = 0;    ///< the choice point (record order) whose plan holds it
-    int index = 0;     ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
-    PlannedClip clip;  ///< Clip
-    Hold hold;         ///< Held
+    int agent = -1;        ///< owner
+    int commit = 0;        ///< the choice point (record order) whose plan holds it
+    int index = 0;         ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
+    std::int64_t seq = 0;  ///< pieces placed before it have smaller ones (broad-phase ids are reused)
+    PlannedClip clip;      ///< Clip
+    Hold hold;             ///< Held
 };
 
 /// The space-time box a piece takes in the broad phase: its clip's, or its held disk's bounds from its
@@ -261,6 +262,11 @@ Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int
 /// phase; a clip and held ground by their samples overlapping the held disk from its first frame on;
 /// two held grounds by their disks.
 bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats);
+
+/// The broad-phase ids of the live pieces of agents other than `owner` whose boxes overlap `box`
+/// (BroadPhase::query), in the order they were placed (Piece::seq): answers do not depend on which ids
+/// were reused.
+void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out);
 /// Whether it meets solid k: a clip's samples by disk_overlaps(); held ground when the solid is nearer
 /// than EscapeTable::wall_clearance.
 bool meets_solid(const CrowdState& s, const Piece& mine, int k);

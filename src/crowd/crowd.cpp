@@ -117,6 +117,11 @@ private:
     std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
     std::vector<Agent> agents_;
     std::vector<Piece> pieces_;                      // by broad-phase id
+    std::int64_t placed_ = 0;                        // pieces placed so far (the next Piece::seq)
+    std::vector<int> unused_;                        // ids out of the broad phase, to reuse
+    std::vector<int> left_;                          // ids released in this frame, unused from the next
+    std::vector<std::vector<int>> ending_;           // per frame: ids of the committed clips ending then
+    std::int64_t expired_until_ = 0;                 // ending_ below it went to unused_
     std::vector<std::vector<int>> due_;              // per frame: agents at a choice point
     std::vector<Choice> slots_;                      // one per choice point of a batch, reused
     BroadPhase waiting_;                             // agents that waited kGiveWay or longer: their ground, by agent id
@@ -190,10 +195,21 @@ void Simulation::place_agents() {
     }
 }
 
+// A piece under an unused id: one that left the broad phase before this frame, else a new one.
 int Simulation::add_piece(const Piece& piece, bool pending) {
-    const int id = int(pieces_.size());
-    pieces_.push_back(piece);
+    int id = int(pieces_.size());
+    if (unused_.empty()) {
+        pieces_.push_back(piece);
+    } else {
+        id = unused_.back();
+        unused_.pop_back();
+        pieces_[std::size_t(id)] = piece;
+    }
+    pieces_[std::size_t(id)].seq = placed_++;
     const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
+    // A committed clip leaves by expiring (BroadPhase::expire); the plans' pieces are released.
+    if (piece.kind == Piece::Clip && piece.index == 0 && item.box.f1 < std::int64_t(ending_.size()))
+        ending_[std::size_t(item.box.f1)].push_back(id);
     if (pending)
         pending_.push_back(item);
     else
@@ -272,11 +288,14 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     }
     flush();
     apply_waiting();
+    unused_.insert(unused_.end(), left_.begin(), left_.end());
+    left_.clear();
 }
 
 // Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
 void Simulation::flush() {
     for (int id : released_) broad_.remove(id);
+    left_.insert(left_.end(), released_.begin(), released_.end());
     released_.clear();
     broad_.insert_all(pending_, pool_);
     pending_.clear();
@@ -422,6 +441,7 @@ void Simulation::commit(Choice& c) {
 void Simulation::run_frames(const std::function<void(double)>& progress) {
     const std::int64_t frames = out_.record.frames;
     due_.assign(std::size_t(frames), {});
+    ending_.assign(std::size_t(frames), {});
     for (int a = 0; a < int(agents_.size()); ++a) due_[0].push_back(a);
     in_waiting_.assign(agents_.size(), 0);
     waiting_at_.assign(agents_.size(), {0.0, 0.0});
@@ -431,7 +451,6 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     const double expected = double(agents_.size()) *
                             (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
     out_.record.choices.reserve(std::size_t(expected * 1.2));
-    pieces_.reserve(std::size_t(expected * (reserves(o_) ? 3.6 : 1.2)));
     std::int64_t reported = -1;
     for (std::int64_t f = 0; f < frames; ++f) {
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
@@ -439,6 +458,12 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
         std::sort(batch.begin(), batch.end());  // commit order: agent ids within a frame
         const auto start = Clock::now();
         broad_.expire(f);  // clips ending by now cannot overlap a candidate starting now
+        for (std::int64_t e = expired_until_; e <= f; ++e) {
+            std::vector<int>& ids = ending_[std::size_t(e)];
+            unused_.insert(unused_.end(), ids.begin(), ids.end());
+            std::vector<int>().swap(ids);
+        }
+        expired_until_ = f + 1;
         run_batch(f, batch);
         out_.summary.cd_seconds += since(start);
         if (progress && f / 30 != reported) {

@@ -54,7 +54,7 @@ public:
     BroadPhase(double cell, double x0, double y0, double x1, double y1);
 
     /// Adds (or replaces) item `id` >= 0; throws std::invalid_argument for a negative id. Ids index a
-    /// table, so keep them dense.
+    /// table, so keep them dense: the id of an item removed or expired may be used again.
     void insert(int id, int owner, const SpaceTimeBox& box);
     struct Insertion {
         int id = 0, owner = -1;
