@@ -145,7 +145,7 @@ void BroadPhase::remove(int id) {
     count_end(item.box.f1, -1);
 }
 
-void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const {
+void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out, bool ascending) const {
     out.clear();
     const std::int64_t qx = index_x(box.x0), qy = index_y(box.y0), qx1 = index_x(box.x1), qy1 = index_y(box.y1);
     const std::int64_t expired = expired_;
@@ -182,7 +182,7 @@ void BroadPhase::query(const SpaceTimeBox& box, int owner, std::vector<int>& out
             const Cell* column = &flat_[std::size_t(ix * ny_)];
             for (std::int64_t iy = qy; iy <= qy1; ++iy) scan(column[iy], ix, iy);
         }
-        if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
+        if (ascending && !std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
         return;
     }
     for (std::int64_t ix = qx; ix <= qx1; ++ix)

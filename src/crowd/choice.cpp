@@ -211,7 +211,7 @@ bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, 
 }
 
 void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out) {
-    s.broad.query(box, owner, out);
+    s.broad.query(box, owner, out, false);  // ordered here, by seq
     if (out.size() < 2) return;
     const std::vector<Piece>& p = s.pieces;
     std::sort(out.begin(), out.end(), [&](int a, int b) { return p[std::size_t(a)].seq < p[std::size_t(b)].seq; });

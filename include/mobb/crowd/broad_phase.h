@@ -71,8 +71,9 @@ public:
     /// when an item is next inserted into them, which is much cheaper than remove() per item (the
     /// crowd expires every committed clip once). `frame` never decreases: smaller values are ignored.
     void expire(std::int64_t frame);
-    /// Ids of items of other owners whose boxes overlap `box` (SpaceTimeBox::overlaps), ascending.
-    void query(const SpaceTimeBox& box, int owner, std::vector<int>& out) const;
+    /// Ids of items of other owners whose boxes overlap `box` (SpaceTimeBox::overlaps), each once:
+    /// ascending, or in no set order when `ascending` is false (for a caller that orders them its own way).
+    void query(const SpaceTimeBox& box, int owner, std::vector<int>& out, bool ascending = true) const;
     /// Items held.
     std::size_t size() const { return live_; }
 
