@@ -53,8 +53,8 @@ bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const Pla
     return false;
 }
 
-bool holds_meet(const Hold& a, const Hold& b) {
-    const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+bool holds_meet(const Hold& a, const Hold& b, double gap = 0) {
+    const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r + gap;
     return dx * dx + dy * dy < r * r;
 }
 
@@ -457,6 +457,36 @@ bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const 
     });
 }
 
+// Which routes of candidate k would hold ground within kStandingGap of another agent's (bit r: route r),
+// leaving out the held ground the agent already stands that close to (it could not stop otherwise).
+std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
+    const int clip = placed_[std::size_t(k)].clip;
+    const auto& ends = s.escapes.ends[std::size_t(clip)];
+    if (ends.empty()) return 0;
+    SpaceTimeBox box{1e300, 1e300, -1e300, -1e300, frame_, kForever};
+    Hold at[EscapeTable::kMaxRoutes];
+    for (std::size_t r = 0; r < ends.size(); ++r) {
+        const auto& [x, y] = ends[r];
+        at[r] = {base_m_.apply_x(x, y), base_m_.apply_y(x, y),
+                 s.escapes.hold_of(s.escapes.routes[std::size_t(clip)][r].back()), frame_};
+        box.x0 = std::min(box.x0, at[r].x), box.y0 = std::min(box.y0, at[r].y);
+        box.x1 = std::max(box.x1, at[r].x), box.y1 = std::max(box.y1, at[r].y);
+    }
+    const double reach = s.escapes.hold_radius + kStandingGap;
+    box.x0 -= reach, box.y0 -= reach, box.x1 += reach, box.y1 += reach;
+    note_query(box);
+    query_pieces(s, box, agent_, near_);
+    const Hold here{base_.x, base_.y, s.escapes.hold_radius, 0};
+    std::uint32_t crowded = 0;
+    for (int id : near_) {
+        const Piece& p = s.pieces[std::size_t(id)];
+        if (p.kind != Piece::Held || holds_meet(here, p.hold, kStandingGap)) continue;
+        for (std::size_t r = 0; r < ends.size(); ++r)
+            if (holds_meet(at[r], p.hold, kStandingGap)) crowded |= 1u << r;
+    }
+    return crowded;
+}
+
 void Choice::take(int k, Outcome how) {
     const Placed& c = placed_[std::size_t(k)];
     taken_ = {c.clip, c.place, frame_, c.box, base_m_};
@@ -592,13 +622,17 @@ void Choice::evaluate(const CrowdState& s) {
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, Hits::Stop)) continue;
+        const auto& routes = s.escapes.routes[std::size_t(c.clip)];
+        const std::uint32_t crowded = a.goal ? 0 : crowded_routes(s, k);
         const std::vector<int>* refused_route = nullptr;
         std::size_t refused = 0;
-        for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
+        for (std::size_t r = 0; r < routes.size(); ++r) {
+            const std::vector<int>& route = routes[r];
             // The same escape clip at the same place as one refused already.
             if (refused > 0 && route.size() > refused &&
                 std::equal(route.begin(), route.begin() + std::ptrdiff_t(refused), refused_route->begin()))
                 continue;
+            if (crowded >> r & 1) continue;  // it would stop too close to another (kStandingGap)
             refused_route = &route;
             if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
             if (s.escapes.moves[std::size_t(c.clip)] && passes_waiting(s, k)) {
@@ -611,6 +645,7 @@ void Choice::evaluate(const CrowdState& s) {
             take(k, stops ? Outcome::Arrived : Outcome::Candidate);
             return;
         }
+        point_.candidates.back().crowded = crowded != 0 && deferred_ != k;
     }
     if (deferred_ >= 0) return take_deferred();
     if (right_of_way && take_right_of_way(s, int(order_.size()))) return;

@@ -129,7 +129,8 @@ enum class Outcome : std::uint8_t {
     Arrived,     ///< the agent is at its goal: it stands there (a free idle clip, then its held ground)
     Fallback,    ///< nothing free and no escape left: the least bad candidate
     RightOfWay,  ///< none was free, but the agent had waited long enough and a moving candidate was free once
-                 ///< the other agents whose reservations it met took other ways to stop (Reroute)
+                 ///< the other agents whose reservations it met took other ways to stop (Reroute), or
+                 ///< free but for the standing gap (no Reroute then)
 };
 
 /// The right of way: an agent that has not moved for kRightOfWay seconds may take a moving candidate whose
@@ -139,6 +140,8 @@ enum class Outcome : std::uint8_t {
 /// the new plan. The other agent then reserves that route instead: safe as before, it just stops
 /// elsewhere. (Priority to the agent that waited longest, as in Okumura et al.'s priority inheritance
 /// with backtracking, PIBT 2019: the higher-priority agent pushes the lower ones, which plan again.)
+/// The right of way also passes the standing gap (kStandingGap): one that waited may stop close.
+/// (Keeping the gap there too made the idle tail longer: bench/results/README.md.)
 inline constexpr double kRightOfWay = 2.0;  // seconds without a clip that moves
 inline constexpr std::size_t kMaxYielding = 2;
 
@@ -148,6 +151,16 @@ inline constexpr std::size_t kMaxYielding = 2;
 /// ground they would walk into stays open. It only reorders free candidates: nothing is refused for it.
 inline constexpr double kGiveWay = kRightOfWay;  // seconds
 inline constexpr double kGiveWayReach = 2.5;     // metres
+
+/// Room between standing places: a wandering agent (one without a goal) takes no candidate along an
+/// escape route whose held ground would come within kStandingGap metres, beyond what the disks need, of
+/// another agent's held ground - unless it already stands that close to that ground (the test is then
+/// left out: it could never stop otherwise). Agents that stop leave room to pass between them instead
+/// of packing into knots whose every walk is refused and that untangle one slow clip at a time (the
+/// longest idle stretches: bench/results/README.md). Goal agents converge on purpose (a doorway, a
+/// circle's centre), where stopping close behind another is queueing; the right of way passes the gap.
+/// A preference of the choice, not a collision: contacts keep the exact test.
+inline constexpr double kStandingGap = 0.45;  // metres
 
 /// Another agent's plan that gives way to a choice point's: what it reserves from now on, and the boxes
 /// of the pieces it releases.
@@ -204,6 +217,7 @@ private:
     void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
     const Placed& place(const CrowdState& s, int k);
     bool free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits);
+    std::uint32_t crowded_routes(const CrowdState& s, int k);
     bool may_yield(const CrowdState& s, const Piece& other) const;
     bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);

@@ -53,9 +53,22 @@ void routes_from(const MotionGraph& g, const std::vector<ClipKind>& kind, const 
     }
 }
 
+// Where route `route` after clip `clip` holds its ground, in the clip's frame: chained as the crowd places
+// it (build_plan in choice.cpp).
+std::array<double, 2> route_end(const MotionGraph& g, int clip, const std::vector<int>& route) {
+    Placement p;
+    int prev = clip;
+    for (int next : route) {
+        p = g.next(p, prev);
+        prev = next;
+    }
+    return {p.x, p.y};
+}
+
 }  // namespace
 
 EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_routes) {
+    if (max_routes > kMaxRoutes) throw std::invalid_argument("crowd: more escape routes per clip than kMaxRoutes");
     EscapeTable t;
     for (int c = 0; c < int(g.clips.size()); ++c) {
         const GraphClip& clip = g.clips[std::size_t(c)];
@@ -80,6 +93,10 @@ EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_rout
         for (int length = steps[std::size_t(c)]; length <= steps[std::size_t(c)] + 1 && length <= max_steps; ++length)
             routes_from(g, t.kind, steps, c, length, max_routes, chain, t.routes[std::size_t(c)]);
     }
+    t.ends.resize(g.clips.size());
+    for (int c = 0; c < int(g.clips.size()); ++c)
+        for (const std::vector<int>& route : t.routes[std::size_t(c)])
+            t.ends[std::size_t(c)].push_back(route_end(g, c, route));
     return t;
 }
 

@@ -5,6 +5,7 @@
 // someone (Lau and Kuffner's behaviour planning keeps such a safe option; Snap-Together Motion's hub
 // poses make the stops reachable).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "mobb/crowd/motion_graph.h"
@@ -22,6 +23,9 @@ struct EscapeTable {
     /// then one clip longer, at most max_routes of them; none when an idle clip is more than max_steps
     /// clips away.
     std::vector<std::vector<std::vector<int>>> routes;
+    /// Per clip, per route: where the route's held ground is, in the clip's own frame (metres: the clip
+    /// placed at the origin facing +x), so a choice point places it without chaining the route.
+    std::vector<std::vector<std::array<double, 2>>> ends;
     double hold_radius = 0;  ///< hold_of() the largest idle clip: any idle clip fits
     /// How far held ground stays from walls and obstacles: room for any clip in place (turning on the
     /// spot) and a margin, so an agent that stops can always turn and walk away.
@@ -31,7 +35,9 @@ struct EscapeTable {
     /// micrometre wider so that placing it cannot round a disk out.
     double hold_of(int idle) const { return footprint[std::size_t(idle)] * (1 + 1e-9) + 1e-6; }
 
-    /// Throws std::invalid_argument when the graph has no idle clip.
+    static constexpr int kMaxRoutes = 32;  ///< a choice point marks a clip's routes in 32 bits
+
+    /// Throws std::invalid_argument when the graph has no idle clip or max_routes > kMaxRoutes.
     static EscapeTable build(const MotionGraph& graph, int max_steps = 3, int max_routes = 16);
 };
 

@@ -230,6 +230,7 @@ J choice_json(const ChoicePoint& c, double dt) {
         for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.commit, q.piece, q.mine, int(q.hit)});
         cands.push_back(
             {{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits}, {"against", against}});
+        if (k.crowded) cands.back()["crowded"] = true;
     }
     return {{"agent", c.agent},     {"frame", c.frame},     {"t", util::rounded(double(c.frame) * dt, 9)},
             {"taken", c.taken},     {"outcome", c.outcome}, {"fallback", c.fallback},
@@ -330,7 +331,8 @@ ChoicePoint choice_of(const nlohmann::json& c, const Record& r) {
                        k.at("outside").get<bool>(),
                        k.at("queries").get<int>(),
                        k.at("hits").get<int>(),
-                       {}};
+                       {},
+                       k.value("crowded", false)};
         for (const auto& q : k.at("against")) {
             const CandidateQuery cq{q.at(0).get<int>(), q.at(1).get<int>(), q.at(2).get<int>(), q.at(3).get<int>(),
                                     q.at(4).get<int>() != 0};

@@ -466,7 +466,7 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     CrowdView& v = *s.crowd;
     const crowd::Candidate& cand = c.candidates[std::size_t(k)];
     const bool taken = cand.clip == c.taken;
-    const bool ok = !cand.outside && cand.hits == 0;
+    const bool ok = !cand.outside && cand.hits == 0 && !cand.crowded;
     const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f)
                           : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
                                 : glm::vec3(0.9f, 0.2f, 0.2f);
@@ -475,7 +475,10 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
                   taken ? "taken"
                   : ok  ? "clear"
                         : "rejected",
-                  cand.outside ? " (leaves the world or meets a wall)" : "", cand.queries, cand.hits, k);
+                  cand.outside   ? " (leaves the world or meets a wall)"
+                  : cand.crowded ? " (would stop too close to a standing agent)"
+                                 : "",
+                  cand.queries, cand.hits, k);
     ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
     // The candidate whose query is open stays unfolded.
     if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);

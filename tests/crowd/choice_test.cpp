@@ -2,6 +2,8 @@
 // its extreme vertices, is exactly the box of every hull vertex placed (the decisions depend on it).
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,32 @@ TEST(PlaceClip, BoxIsTheBoxOfEveryHullVertexForTheGraphsClips) {
     for (const ClipOutline& o : outlines)
         for (int k = 0; k < 2000; ++k) expect_same_box(o, random_placement(rng), wrong);
     EXPECT_EQ(wrong, 0);
+}
+
+// A route's held ground placed from the table (EscapeTable::ends) is where chaining the route's clips from
+// the candidate's placement puts it, as the crowd's plans do.
+TEST(EscapeTable, RouteEndsAreWhereTheRoutesHoldGround) {
+    const MotionGraph g = load_graph(kGraph);
+    const EscapeTable t = EscapeTable::build(g);
+    std::mt19937_64 rng(5);
+    int routes = 0;
+    double worst = 0;
+    for (int c = 0; c < int(g.clips.size()); ++c) {
+        ASSERT_EQ(t.ends[std::size_t(c)].size(), t.routes[std::size_t(c)].size());
+        for (std::size_t r = 0; r < t.routes[std::size_t(c)].size(); ++r) {
+            const Placement start = random_placement(rng);
+            Placement p = start;
+            int prev = c;
+            for (int next : t.routes[std::size_t(c)][r]) p = g.next(p, std::exchange(prev, next));
+            const Rigid2 m = Rigid2::of(start);
+            const auto& [x, y] = t.ends[std::size_t(c)][r];
+            worst = std::max(worst, std::hypot(m.apply_x(x, y) - p.x, m.apply_y(x, y) - p.y));
+            ++routes;
+        }
+    }
+    EXPECT_GT(routes, 500);
+    EXPECT_LT(worst, 1e-9);
+    EXPECT_THROW(EscapeTable::build(g, 3, EscapeTable::kMaxRoutes + 1), std::invalid_argument);
 }
 
 // Hulls with near-ties: many points on a circle (nearly collinear neighbours), a thin sliver, tiny and

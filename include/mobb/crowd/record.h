@@ -21,7 +21,8 @@
 //                   "plan": {"escape": [[clip, frame, x, y, theta], ...], "hold": [x, y, r, frame],
 //                            "reroutes": [ {"agent": b, "escape": [...], "hold": [...]}, ... ]},
 //                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h,
-//                                    "against": [ [agent, commit, piece, mine, hit], ... ]}, ... ]}, ... ]
+//                                    "against": [ [agent, commit, piece, mine, hit], ... ],
+//                                    "crowded": true (when so)}, ... ]}, ... ]
 //   }
 // A candidate's "hits" counts what it collides with among the queries run: in the avoiding modes its
 // queries stop at its first hit (and run in full at a fallback); in random mode they all run. "against"
@@ -33,7 +34,10 @@
 // (the obstacles in order, then the four walls when walled). "outside": in random mode the candidate's
 // root leaves the world; otherwise it met a wall or an obstacle. "reroutes" (only at a "right of way"
 // choice point) are the plans other agents reserve from then on instead of theirs: their pieces are
-// named by that choice point's index and their own agent.
+// named by that choice point's index and their own agent. "crowded": refused, and some of its routes
+// were left out untested because they would hold ground within the standing gap of another agent's (a
+// wandering agent's preference, kStandingGap in src/crowd/choice.h, not a collision): a refused candidate
+// without hits was refused for that alone.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -73,6 +77,7 @@ struct Candidate {
     int queries = 0;                      ///< narrow-phase queries run for it
     int hits = 0;                         ///< what it collides with among them (see the layout note)
     std::vector<CandidateQuery> against;  ///< its queries, in the order run
+    bool crowded = false;                 ///< refused, routes left out for the standing gap (layout note)
 };
 
 /// A clip placed in the world from global frame `frame` on.
