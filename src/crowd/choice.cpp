@@ -463,7 +463,9 @@ std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
     const int clip = placed_[std::size_t(k)].clip;
     const auto& ends = s.escapes.ends[std::size_t(clip)];
     if (ends.empty()) return 0;
-    SpaceTimeBox box{1e300, 1e300, -1e300, -1e300, frame_, kForever};
+    // Held ground lasts for good and clips do not: asked at the end of time, the broad phase answers with
+    // held ground alone.
+    SpaceTimeBox box{1e300, 1e300, -1e300, -1e300, kForever - 1, kForever};
     Hold at[EscapeTable::kMaxRoutes];
     for (std::size_t r = 0; r < ends.size(); ++r) {
         const auto& [x, y] = ends[r];
