@@ -470,20 +470,23 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f)
                           : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
                                 : glm::vec3(0.9f, 0.2f, 0.2f);
+    // Why it was refused, short enough for the row; hovering it gives the whole reason.
+    const char* why = cand.outside ? " (wall)" : cand.crowded ? " (too close)" : "";
+    const char* why_long = cand.outside   ? "Leaves the world (random mode) or meets a wall or an obstacle."
+                           : cand.crowded ? "Would stop too close to where another agent stands (the standing gap)."
+                                          : nullptr;
     char label[128];
     std::snprintf(label, sizeof label, "clip %d: %s%s, %d queries, %d hits###cand%d", cand.clip,
                   taken ? "taken"
                   : ok  ? "clear"
                         : "rejected",
-                  cand.outside   ? " (leaves the world or meets a wall)"
-                  : cand.crowded ? " (would stop too close to a standing agent)"
-                                 : "",
-                  cand.queries, cand.hits, k);
+                  why, cand.queries, cand.hits, k);
     ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
     // The candidate whose query is open stays unfolded.
     if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
     const bool open = ImGui::TreeNodeEx(label, cand.against.empty() ? ImGuiTreeNodeFlags_Leaf : 0);
     ImGui::PopStyleColor();
+    if (why_long && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", why_long);
     if (!open) return;
     for (std::size_t j = 0; j < cand.against.size(); ++j) {
         const crowd::CandidateQuery& q = cand.against[j];
