@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "cli.h"
 #include "context_glfw.h"
@@ -47,8 +48,18 @@ void centre_clips(State& s) {
     viewer::run_query(s);
 }
 
-void apply_step(State& s, int step) {
-    if (step >= 0) s.scene.step = step;
+/// `--step K` (negative: not given): a step of the query's trace. Throws InputError naming the option when
+/// there is no trace or it has no step K.
+void apply_step(State& s, int step, const std::string& command) {
+    if (step < 0) return;
+    const std::string option = command + ": --step " + std::to_string(step);
+    if (!s.queried || s.trace.empty())
+        throw InputError(option + ": no query trace to step through" +
+                         (s.crowd ? " (open one with --choice and --candidate)" : " (the scene has no query)"));
+    if (std::size_t(step) >= s.trace.size())
+        throw InputError(option + ": the trace has " + std::to_string(s.trace.size()) + " steps (0 to " +
+                         std::to_string(s.trace.size() - 1) + ")");
+    s.scene.step = step;
 }
 
 /// Whether the command line names clip files (any format load_clip reads) rather than one scene (.json).
@@ -88,11 +99,22 @@ void apply_colouring(State& s, const std::string& disks, const std::string& boxe
 
 /// A recorded crowd's state for `render --crowd` and `view --crowd`: the agent's choice points listed,
 /// the cursor at `time` (negative: the middle of the run), the camera from the space-time side.
+/// Throws InputError naming --agent or --time when the record has no such agent or ends before `time`.
 State crowd_state(const std::string& record, float asp, int agent, double time) {
     State s = viewer::load_crowd_state(record, asp);
-    viewer::select_choice(s, agent, -1);
     const auto& r = s.crowd->record;
-    s.scene.cursor = time >= 0 ? time : 0.5 * double(r.frames) * r.dt;
+    if (agent < 0 || std::size_t(agent) >= r.tracks.size())
+        throw InputError("render: --agent " + std::to_string(agent) + ": the record has " +
+                         std::to_string(r.tracks.size()) + " agents (0 to " + std::to_string(r.tracks.size() - 1) +
+                         ")");
+    const double end = double(r.frames) * r.dt;
+    if (time > end) {
+        std::ostringstream m;
+        m << "render: --time " << time << ": the record ends at " << end << " s";
+        throw InputError(m.str());
+    }
+    viewer::select_choice(s, agent, -1);
+    s.scene.cursor = time >= 0 ? time : 0.5 * end;
     return s;
 }
 
@@ -109,14 +131,24 @@ void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_
         throw InputError("render: --choice " + std::to_string(choice) + ": the record has " +
                          std::to_string(r.choices.size()) + " choice points");
     viewer::select_choice(s, -1, choice);
-    if (!keep_time) s.scene.cursor = double(r.choices[std::size_t(choice)].frame) * r.dt;
+    const crowd::ChoicePoint& c = r.choices[std::size_t(choice)];
+    if (!keep_time) s.scene.cursor = double(c.frame) * r.dt;
     if (candidate < 0) {
         if (query >= 0) throw InputError("render: --query needs --candidate");
         return;
     }
+    if (std::size_t(candidate) >= c.candidates.size())
+        throw InputError("render: --candidate " + std::to_string(candidate) + ": choice point " +
+                         std::to_string(choice) + " has " + std::to_string(c.candidates.size()) + " candidates");
+    const std::size_t queries = c.candidates[std::size_t(candidate)].against.size();
+    if (query >= 0 && std::size_t(query) >= queries)
+        throw InputError("render: --query " + std::to_string(query) + ": candidate " + std::to_string(candidate) +
+                         " of choice point " + std::to_string(choice) + " lists " + std::to_string(queries) +
+                         " queries");
     std::string message;
     if (!viewer::open_candidate_query(s, candidate, std::max(query, 0), &message))
-        throw InputError("render: " + message);
+        throw InputError("render: --candidate " + std::to_string(candidate) + " --query " +
+                         std::to_string(std::max(query, 0)) + ": " + message);
 }
 
 /// `render --ui --pick CLIP:SAMPLE [--pick ..] --panel NAME ..`: the panels' state the image starts
@@ -210,7 +242,7 @@ void add_render(CLI::App& app, int& exit_code) {
                 const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
                 State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
                 open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
-                apply_step(s, a->step);
+                apply_step(s, a->step, "render");
                 apply_colouring(s, a->disk_colour, a->box_colour);
                 if (a->window >= 0) s.scene.window = a->window;
                 if (a->top) {
@@ -238,7 +270,7 @@ void add_render(CLI::App& app, int& exit_code) {
             const int h = a->height ? a->height : a->bench ? 720 : scene.height;
             State s = viewer::load_state(scene, aspect(w, h));
             if (files) arrange_clip_files(s, aspect(w, h));
-            apply_step(s, a->step);
+            apply_step(s, a->step, "render");
             apply_colouring(s, a->disk_colour, a->box_colour);
             if (a->window >= 0) s.scene.window = a->window;
             if (a->bench) {
@@ -353,7 +385,7 @@ void add_export(CLI::App& app, int& exit_code) {
         exit_code = guarded([&](std::ostream& out) {
             const Scene scene = viewer::load_scene(*scene_file);
             State s = viewer::load_state(scene, aspect(scene.width, scene.height));
-            apply_step(s, *step);
+            apply_step(s, *step, "export-gltf");
             const viewer::GltfSummary g = viewer::export_gltf(s, *out_file);
             out << *out_file << ": " << g.meshes << " meshes, " << g.nodes << " nodes, " << g.materials
                 << " materials\n";

@@ -65,6 +65,13 @@ State load_crowd_state(const std::string& record_file, float aspect) {
     } catch (const std::exception& e) {
         view->graph_error = e.what();
     }
+    if (view->graph) {
+        try {  // a graph that reads but lacks the record's clips is not the record's graph
+            crowd::check_graph_clips(r, view->graph->clips.size());
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(record_file + ": " + e.what());
+        }
+    }
     State s;
     s.scene.query_a = s.scene.query_b = -1;
     s.scene.layers.skeletons = true;

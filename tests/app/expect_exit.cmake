@@ -1,4 +1,5 @@
-# Runs COMMAND and checks its exit code is EXPECT; a failing command must leave no file at OUT.
+# Runs COMMAND and checks its exit code is EXPECT; a failing command must leave no file at OUT, and bad
+# input (EXPECT 1) nothing on stdout and one line on stderr, holding the text MATCH when given.
 # With DATA set, skips (exit 77) unless DATA/cmu holds the mocap clips (fails if MOBB_REQUIRE_DATA=1).
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 file(REMOVE ${OUT})
@@ -15,5 +16,14 @@ if(NOT EXPECT EQUAL 0)
   list(LENGTH lines n)
   if(EXPECT EQUAL 1 AND NOT n EQUAL 1)
     message(FATAL_ERROR "expected one error line, got ${n}")
+  endif()
+  if(EXPECT EQUAL 1 AND NOT out STREQUAL "")
+    message(FATAL_ERROR "bad input printed on stdout")
+  endif()
+  if(DEFINED MATCH)
+    string(FIND "${err}" "${MATCH}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "stderr does not hold \"${MATCH}\"")
+    endif()
   endif()
 endif()

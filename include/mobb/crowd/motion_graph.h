@@ -63,8 +63,11 @@ inline constexpr double kIdleTurn = 0.1;                           // radians (b
 ClipKind kind_of(const GraphClip& clip, int id);
 const char* to_string(ClipKind kind);
 
+/// The rates a graph may have (frames per second): those of motion capture.
+inline constexpr double kMinGraphFps = 1, kMaxGraphFps = 1000;
+
 struct MotionGraph {
-    double fps = 30;                  ///< every clip shares dt = 1 / fps
+    double fps = 30;                  ///< every clip shares dt = 1 / fps, kMinGraphFps..kMaxGraphFps
     double threshold = 0;             ///< pose distance (metres, RMS) for transitions and edges
     int window = 5;                   ///< frames in a pose-distance window
     std::vector<std::string> joints;  ///< joint names compared (first source's skeleton)
@@ -83,7 +86,7 @@ struct MotionGraph {
 };
 
 struct GraphBuildOptions {
-    double fps = 30;          ///< resample every input (the paper's clips: 63 frames in 2.1 s)
+    double fps = 30;          ///< resample every input (the paper's clips: 63 frames in 2.1 s); 1 to 1000
     double threshold = 0.12;  ///< metres, RMS pose distance
     int window = 5;           ///< frames
     double min_clip = 1.0, max_clip = 4.0, target_clip = 2.0;  ///< clip lengths, seconds
@@ -114,8 +117,17 @@ std::string default_graph_file();
 
 /// JSON of a graph (person-readable: one clip per object, a path sample per line) and back.
 std::string graph_to_text(const MotionGraph& graph);
+/// Every field is checked against what it means, and the first problem throws GraphError
+/// "WHERE.FIELD: message" (one line): fps in kMinGraphFps..kMaxGraphFps (and dt, when given, 1 / fps);
+/// threshold > 0; window >= 1; sources: frame_begin >= 0, frame_end -1 or after it, samples >= 1; per clip:
+/// id its index, source in range, samples [first, exit] with 0 <= first < exit < the source's samples,
+/// frames [first, exit] in order inside the source's range, exit within 1 km with a heading in [-pi, pi],
+/// idle_snap only on an identity exit and within kIdleExit / kIdleTurn, successors existing clips listed
+/// once, distances one per successor in [0, threshold], path exit - first samples within 1 km with
+/// 0 <= r <= 10 m starting at the origin, duration its duration; stats (when given) what the clips add up
+/// to. Integers must be integers; numbers finite.
 MotionGraph graph_from_json(const nlohmann::json& j, const std::string& where);
-/// Reads and validates a graph file. Throws GraphError "FILE: ..." on any problem.
+/// Reads and validates a graph file (graph_from_json). Throws GraphError "FILE: graph...: ..." on any problem.
 MotionGraph load_graph(const std::string& file);
 void save_graph(const MotionGraph& graph, const std::string& file);
 

@@ -159,7 +159,22 @@ std::optional<HeldGround> query_hold(const Record& record, const CandidateQuery&
 /// given.
 std::string record_to_text(const Record& record, const std::string& summary_json, const std::string& metrics_json = "");
 
-/// Reads a record file. Throws std::runtime_error "FILE: ..." on any problem.
+/// Reads a record file. Throws std::runtime_error "FILE: PLACE: message" (one line, PLACE like
+/// tracks[2].samples[7][3]) on any problem. Every field is checked against what it means: dt a frame of a
+/// graph (1 / kMaxGraphFps to 1 / kMinGraphFps s), frames >= 1, positions within 1000 km and radii in
+/// [0, 10] m, a world of positive area, obstacles of two or more vertices, "agents" the tracks' count; per
+/// track clips in time order from frame 0 (start < frames, t0 = start * dt, commits in order, each -1 or a
+/// choice point), one sample [t, x, y, r] per frame with t = k * dt; per
+/// choice point an agent and a frame of the record (t = frame * dt), a known outcome, counts not negative,
+/// finite escape places and held ground (r >= 0), reroutes of existing agents, candidates with
+/// 0 <= hits <= queries and no more queries listed than run, each naming a wall or obstacle of the world, an
+/// agent's starting ground or an earlier choice point. Clip ids are checked against a graph by
+/// check_graph_clips.
 Record load_record(const std::string& file);
+
+/// Throws std::runtime_error "PLACE: clip N is not in the graph GRAPH (M clips)" for the first clip id of the
+/// record (a track's clip, a choice point's taken, candidate or escape clip) that a graph of `clips` clips
+/// lacks.
+void check_graph_clips(const Record& record, std::size_t clips);
 
 }  // namespace mobb::crowd
