@@ -4,6 +4,7 @@ find_package(TinyGLTF CONFIG REQUIRED)         # libtinygltf-dev
 find_package(assimp CONFIG REQUIRED)           # libassimp-dev (FBX, Collada, ...)
 find_package(nlohmann_json CONFIG REQUIRED)    # nlohmann-json3-dev
 find_package(CLI11 CONFIG REQUIRED)            # libcli11-dev
+find_package(tinyxml2 CONFIG REQUIRED)         # libtinyxml2-dev (SteerSuite test cases)
 if(MOBB_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)          # libgtest-dev
 endif()

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mobb/core/angle.h"
+#include "mobb/util/json_text.h"
 
 namespace mobb::crowd {
 
@@ -57,6 +58,38 @@ Polygon obstacle(const json& j, const std::string& where) {
     return p;
 }
 
+// A world a crowd can walk: within 1000 km of the origin, at most a kilometre a side (the goal policy's
+// navigation grid covers it in 0.25 m cells).
+void check_world_size(const std::vector<double>& w, const std::string& where) {
+    for (std::size_t k = 0; k < w.size(); ++k)
+        if (std::abs(w[k]) > 1e6) fail(where + "[" + std::to_string(k) + "]", "farther than 1000 km from the origin");
+    if (w[2] - w[0] > 1000 || w[3] - w[1] > 1000) fail(where, "at most 1000 m a side");
+}
+
+// An obstacle stands inside the world (its edges included).
+Polygon within_world(Polygon p, const World& w, const std::string& where) {
+    for (std::size_t k = 0; k < p.vertices.size(); ++k)
+        if (!w.inside(p.vertices[k][0], p.vertices[k][1]))
+            fail(where, "vertex " + std::to_string(k) + " lies outside the world");
+    return p;
+}
+
+// Seconds: positive, and at most a day (a crowd steps every frame of it).
+constexpr double kMaxTimeLimit = 86400;
+double time_limit(const json& v, const std::string& where) {
+    const double t = number(v, where);
+    if (!(t > 0)) fail(where, "must be positive");
+    if (t > kMaxTimeLimit) fail(where, "at most " + std::to_string(int(kMaxTimeLimit)) + " s (a day)");
+    return t;
+}
+
+// Every agent starts before the time limit.
+void check_start_times(const Scenario& s, const std::string& where) {
+    for (std::size_t k = 0; k < s.agents.size(); ++k)
+        if (!(s.agents[k].start_time < s.time_limit))
+            fail(where + ".agents[" + std::to_string(k) + "].start_time", "must be before the time limit");
+}
+
 AgentSpec agent(const json& j, const World& w, const std::string& where) {
     only_keys(j, where, {"start", "heading", "start_time", "goal"});
     if (!j.contains("start") || !j.contains("goal")) fail(where, "needs \"start\" and \"goal\"");
@@ -92,6 +125,7 @@ Scenario parse_scenario(const json& j, const std::string& where) {
     if (!j.contains("world")) fail(where, "needs \"world\": [x0, y0, x1, y1]");
     const auto w = numbers(j["world"], 4, where + ".world");
     if (!(w[0] < w[2] && w[1] < w[3])) fail(where + ".world", "expected [x0, y0, x1, y1] with x0 < x1, y0 < y1");
+    check_world_size(w, where + ".world");
     s.world = {w[0], w[1], w[2], w[3], true, {}};
     if (j.contains("walls")) {
         if (!j["walls"].is_boolean()) fail(where + ".walls", "expected true or false");
@@ -99,16 +133,18 @@ Scenario parse_scenario(const json& j, const std::string& where) {
     }
     if (j.contains("obstacles")) {
         if (!j["obstacles"].is_array()) fail(where + ".obstacles", "expected an array");
-        for (std::size_t k = 0; k < j["obstacles"].size(); ++k)
-            s.world.obstacles.push_back(obstacle(j["obstacles"][k], where + ".obstacles[" + std::to_string(k) + "]"));
+        for (std::size_t k = 0; k < j["obstacles"].size(); ++k) {
+            const std::string at = where + ".obstacles[" + std::to_string(k) + "]";
+            s.world.obstacles.push_back(within_world(obstacle(j["obstacles"][k], at), s.world, at));
+        }
     }
     if (!j.contains("time_limit")) fail(where, "needs \"time_limit\" (seconds)");
-    s.time_limit = number(j["time_limit"], where + ".time_limit");
-    if (!(s.time_limit > 0)) fail(where + ".time_limit", "must be positive");
+    s.time_limit = time_limit(j["time_limit"], where + ".time_limit");
     if (!j.contains("agents") || !j["agents"].is_array() || j["agents"].empty())
         fail(where, "needs \"agents\": a non-empty array");
     for (std::size_t k = 0; k < j["agents"].size(); ++k)
         s.agents.push_back(agent(j["agents"][k], s.world, where + ".agents[" + std::to_string(k) + "]"));
+    check_start_times(s, where);
     return s;
 }
 
@@ -143,6 +179,55 @@ std::vector<std::string> scenario_files(const std::string& folder) {
         if (e.path().extension() == ".json") out.push_back(e.path().string());
     std::sort(out.begin(), out.end());
     return out;
+}
+
+namespace {
+
+// A rectangle as Polygon::rectangle lays it out, so that it reads back as the same four vertices.
+bool is_rectangle(const Polygon& p) {
+    const auto& v = p.vertices;
+    if (v.size() != 4) return false;
+    const bool laid_out = v[1][1] == v[0][1] && v[2][0] == v[1][0] && v[3][0] == v[0][0] && v[3][1] == v[2][1];
+    return laid_out && v[0][0] < v[1][0] && v[0][1] < v[2][1];
+}
+
+nlohmann::ordered_json obstacle_json(const Polygon& p) {
+    const auto m = [](double x) { return util::rounded(x, 6); };
+    nlohmann::ordered_json o;
+    if (is_rectangle(p)) {
+        o["rectangle"] = {m(p.vertices[0][0]), m(p.vertices[0][1]), m(p.vertices[2][0]), m(p.vertices[2][1])};
+        return o;
+    }
+    o["polygon"] = nlohmann::ordered_json::array();
+    for (const auto& v : p.vertices) o["polygon"].push_back({m(v[0]), m(v[1])});
+    return o;
+}
+
+nlohmann::ordered_json agent_json(const AgentSpec& a) {
+    const auto m = [](double x) { return util::rounded(x, 6); };
+    nlohmann::ordered_json o;
+    o["start"] = {m(a.start.x), m(a.start.y)};
+    o["heading"] = util::rounded(degrees(a.start.theta), 6);
+    if (a.start_time > 0) o["start_time"] = m(a.start_time);
+    if (a.goal) o["goal"] = {m((*a.goal)[0]), m((*a.goal)[1])};
+    return o;
+}
+
+}  // namespace
+
+std::string scenario_json(const Scenario& s) {
+    nlohmann::ordered_json j;
+    j["name"] = s.name;
+    if (!s.description.empty()) j["description"] = s.description;
+    if (!s.source.empty()) j["source"] = s.source;
+    j["world"] = {s.world.x0, s.world.y0, s.world.x1, s.world.y1};
+    j["walls"] = s.world.walls;
+    j["obstacles"] = nlohmann::ordered_json::array();
+    for (const Polygon& p : s.world.obstacles) j["obstacles"].push_back(obstacle_json(p));
+    j["time_limit"] = s.time_limit;
+    j["agents"] = nlohmann::ordered_json::array();
+    for (const AgentSpec& a : s.agents) j["agents"].push_back(agent_json(a));
+    return util::readable_json(j);
 }
 
 }  // namespace mobb::crowd

@@ -43,4 +43,10 @@ std::string default_scenario_folder();
 /// The scenario files (*.json) of a folder, sorted by name.
 std::vector<std::string> scenario_files(const std::string& folder);
 
+/// The scenario as JSON text in the format above, which load_scenario reads back: coordinates to a
+/// micrometre, headings to a millionth of a degree, number arrays on one line. Rectangles (as
+/// Polygon::rectangle makes them) are written as "rectangle", other obstacles as "polygon"; an agent
+/// without a goal is written without one (load_scenario refuses it).
+std::string scenario_json(const Scenario& scenario);
+
 }  // namespace mobb::crowd
