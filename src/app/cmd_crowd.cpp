@@ -97,6 +97,9 @@ void add_crowd(CLI::App& app, int& exit_code) {
     cmd->add_option("--record", *record, "Write the record (JSON) to this file");
     cmd->add_option("--scenario", *scenario,
                     "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
+    auto no_look_ahead = std::make_shared<bool>(false);
+    cmd->add_flag("--no-look-ahead", *no_look_ahead,
+                  "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
     cmd->callback([=, &exit_code] {
@@ -119,6 +122,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 opt.threads = o->threads;
                 opt.cell = o->cell;
             }
+            opt.look_ahead = !*no_look_ahead;
             opt.record_queries = !record->empty();  // only a written record shows them
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);

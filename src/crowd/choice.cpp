@@ -274,8 +274,34 @@ void Choice::order(const CrowdState& s) {
     }
     next_ = drawn_;
     s.policy.order(site, next_);
+    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.look_ahead) look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
+}
+
+// The policy's order (next_) reordered by the best sequence each candidate leads to (look_ahead.h); the
+// policy's order breaks ties.
+void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
+    const LookAheadLimits limits{horizon, kLookAheadBudget, kLookAheadDeadEnd};
+    const auto free = [&](const SearchStep& step) {
+        Piece piece;
+        piece.agent = agent_;
+        piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
+        return piece_free(s, piece, nullptr);
+    };
+    const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
+    const auto to_go = [&](const Placement& end) { return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y)); };
+    const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
+    const double best = *std::min_element(score.begin(), score.end());
+    if (best < std::numeric_limits<double>::infinity()) {
+        search_.learned(best, learned_);
+        learned_.push_back({base_.x, base_.y, best});
+    }
+    ranked_.clear();
+    for (std::size_t k = 0; k < next_.size(); ++k) ranked_.push_back({score[k], int(k)});
+    std::stable_sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    scratch_ = next_;
+    for (std::size_t k = 0; k < next_.size(); ++k) next_[k] = scratch_[std::size_t(ranked_[k].second)];
 }
 
 const Placed& Choice::place(const CrowdState& s, int k) {
@@ -598,6 +624,7 @@ void Choice::evaluate(const CrowdState& s) {
     root_rejected_ = 0;
     last_hit_ = -1;
     log_.clear();
+    learned_.clear();
     reroutes_.clear();
     outcome_ = Outcome::Candidate;
     order(s);
@@ -773,9 +800,9 @@ bool Choice::reroute(const CrowdState& s, int owner) {
     return false;
 }
 
-// A piece of a reroute: free of the solids, of every live piece of the others but the excluded ones, and of
-// the extra pieces. Its queries count for the choice point (not for a candidate: they are another agent's).
-bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
+// A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live
+// piece of the others but the `excluded` ids. Its queries count for the choice point, not for a candidate.
+bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded) {
     solids_near(s, solid_box(s, piece));
     for (int i : near_) {
         count_query({});
@@ -785,12 +812,19 @@ bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
     note_query(box);
     query_pieces(s, box, piece.agent, near_);
     for (int id : near_) {
-        if (std::find(excluded_.begin(), excluded_.end(), id) != excluded_.end()) continue;
+        if (excluded && std::find(excluded->begin(), excluded->end(), id) != excluded->end()) continue;
         QueryStats st;
         const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
         count_query(st);
         if (hit) return false;
     }
+    return true;
+}
+
+// A piece of a reroute: free of everything but what the taking would release (excluded_), and of the
+// extra pieces (the new plan, the reroutes found before it).
+bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
+    if (!piece_free(s, piece, &excluded_)) return false;
     for (const Piece& e : extra_) {
         if (e.agent == piece.agent) continue;
         QueryStats st;

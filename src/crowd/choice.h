@@ -13,6 +13,7 @@
 
 #include "batch_grid.h"
 #include "escape.h"
+#include "look_ahead.h"
 #include "mobb/core/query.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
@@ -103,6 +104,7 @@ struct Agent {
     bool arrived = false;           ///< reached its goal: stays for good
     int waited = 0;                 ///< choice points in a row it followed its escape
     std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
+    LearnedCost learned;            ///< what its look-aheads learned of the time to go (look_ahead.h)
 };
 
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.
@@ -162,6 +164,12 @@ inline constexpr double kGiveWayReach = 2.5;     // metres
 /// A preference of the choice, not a collision: contacts keep the exact test.
 inline constexpr double kStandingGap = 0.45;  // metres
 
+/// The look-ahead (look_ahead.h) of a policy with a horizon: at most kLookAheadBudget searched clips
+/// tested per choice point; a first clip whose every sequence met a reservation before the horizon
+/// ranks kLookAheadDeadEnd seconds behind its best free step.
+inline constexpr int kLookAheadBudget = 96;
+inline constexpr double kLookAheadDeadEnd = 2.0;  // seconds
+
 /// Another agent's plan that gives way to a choice point's: what it reserves from now on, and the boxes
 /// of the pieces it releases.
 struct Reroute {
@@ -202,6 +210,8 @@ public:
     std::uint64_t root_rejected() const { return root_rejected_; }
     /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).
     const std::vector<LoggedQuery>& log() const { return log_; }
+    /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
+    const std::vector<std::array<double, 3>>& learned() const { return learned_; }
 
 private:
     /// What a piece's queries do at a hit: stop; go on and count them all (fallback); or, with the right
@@ -210,6 +220,8 @@ private:
     enum class Hits { Stop, Count, Yield };
 
     void order(const CrowdState& s);
+    void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
+    bool piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded);
     void note_query(const SpaceTimeBox& box);
     void solids_near(const CrowdState& s, const SpaceTimeBox& box);
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
@@ -239,6 +251,10 @@ private:
     std::vector<int> drawn_;      // candidate clips in the stream's random order
     std::vector<int> order_;      // the same in the policy's order, for the current evaluation
     std::vector<int> next_;       // scratch: the order being made
+    std::vector<int> scratch_;    // scratch: next_ before the look-ahead's reorder
+    std::vector<std::pair<double, int>> ranked_;  // scratch: (look-ahead score, policy rank)
+    LookAhead search_;
+    std::vector<std::array<double, 3>> learned_;
     Placement base_;              // where and when the next clip starts
     Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there
     std::vector<Placed> placed_;  // order_[0 .. placed_.size()) placed

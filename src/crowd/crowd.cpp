@@ -175,7 +175,7 @@ void Simulation::place_at_random(double gap, double margin) {
                                         std::to_string(gap) + " m apart in the world");
         grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(
             a);
-        agents_.push_back({p, 0, std::nullopt, {}, {}, {}, false});
+        agents_.push_back({p, 0, std::nullopt, {}, {}, {}, false, 0, 0, {}});
     }
 }
 
@@ -191,7 +191,7 @@ void Simulation::place_agents() {
         p.t0 = 0;
         const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
         const std::int64_t start = std::max<std::int64_t>(0, frame);
-        agents_.push_back({p, start, s.goal, {}, {}, {}, false, 0, start});
+        agents_.push_back({p, start, s.goal, {}, {}, {}, false, 0, start, {}});
     }
 }
 
@@ -417,6 +417,7 @@ void Simulation::commit(Choice& c) {
     clip.clip = t;
     add_piece(clip, true);
     reserve(c.agent(), commit, c.plan());
+    for (const auto& [x, y, seconds] : c.learned()) a.learned.raise(x, y, seconds);
     for (const Reroute& r : c.reroutes()) reserve(r.agent, commit, r.plan);
     if (c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold) {
         a.arrived = true;

@@ -3,6 +3,10 @@
 // policy ranks candidate clips by it.
 #pragma once
 #include <array>
+#include <cstddef>
+#include <functional>
+#include <queue>
+#include <utility>
 #include <vector>
 
 #include "mobb/crowd/world.h"
@@ -37,11 +41,22 @@ public:
 
     static constexpr double kUnreachable = 1e9;
 
+    /// Brings the field up to date after cells of `grid` (the one it was built on) were blocked: the
+    /// same distances as building it again, computed only where a path ran through a blocked cell.
+    void block(const NavGrid& grid);
+
 private:
+    using Heap = std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>,
+                                     std::greater<>>;
+    void spread(const NavGrid& grid, Heap& open, const std::vector<char>* only, std::vector<int>& settled);
+
     double x0_, y0_, cell_;
     int nx_, ny_;
     std::array<double, 2> goal_;
     std::vector<double> value_;
+    std::vector<int> parent_;  ///< the neighbour each cell's shortest path goes on through (-1: none)
+    std::vector<int> order_;   ///< the reached cells by value (the order Dijkstra settled them in)
+    std::size_t goal_cell_ = 0;
 };
 
 }  // namespace mobb::crowd

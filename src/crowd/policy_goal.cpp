@@ -20,6 +20,16 @@ class GoalPolicy : public Policy {
 public:
     explicit GoalPolicy(const PolicyContext& c) : graph_(c.graph), radius_(c.goal_radius), grid_(c.world, c.clearance) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
+        // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
+        // stops that much inside the goal radius so that it stays within it to the end.
+        double sway = 0;
+        for (int k = 0; k < int(graph_.clips.size()); ++k) {
+            if (kinds_[std::size_t(k)] != ClipKind::Idle) continue;
+            const auto& samples = graph_.clips[std::size_t(k)].path.samples;
+            for (const Sample& x : samples)
+                sway = std::max(sway, std::hypot(x.x - samples.front().x, x.y - samples.front().y));
+        }
+        stop_radius_ = radius_ - sway;
         for (const auto& g : c.goals) fields_.emplace(g, NavField(grid_, g));
     }
 
@@ -36,14 +46,23 @@ public:
 
     double neighbourhood() const override { return 6.0; }
 
+    // A stuck agent (kPatience) and one at its goal order their candidates alone.
+    int horizon(const ChoiceSite& site) const override {
+        return site.goal && !site.arrived && site.waited < kPatience ? kHorizon : 0;
+    }
+
+    double to_go(const ChoiceSite& site, const Placement& end) const override {
+        return seconds(fields_.at(*site.goal), end, site.neighbours);
+    }
+
     // Agents standing at their goals are obstacles for the others' paths.
     void settled(double x, double y, double r) override {
         grid_.block_disk(x, y, r);
-        for (auto& [goal, field] : fields_) field = NavField(grid_, goal);
+        for (auto& [goal, field] : fields_) field.block(grid_);
     }
 
     bool arrived(const ChoiceSite& site) const override {
-        return site.goal && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < radius_;
+        return site.goal && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
     }
 
 private:
@@ -52,6 +71,7 @@ private:
     static constexpr double kPersonal = 2.0;  // metres: nearer than this to a neighbour costs
     static constexpr double kCrowding = 1.2;  // seconds per metre inside that distance
     static constexpr int kPatience = 3;       // choice points in a row without moving on before making room
+    static constexpr int kHorizon = 3;        // clips searched ahead (about 3.6 s of the graph's clips)
 
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
     // cost for ending close to where the neighbours will be.
@@ -84,6 +104,7 @@ private:
     const MotionGraph& graph_;
     std::vector<ClipKind> kinds_;
     double radius_;
+    double stop_radius_;  // metres: radius_ less the idle clips' sway
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
 };

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -20,12 +22,13 @@ const MotionGraph& graph() {
     return g;
 }
 
-TEST(Scenario, ShipsTheEightTestCases) {
+TEST(Scenario, ShipsTheTestCases) {
     const auto files = scenario_files(default_scenario_folder());
     std::vector<std::string> names;
     for (const std::string& f : files) names.push_back(load_scenario(f).name);
     for (const char* n : {"oncoming", "crossing", "four_way", "hallway_two_way", "doorway_two_way", "circle_20",
-                          "bottleneck", "random_obstacles"})
+                          "bottleneck", "random_obstacles", "oncoming_obstacle", "crossing_obstacle", "three_way", "fan_out",
+                          "hallway_one_way", "circle_pillar", "l_walls_60"})
         EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
 }
 
@@ -41,11 +44,16 @@ TEST_P(ShippedScenario, Passes) {
     EXPECT_EQ(frame_contacts(run.record).size(), 0u) << s.name;
     EXPECT_EQ(m.obstacle_contacts, 0u) << s.name;
     EXPECT_TRUE(m.passed) << s.name;
-    // Arrived agents stay within the goal radius to the end.
+    // Every agent comes to stand at its goal in time: from some frame before the time limit it stays
+    // within the goal radius to the end (it stops inside it by the idle clips' sway).
     for (const AgentTrack& t : run.record.tracks) {
         ASSERT_TRUE(t.goal);
-        const auto& last = t.samples.back();
-        EXPECT_LT(std::hypot(last[1] - (*t.goal)[0], last[2] - (*t.goal)[1]), 1.0 + 0.3) << s.name;
+        std::size_t settled = t.samples.size();
+        while (settled > 0 && std::hypot(t.samples[settled - 1][1] - (*t.goal)[0],
+                                         t.samples[settled - 1][2] - (*t.goal)[1]) < 1.0)
+            --settled;
+        ASSERT_LT(settled, t.samples.size()) << s.name << ": an agent ends outside its goal radius";
+        EXPECT_LT(t.samples[settled][0], s.time_limit) << s.name;
     }
 }
 
@@ -95,21 +103,78 @@ TEST(Scenario, BadFilesNameThePlace) {
     std::remove(file.c_str());
 }
 
+// Every numeric field: non-finite, out of order, negative, past the time limit or outside the world.
+TEST(Scenario, EveryNumericFieldIsChecked) {
+    const nlohmann::json ok = nlohmann::json::parse(R"({"world": [0, 0, 10, 10], "time_limit": 10,
+        "obstacles": [{"rectangle": [4, 4, 5, 5]}, {"polygon": [[1, 8], [2, 9]]}],
+        "agents": [{"start": [1, 1], "heading": 90, "start_time": 2, "goal": [8, 8]}]})");
+    const auto error_after = [&](const std::function<void(nlohmann::json&)>& edit) {
+        nlohmann::json j = ok;
+        edit(j);
+        try {
+            parse_scenario(j, "s.json");
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error_after([](nlohmann::json&) {}), "");
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    using Edit = std::function<void(nlohmann::json&)>;
+    const std::vector<std::pair<Edit, std::string>> cases = {
+        {[](nlohmann::json& j) { j["world"] = {5, 0, 5, 10}; }, "s.json.world: "},
+        {[](nlohmann::json& j) { j["world"] = {6, 0, 5, 10}; }, "s.json.world: "},
+        {[](nlohmann::json& j) { j["world"] = {0, 10, 10, 0}; }, "s.json.world: "},
+        {[&](nlohmann::json& j) { j["world"][2] = inf; }, "s.json.world[2]: expected a finite number"},
+        {[&](nlohmann::json& j) { j["world"][1] = nan; }, "s.json.world[1]: expected a finite number"},
+        {[](nlohmann::json& j) { j["world"][0] = "0"; }, "s.json.world[0]: expected a finite number"},
+        {[](nlohmann::json& j) { j["world"] = {0, 0, 2000, 10}; }, "s.json.world: at most 1000 m a side"},
+        {[](nlohmann::json& j) { j["world"] = {-1e300, 0, 10, 10}; }, "s.json.world[0]: farther than"},
+        {[](nlohmann::json& j) { j["time_limit"] = 0; }, "s.json.time_limit: must be positive"},
+        {[](nlohmann::json& j) { j["time_limit"] = -10; }, "s.json.time_limit: must be positive"},
+        {[&](nlohmann::json& j) { j["time_limit"] = inf; }, "s.json.time_limit: expected a finite number"},
+        {[](nlohmann::json& j) { j["time_limit"] = 1e9; }, "s.json.time_limit: at most"},
+        {[](nlohmann::json& j) { j["time_limit"] = "10"; }, "s.json.time_limit: expected a finite number"},
+        {[](nlohmann::json& j) { j["agents"][0]["start_time"] = -1; }, "s.json.agents[0].start_time: "},
+        {[](nlohmann::json& j) { j["agents"][0]["start_time"] = 10; }, "s.json.agents[0].start_time: "},
+        {[&](nlohmann::json& j) { j["agents"][0]["start_time"] = nan; }, "s.json.agents[0].start_time: "},
+        {[&](nlohmann::json& j) { j["agents"][0]["heading"] = inf; }, "s.json.agents[0].heading: "},
+        {[](nlohmann::json& j) { j["agents"][0]["heading"] = "north"; }, "s.json.agents[0].heading: "},
+        {[&](nlohmann::json& j) { j["agents"][0]["start"][0] = nan; }, "s.json.agents[0].start[0]: "},
+        {[](nlohmann::json& j) { j["agents"][0]["start"] = {-1, 1}; }, "s.json.agents[0].start: outside the world"},
+        {[&](nlohmann::json& j) { j["agents"][0]["goal"][1] = -inf; }, "s.json.agents[0].goal[1]: "},
+        {[](nlohmann::json& j) { j["agents"][0]["goal"] = {8}; }, "s.json.agents[0].goal: expected 2 numbers"},
+        {[](nlohmann::json& j) { j["obstacles"][0]["rectangle"] = {5, 4, 4, 5}; }, "s.json.obstacles[0].rectangle: "},
+        {[](nlohmann::json& j) { j["obstacles"][0]["rectangle"] = {4, 4, 5, 4}; }, "s.json.obstacles[0].rectangle: "},
+        {[&](nlohmann::json& j) { j["obstacles"][0]["rectangle"][3] = nan; }, "s.json.obstacles[0].rectangle[3]: "},
+        {[](nlohmann::json& j) { j["obstacles"][0]["rectangle"] = {8, 8, 12, 9}; },
+         "s.json.obstacles[0]: vertex 1 lies outside the world"},
+        {[&](nlohmann::json& j) { j["obstacles"][1]["polygon"][1][0] = inf; }, "s.json.obstacles[1].polygon[1][0]: "},
+        {[](nlohmann::json& j) { j["obstacles"][1]["polygon"][0] = {-3, 8}; },
+         "s.json.obstacles[1]: vertex 0 lies outside the world"},
+    };
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const std::string e = error_after(cases[k].first);
+        EXPECT_EQ(e.rfind(cases[k].second, 0), 0u) << "case " << k << ": " << e;
+        EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    }
+}
+
 TEST(Scenario, OptionsRunItsAgentsWithGoals) {
     const Scenario s = parse_scenario(
         nlohmann::json::parse(
-            R"({"world": [0, 0, 20, 10], "time_limit": 12, "agents": [{"start": [2, 5], "goal": [18, 5], "start_time": 1.5}]})"),
+            R"({"world": [0, 0, 20, 10], "time_limit": 16, "agents": [{"start": [2, 5], "goal": [18, 5], "start_time": 1.5}]})"),
         "s");
     const CrowdOptions o = scenario_options(s);
     EXPECT_EQ(o.select, Selection::Goal);
-    EXPECT_EQ(o.seconds, 12);
+    EXPECT_EQ(o.seconds, 16);
     ASSERT_EQ(o.placed.size(), 1u);
     EXPECT_NEAR(o.placed[0].start.theta, 0.0, 1e-12) << "heading defaults to facing the goal";
     const CrowdRun r = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
     const auto& samples = r.record.tracks[0].samples;
-    // It stands at its start until its start time, then walks to its goal.
+    // It stands at its start until its start time, then walks to its goal and stops there.
     EXPECT_LT(std::hypot(samples[40][1] - 2, samples[40][2] - 5), 0.3);
-    EXPECT_LT(std::hypot(samples.back()[1] - 18, samples.back()[2] - 5), 1.3);
+    EXPECT_LT(std::hypot(samples.back()[1] - 18, samples.back()[2] - 5), 1.0);
 }
 
 }  // namespace

@@ -42,6 +42,9 @@ struct CrowdOptions {
     int threads = 1;
     std::vector<AgentSpec> placed;  ///< the agents of a scenario (then `agents` is ignored)
     double goal_radius = 1.0;       ///< metres: a goal agent this close to its goal stops there
+    /// Search clip sequences at choice points where the policy asks for it (Policy::horizon, the goal
+    /// policy; src/crowd/look_ahead.h); off, candidates are tried in the policy's order alone.
+    bool look_ahead = true;
 };
 
 /// One clip-against-clip narrow-phase query of a run: clip a at pa (the candidate's, or an escape clip of

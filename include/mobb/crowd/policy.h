@@ -49,6 +49,12 @@ public:
     virtual bool arrived(const ChoiceSite&) const { return false; }
     /// How far around the agent its neighbours are gathered for order() (0: not at all).
     virtual double neighbourhood() const { return 0; }
+    /// How many clips deep the choice point searches ahead (look_ahead.h) before trying its candidates: 0
+    /// keeps order()'s order alone. The first clips are then tried in the order of the best sequence
+    /// each leads to, scored by its duration plus to_go() at its end (order() breaks ties).
+    virtual int horizon(const ChoiceSite&) const { return 0; }
+    /// The estimated seconds from `end` (where a searched sequence leaves the agent) to what it seeks.
+    virtual double to_go(const ChoiceSite&, const Placement& /*end*/) const { return 0; }
     /// An agent stopped for good at (x, y), holding a disk of radius r: the others plan around it. Called
     /// in commit order, never while choice points are evaluated.
     virtual void settled(double /*x*/, double /*y*/, double /*r*/) {}
