@@ -274,6 +274,7 @@ void Choice::order(const CrowdState& s) {
     }
     next_ = drawn_;
     s.policy.order(site, next_);
+    searched_ = false;
     if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.look_ahead) look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
@@ -292,6 +293,7 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
     const auto to_go = [&](const Placement& end) { return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y)); };
     const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
+    searched_ = true;
     const double best = *std::min_element(score.begin(), score.end());
     if (best < std::numeric_limits<double>::infinity()) {
         search_.learned(best, learned_);
@@ -520,6 +522,10 @@ void Choice::take(int k, Outcome how) {
     taken_ = {c.clip, c.place, frame_, c.box, base_m_};
     outcome_ = how;
     point_.taken = c.clip;
+    intended_.clear();
+    if (!searched_) return;
+    const std::vector<SearchStep> sequence = search_.sequence(ranked_[std::size_t(k)].second);
+    if (!sequence.empty()) intended_.assign(sequence.begin() + 1, sequence.end());
 }
 
 // The agent's own escape: its next stopping clip, else one more clip in place on its held ground.
@@ -625,6 +631,7 @@ void Choice::evaluate(const CrowdState& s) {
     last_hit_ = -1;
     log_.clear();
     learned_.clear();
+    intended_.clear();
     reroutes_.clear();
     outcome_ = Outcome::Candidate;
     order(s);

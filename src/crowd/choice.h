@@ -210,6 +210,8 @@ public:
     std::uint64_t root_rejected() const { return root_rejected_; }
     /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).
     const std::vector<LoggedQuery>& log() const { return log_; }
+    /// The clips the look-ahead intends after the one taken (ChoicePoint::intended; empty without one).
+    const std::vector<SearchStep>& intended() const { return intended_; }
     /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
     const std::vector<std::array<double, 3>>& learned() const { return learned_; }
 
@@ -254,6 +256,8 @@ private:
     std::vector<int> scratch_;    // scratch: next_ before the look-ahead's reorder
     std::vector<std::pair<double, int>> ranked_;  // scratch: (look-ahead score, policy rank)
     LookAhead search_;
+    bool searched_ = false;              // order_ comes from the look-ahead (ranked_ maps it to its nodes)
+    std::vector<SearchStep> intended_;
     std::vector<std::array<double, 3>> learned_;
     Placement base_;              // where and when the next clip starts
     Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there

@@ -314,6 +314,8 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
     cp.outcome = kOutcomes[int(c.outcome())];
     cp.escape.clear();
     for (const PlannedClip& e : c.plan().escape) cp.escape.push_back({e.clip, e.frame, e.place});
+    cp.intended.clear();
+    for (const SearchStep& e : c.intended()) cp.intended.push_back({e.clip, e.frame, e.place});
     cp.holds = c.plan().hold.has_value();
     if (cp.holds) {
         const Hold& h = *c.plan().hold;

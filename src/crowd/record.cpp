@@ -218,6 +218,7 @@ J hold_json(const std::array<double, 3>& h, std::int64_t frame) { return {h[0], 
 J plan_json(const ChoicePoint& c) {
     J out = {{"escape", escape_json(c.escape)}};
     if (c.holds) out["hold"] = hold_json(c.hold, c.hold_frame);
+    if (!c.intended.empty()) out["intended"] = escape_json(c.intended);
     if (c.reroutes.empty()) return out;
     J reroutes = J::array();
     for (const ReroutedPlan& r : c.reroutes)
@@ -465,6 +466,7 @@ void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string&
     const std::string wp = dot(w, "plan");
     const json& plan = c["plan"];
     cp.escape = escape_of(need(plan, "escape", wp), r.dt, dot(wp, "escape"));
+    if (plan.contains("intended")) cp.intended = escape_of(plan["intended"], r.dt, dot(wp, "intended"));
     if (plan.contains("hold")) {
         const HeldGround h = hold_of(plan["hold"], dot(wp, "hold"));
         cp.holds = true;
@@ -645,6 +647,7 @@ void check_graph_clips(const Record& r, std::size_t clips) {
         for (std::size_t k = 0; k < cp.candidates.size(); ++k)
             check(cp.candidates[k].clip, at(w + ".candidates", k) + ".clip");
         escape(cp.escape, w + ".plan.escape");
+        escape(cp.intended, w + ".plan.intended");
         for (std::size_t k = 0; k < cp.reroutes.size(); ++k)
             escape(cp.reroutes[k].escape, at(w + ".plan.reroutes", k) + ".escape");
     }

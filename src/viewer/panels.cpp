@@ -556,6 +556,11 @@ void crowd_panel(State& s, Ui& ui) {
                     static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
         for (const crowd::ReroutedPlan& rr : c.reroutes)
             ImGui::TextWrapped("agent %d gave way (right of way)", rr.agent);
+        if (!c.intended.empty()) {
+            std::string plan = "plan: clip " + std::to_string(c.taken);
+            for (const crowd::FramedClip& e : c.intended) plan += ", " + std::to_string(e.clip);
+            ImGui::TextWrapped("%s (looked ahead)", plan.c_str());
+        }
         // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
         std::size_t rows = c.candidates.size();
         for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();

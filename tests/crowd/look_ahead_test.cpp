@@ -3,7 +3,9 @@
 // times to go; and a crowd whose agents reach their goals sooner with it than without it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 
 #include "choice.h"
@@ -135,6 +137,40 @@ TEST(LookAhead, ACircleOfAgentsReachesItsGoalsSoonerWithIt) {
     EXPECT_EQ(a.reached, a.goal_agents);
     EXPECT_LT(a.mean_time_to_goal, b.mean_time_to_goal);
     EXPECT_LT(a.idle_share, b.idle_share);
+}
+
+// The plan a goal agent keeps (ChoicePoint::intended): the clips after the one taken, each a successor of
+// the one before and starting where and when it ends, and the record keeps it.
+TEST(LookAhead, TheIntendedClipsFollowTheTakenOneInTheRecord) {
+    const MotionGraph& g = graph();
+    const Scenario s = load_scenario(default_scenario_folder() + "/circle_20.json");
+    CrowdOptions o = scenario_options(s);
+    o.seconds = 20;
+    const Record r = run_crowd(g, NarrowPhase::sweep(g), o).record;
+    int planned = 0;
+    for (const ChoicePoint& c : r.choices) {
+        if (c.intended.empty()) continue;
+        ++planned;
+        int prev = c.taken;
+        std::int64_t frame = c.frame;
+        for (const FramedClip& e : c.intended) {
+            const auto& next = g.clips[std::size_t(prev)].successors;
+            ASSERT_NE(std::find(next.begin(), next.end(), e.clip), next.end());
+            frame += std::int64_t(g.clips[std::size_t(prev)].path.size());
+            ASSERT_EQ(e.frame, frame);
+            prev = e.clip;
+        }
+    }
+    EXPECT_GT(planned, 20);
+    const std::string file = testing::TempDir() + "/intended_record.json";
+    std::ofstream(file) << record_to_text(r, "{}");
+    const Record back = load_record(file);
+    ASSERT_EQ(back.choices.size(), r.choices.size());
+    for (std::size_t k = 0; k < r.choices.size(); ++k) {
+        ASSERT_EQ(back.choices[k].intended.size(), r.choices[k].intended.size());
+        for (std::size_t i = 0; i < r.choices[k].intended.size(); ++i)
+            EXPECT_EQ(back.choices[k].intended[i].clip, r.choices[k].intended[i].clip);
+    }
 }
 
 }  // namespace

@@ -110,6 +110,10 @@ struct ChoicePoint {
     std::array<double, 3> hold{};        ///< x, y, r (metres)
     std::int64_t hold_frame = 0;         ///< from this frame on
     std::vector<ReroutedPlan> reroutes;  ///< the other agents' plans that gave way ("right of way")
+    /// The clips the look-ahead intends after the one taken (goal agents, src/crowd/look_ahead.h): the
+    /// rest of the sequence that ranked the taken clip first, re-planned at the next choice point. Not
+    /// reserved: the escape is what the others plan around.
+    std::vector<FramedClip> intended;
 };
 
 /// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].
