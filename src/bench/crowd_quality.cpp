@@ -116,6 +116,23 @@ void add_wander_targets(CrowdQualityTable& t, const CrowdQualityOptions& o) {
     t.targets.push_back(c);
 }
 
+// Issue 28: the worst scenario run's time to goal over the straight line at walking speed, and idle share
+// (at-goal time left out).
+void add_goal_quality_targets(CrowdQualityTable& t) {
+    const ScenarioRow* slowest = nullptr;
+    const ScenarioRow* idlest = nullptr;
+    for (const ScenarioRow& r : t.scenarios) {
+        if (!slowest || r.metrics.time_ratio > slowest->metrics.time_ratio) slowest = &r;
+        if (!idlest || r.metrics.idle_share > idlest->metrics.idle_share) idlest = &r;
+    }
+    if (!slowest) return;
+    const auto where = [](const ScenarioRow& r) { return r.name + " seed " + std::to_string(r.seed); };
+    t.targets.push_back(at_most("mean time to goal <= 1.5x the straight line at the graph's walking speed, every scenario",
+                                1.5, slowest->metrics.time_ratio, "worst: " + where(*slowest), true));
+    t.targets.push_back(at_most("idle <= 20 % of agent time (at-goal time left out), every scenario", 20,
+                                100 * idlest->metrics.idle_share, "worst: " + where(*idlest) + ", in %"));
+}
+
 void add_scenario_target(CrowdQualityTable& t) {
     int passed = 0;
     std::string failed;
@@ -127,6 +144,7 @@ void add_scenario_target(CrowdQualityTable& t) {
                         passed, failed.empty() ? "every run" : "failed: " + failed);
     s.ratio = false;
     t.targets.push_back(s);
+    add_goal_quality_targets(t);
 }
 
 }  // namespace
@@ -175,19 +193,20 @@ std::string crowd_quality_markdown(const CrowdQualityTable& t) {
             << fixed(r.cd_us_per_agent_second, 2) << " |\n";
     }
     out << "\n### Scenarios (goal-directed)\n\n"
-        << "| scenario | agents | seed | passed | reached | mean / last time to goal s (limit) | contacts | path / "
-           "straight "
-           "| speed / graph | idle % | Composite01 | Composite02 |\n"
-        << "|---|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+        << "| scenario | agents | seed | passed | reached | mean / last time to goal s (limit) | time to goal / "
+           "straight at walking speed | contacts | path / straight | speed / graph | idle % | Composite01 | "
+           "Composite02 |\n"
+        << "|---|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ScenarioRow& r : t.scenarios) {
         const crowd::CrowdMetrics& m = r.metrics;
         out << "| " << r.name << " | " << r.agents << " | " << r.seed << " | " << (m.passed ? "yes" : "NO") << " | "
             << m.reached << " / " << m.goal_agents << " | " << fixed(m.mean_time_to_goal, 1) << " / "
-            << fixed(m.max_time_to_goal, 1) << " (" << fixed(r.time_limit, 0) << ") | " << m.contacts << " | "
+            << fixed(m.max_time_to_goal, 1) << " (" << fixed(r.time_limit, 0) << ") | " << fixed(m.time_ratio, 2)
+            << " | " << m.contacts << " | "
             << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1)
             << " | " << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " |\n";
     }
-    out << "\nTargets (issue 10):\n\n";
+    out << "\nTargets (issues 10 and 28):\n\n";
     for (const Target& g : t.targets) out << "- " << g.what << ": " << target_text(g) << " (" << g.detail << ")\n";
     out << "\n";
     for (const auto& [k, v] : t.notes) out << "- " << k << ": " << v << "\n";

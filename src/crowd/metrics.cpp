@@ -126,16 +126,33 @@ void contact_metrics(const Record& r, CrowdMetrics& m, std::vector<int>& collisi
 
 }  // namespace
 
+namespace {
+
+// Root path length over duration (m/s).
+double clip_speed(const GraphClip& c) {
+    double length = 0;
+    for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
+        length += std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x, c.path.samples[i + 1].y - c.path.samples[i].y);
+    return length / c.path.duration();
+}
+
+}  // namespace
+
 double graph_mean_speed(const MotionGraph& graph) {
     double sum = 0;
-    for (const GraphClip& c : graph.clips) {
-        double length = 0;
-        for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
-            length += std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x,
-                                 c.path.samples[i + 1].y - c.path.samples[i].y);
-        sum += length / c.path.duration();
-    }
+    for (const GraphClip& c : graph.clips) sum += clip_speed(c);
     return graph.clips.empty() ? 0.0 : sum / double(graph.clips.size());
+}
+
+double graph_walking_speed(const MotionGraph& graph) {
+    double sum = 0;
+    int walks = 0;
+    for (int k = 0; k < int(graph.clips.size()); ++k) {
+        if (kind_of(graph.clips[std::size_t(k)], k) != ClipKind::Walk) continue;
+        sum += clip_speed(graph.clips[std::size_t(k)]);
+        ++walks;
+    }
+    return walks ? sum / walks : 0.0;
 }
 
 CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goal_radius) {
@@ -146,9 +163,10 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
     std::vector<int> collisions;
     contact_metrics(r, m, collisions);
     m.graph_speed = graph_mean_speed(graph);
+    m.walking_speed = graph_walking_speed(graph);
     const double dt = r.dt, run = double(r.frames) * dt;
     std::uint64_t idle = 0, counted = 0;
-    double speed = 0, time = 0, ratio = 0, c1 = 0, c2 = 0;
+    double speed = 0, time = 0, ratio = 0, time_ratio = 0, c1 = 0, c2 = 0;
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         const AgentTrack& t = r.tracks[a];
         const Samples& s = t.samples;
@@ -172,6 +190,7 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
             m.max_time_to_goal = std::max(m.max_time_to_goal, double(reached) * dt);
             const double straight = std::hypot((*t.goal)[0] - s[0][1], (*t.goal)[1] - s[0][2]);
             ratio += straight > 0 ? to_goal / straight : 1.0;
+            time_ratio += straight > 0 ? double(reached) * dt * m.walking_speed / straight : 1.0;
         }
         const double enabled = reached >= 0 ? double(reached) * dt : run;
         const auto [energy, acceleration] = effort(s, dt, enabled);
@@ -184,6 +203,7 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
     m.idle_share = counted ? double(idle) / double(counted) : 0.0;
     m.mean_time_to_goal = m.reached ? time / m.reached : 0.0;
     m.path_ratio = m.reached ? ratio / m.reached : 0.0;
+    m.time_ratio = m.reached ? time_ratio / m.reached : 0.0;
     m.passed = m.reached == m.goal_agents && m.contacts == 0 && m.obstacle_contacts == 0;
     m.composite01 = c1 / n;
     m.composite02 = (c1 + c2) / n;
@@ -211,6 +231,8 @@ std::string metrics_json(const CrowdMetrics& m) {
     j["mean_time_to_goal"] = rounded(m.mean_time_to_goal, 6);
     j["max_time_to_goal"] = rounded(m.max_time_to_goal, 6);
     j["path_ratio"] = rounded(m.path_ratio, 6);
+    j["walking_speed"] = rounded(m.walking_speed, 6);
+    j["time_ratio"] = rounded(m.time_ratio, 6);
     j["passed"] = m.passed;
     j["composite01"] = rounded(m.composite01, 4);
     j["composite02"] = rounded(m.composite02, 4);
@@ -230,7 +252,9 @@ std::string metrics_text(const CrowdMetrics& m) {
     if (m.goal_agents > 0)
         out << "goals                    " << m.reached << " of " << m.goal_agents << " reached, mean "
             << m.mean_time_to_goal << " s, last " << m.max_time_to_goal << " s, path " << m.path_ratio
-            << " x the straight line: " << (m.passed ? "PASSED" : "FAILED") << "\n";
+            << " x the straight line: " << (m.passed ? "PASSED" : "FAILED") << "\n"
+            << "time to goal             " << m.time_ratio << " x the straight line at the graph's walking speed ("
+            << m.walking_speed << " m/s)\n";
     out << "SteerSuite composite     01: " << m.composite01 << ", 02: " << m.composite02 << " (lower is better)\n";
     return out.str();
 }

@@ -50,6 +50,9 @@ TEST(Metrics, WorkedOutOnAHandMadeRecord) {
     EXPECT_EQ(m.reached, 1);
     EXPECT_NEAR(m.mean_time_to_goal, 41.0 / 30, 1e-12);
     EXPECT_NEAR(m.path_ratio, 1.5 * (41.0 / 30) / 3.02, 1e-9);
+    // 3.02 m straight from (0.5, 5) to (3.52, 5) at the walking clips' speed, against 41 frames.
+    EXPECT_GT(graph_walking_speed(g), graph_mean_speed(g));
+    EXPECT_NEAR(m.time_ratio, (41.0 / 30) * graph_walking_speed(g) / 3.02, 1e-9);
     // Agent 0 is idle all 60 frames, agent 1 never in its 41.
     EXPECT_NEAR(m.idle_share, 60.0 / 101, 1e-12);
     EXPECT_NEAR(m.longest_idle, 2.0, 1e-12);

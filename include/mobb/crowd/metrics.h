@@ -28,6 +28,9 @@ struct CrowdMetrics {
     int goal_agents = 0, reached = 0;                    ///< reached: within the goal radius at some frame
     double mean_time_to_goal = 0, max_time_to_goal = 0;  ///< seconds, over the agents that reached it
     double path_ratio = 0;  ///< path length to the goal / straight distance, mean over them
+    double walking_speed = 0;  ///< m/s: graph_walking_speed()
+    /// Time to the goal over the straight distance at walking_speed, mean over the agents that reached it.
+    double time_ratio = 0;
     bool passed = false;    ///< every goal agent reached its goal and no contact at any frame
     // SteerSuite's benchmark scores (steerlib/src/CompositeTechnique01.cpp, CompositeTechnique02.cpp), lower
     // is better, on the tracks resampled to its 20 frames per second: Composite01 = 50 x mean unique
@@ -47,5 +50,7 @@ std::string metrics_text(const CrowdMetrics& m);
 
 /// The graph's mean clip speed: root path length over duration, mean over its clips (m/s).
 double graph_mean_speed(const MotionGraph& graph);
+/// The same over its walking clips alone (ClipKind::Walk; m/s): how fast an agent with a clear way goes.
+double graph_walking_speed(const MotionGraph& graph);
 
 }  // namespace mobb::crowd
