@@ -203,7 +203,7 @@ void add_render(CLI::App& app, int& exit_code) {
                     "Disks coloured by clip (default), radius, speed, time or clearance, with a colour bar");
     cmd->add_option("--colour-boxes", a->box_colour,
                     "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
-    cmd->add_flag("--top", a->top, "With --crowd: seen from above (the crowd panel's \"from above\")");
+    cmd->add_flag("--top", a->top, "With --crowd: the top view (the panels' \"top\", the T key)");
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")
         ->check(CLI::Range(16, 8192));

@@ -3,18 +3,17 @@
 // scrubbing, trace steps and reruns of the query.
 #include <cstdio>
 
-#include <glm/mat4x4.hpp>
 #include <imgui.h>
+#include <glm/mat4x4.hpp>
 
 #include "panels.h"
 #include "picking.h"
 #include "space.h"
+#include "widgets.h"
 
 namespace mobb::viewer {
 
 namespace {
-
-ImVec4 imvec(const glm::vec3& c) { return {c.r, c.g, c.b, 1.0f}; }
 
 /// Where a space-time point lands on the screen, or nothing behind the camera.
 bool project(const State& s, const Ui& ui, const glm::dvec2& xy, double t, ImVec2& out) {

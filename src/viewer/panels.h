@@ -1,5 +1,5 @@
-// Dear ImGui panels: scene and layers, query debugger, trace list, recursion view, tree fit, inspector,
-// crowd, open files; a View menu opens and closes each of them.
+// Dear ImGui panels, one .cpp each: scene and layers, query debugger, trace list, recursion view, tree
+// fit, inspector, crowd, open files; the main menu's View menu opens and closes each of them.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -32,6 +32,11 @@ struct PanelInfo {
 /// Every panel in View-menu order.
 const std::vector<PanelInfo>& panel_list();
 
+/// The two camera presets, one name each across the code, the panels and the CLI: Top (the Scene and
+/// Crowd panels' "top", the T key, `mobb render --crowd --top`) and Side (their "side", the S key). The
+/// window applies a request, then frames everything.
+enum class ViewPreset : std::uint8_t { None, Top, Side };
+
 /// Per-level statistics of the three fits of one clip, for the tree-fit panel.
 struct FitTable {
     int clip = -1;
@@ -49,13 +54,13 @@ struct Ui {
     bool follow = true;  ///< move the time cursor to each trace step
     bool scroll_to_step = true;
     PanelsOpen panels;
-    Pick pick;   ///< the last disk clicked (the inspector)
-    Pick ruler;  ///< the one clicked before it: the inspector measures from it to `pick`
+    Pick pick;                       ///< the last disk clicked (the inspector)
+    Pick ruler;                      ///< the one clicked before it: the inspector measures from it to `pick`
     std::vector<int> picked_events;  ///< trace events whose node holds the picked disk
     FitTable fit;
     Recursion recursion;  ///< of state.trace at recursion_revision
     std::uint64_t recursion_revision = 0;
-    std::vector<std::string> dropped;  ///< files dropped on the window, opened on the next frame
+    std::vector<std::string> dropped;     ///< files dropped on the window, opened on the next frame
     std::vector<std::string> data_files;  ///< the Open panel's listing of the data folder (relative names)
     bool data_listed = false;
     std::string open_filter;
@@ -63,9 +68,9 @@ struct Ui {
     std::string save_path = "scene.json";
     std::string status;  ///< last message (saved, errors)
     bool request_frame_all = false;
-    int request_view = 0;    ///< 1 top, 2 side
+    ViewPreset request_view = ViewPreset::None;
     bool request_quit = false;
-    bool show_help = false;  ///< the Shortcuts window (F1 or ?)
+    bool show_help = false;   ///< the Shortcuts window (F1 or ?)
     bool reveal_step = true;  ///< the recursion view unfolds to the shown step once
     float menu_height = 0;    ///< the main menu bar's height (panels start below it)
 };
@@ -82,10 +87,16 @@ void click_disk(State& state, Ui& ui, const Pick& pick);
 /// the trace goes to the last of them.
 void click_box(State& state, Ui& ui, int clip, std::int32_t node);
 
-// One file each (panels.cpp draws them in order).
+// One file each (panels.cpp draws them in order; widgets.h holds what several share).
+void main_menu(State& state, Ui& ui);
+void scene_panel(State& state, Ui& ui);
+void query_panel(State& state, Ui& ui);
+void trace_panel(State& state, Ui& ui);
 void recursion_panel(State& state, Ui& ui);
 void outcome_strip(State& state, Ui& ui);  ///< under the Trace panel's step slider
+void tree_fit_panel(State& state, Ui& ui);
 void inspector_panel(State& state, Ui& ui);
+void crowd_panel(State& state, Ui& ui);
 void open_panel(State& state, Ui& ui);
 /// Opens the files dropped on the window; what happened goes to ui.open_status.
 void open_dropped(State& state, Ui& ui);
@@ -93,9 +104,13 @@ void open_dropped(State& state, Ui& ui);
 /// '/' separators, sorted; empty when `dir` is empty or unreadable. The Open panel's listing.
 std::vector<std::string> list_clip_files(const std::string& dir);
 
+/// Saves the scene (placements and camera included) to ui.save_path: the Scene panel's save button and
+/// File > Save scene. The outcome goes to ui.status.
+void save_to_path(State& state, Ui& ui);
+
 /// Moves to trace step k (clamped) and, when following, puts the time cursor on it.
 void go_to_step(State& state, Ui& ui, int k);
-/// Advances the trace while playing.
+/// Advances the trace while playing, and a crowd's time cursor while it plays.
 void update_playback(State& state, Ui& ui, double seconds);
 
 }  // namespace mobb::viewer

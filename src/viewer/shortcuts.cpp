@@ -57,8 +57,8 @@ void run_command(Command command, State& s, Ui& ui) {
             break;
         case Command::Quit: ui.request_quit = true; break;
         case Command::FrameAll: ui.request_frame_all = true; break;
-        case Command::TopView: ui.request_view = 1; break;
-        case Command::SideView: ui.request_view = 2; break;
+        case Command::TopView: ui.request_view = ViewPreset::Top; break;
+        case Command::SideView: ui.request_view = ViewPreset::Side; break;
         case Command::ToggleHelp: ui.show_help = !ui.show_help; break;
     }
 }

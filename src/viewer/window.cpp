@@ -123,10 +123,10 @@ void keyboard(State& s, Ui& ui, Events& events) {
 }
 
 void apply_requests(State& s, Ui& ui, float aspect) {
-    if (ui.request_view == 1) s.camera.top();
-    if (ui.request_view == 2) s.camera.side();
-    if (ui.request_view != 0 || ui.request_frame_all) frame_all(s, aspect);
-    ui.request_view = 0;
+    if (ui.request_view == ViewPreset::Top) s.camera.top();
+    if (ui.request_view == ViewPreset::Side) s.camera.side();
+    if (ui.request_view != ViewPreset::None || ui.request_frame_all) frame_all(s, aspect);
+    ui.request_view = ViewPreset::None;
     ui.request_frame_all = false;
 }
 
@@ -181,7 +181,8 @@ void run_window(State& s, const WindowOptions& options) {
         for (int frame = 1;; ++frame) {
             glfwPollEvents();
             // The last frame: closed, quit (Q), or the frame count reached; drawn, then saved if asked.
-            const bool last = window.should_close() || ui.request_quit || (options.frames > 0 && frame >= options.frames);
+            const bool last =
+                window.should_close() || ui.request_quit || (options.frames > 0 && frame >= options.frames);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();

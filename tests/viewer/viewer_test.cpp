@@ -95,9 +95,9 @@ TEST(Shortcuts, CommandsSetTheirRequests) {
     State s;
     Ui ui;
     run_command(Command::TopView, s, ui);
-    EXPECT_EQ(ui.request_view, 1);
+    EXPECT_EQ(ui.request_view, viewer::ViewPreset::Top);
     run_command(Command::SideView, s, ui);
-    EXPECT_EQ(ui.request_view, 2);
+    EXPECT_EQ(ui.request_view, viewer::ViewPreset::Side);
     run_command(Command::FrameAll, s, ui);
     EXPECT_TRUE(ui.request_frame_all);
     run_command(Command::ToggleHelp, s, ui);

@@ -1,0 +1,232 @@
+// The Crowd panel, for a recorded crowd: play the time cursor, see where fallbacks and contacts fall,
+// pick an agent and one of its choice points, list the candidates (accepted / rejected) and their
+// queries, and open any of them in the trace debugger.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "crowd_view.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace mobb::viewer {
+
+namespace {
+
+/// What a query was against, in words: another agent's clip (committed, or reserved to stop it), its
+/// held ground, or a wall or an obstacle.
+std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q) {
+    if (q.agent < 0) return "wall or obstacle " + std::to_string(q.commit);
+    if (q.piece < 0) return "agent " + std::to_string(q.agent) + ", held ground";
+    try {
+        const auto c = crowd::query_clip(r, q);
+        return "agent " + std::to_string(q.agent) + ", clip " + std::to_string(c->clip) +
+               (q.piece > 0 ? " (its escape)" : "");
+    } catch (const std::out_of_range&) {
+        return "agent " + std::to_string(q.agent) + ", unknown clip";
+    }
+}
+
+/// The run as a strip: fallbacks (upper half) and frames with contacts (lower half) at their time, the
+/// cursor in white. Hover names the nearest mark; a click jumps to it (or to the time clicked),
+/// dragging scrubs.
+void timeline_strip(State& s) {
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record;
+    const float w = std::max(ImGui::GetContentRegionAvail().x, 50.0f), h = 18.0f;
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("timeline", ImVec2(w, h));
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(38, 38, 44, 255));
+    const double frames = double(std::max<std::int64_t>(1, r.frames));
+    auto x_of = [&](double f) { return p0.x + w * float(f / frames); };
+    const ImU32 fallback_colour = ImGui::ColorConvertFloat4ToU32(kFallbackColour);
+    const ImU32 contact_colour = ImGui::ColorConvertFloat4ToU32(kContactColour);
+    for (const TimelineMark& m : v.marks) {
+        const float x = x_of(double(m.frame));
+        const bool fallback = m.kind == TimelineMark::Fallback;
+        draw->AddLine(ImVec2(x, fallback ? p0.y : p0.y + h / 2), ImVec2(x, fallback ? p0.y + h / 2 : p0.y + h),
+                      fallback ? fallback_colour : contact_colour);
+    }
+    const float cx = x_of(s.scene.cursor / r.dt);
+    draw->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p0.y + h), IM_COL32(255, 255, 255, 255), 2.0f);
+    if (!ImGui::IsItemHovered() && !ImGui::IsItemActive()) return;
+    const auto frame = std::int64_t((ImGui::GetIO().MousePos.x - p0.x) / w * float(frames));
+    const TimelineMark* near = nearest_mark(v.marks, frame, std::int64_t(4.0 / w * frames) + 1);
+    if (near && near->kind == TimelineMark::Fallback)
+        ImGui::SetTooltip("fallback: agent %d at %.2f s", near->agent, double(near->frame) * r.dt);
+    else if (near)
+        ImGui::SetTooltip("%d agent pairs in contact at %.2f s", near->count, double(near->frame) * r.dt);
+    if (ImGui::IsItemClicked() && near)
+        jump_to(s, *near);
+    else if (ImGui::IsItemActive())
+        s.scene.cursor = std::clamp(double(frame), 0.0, frames) * r.dt;
+}
+
+/// Fallbacks and agent pairs in contact per second of the run (ImGui's PlotHistogram); a click moves the
+/// time cursor there.
+void events_over_time(State& s) {
+    if (s.crowd->marks.empty()) return;  // nothing to plot: the counts below say so
+    const crowd::Record& r = s.crowd->record;
+    const double seconds = double(r.frames) * r.dt;
+    const int bins = std::clamp(int(std::ceil(seconds)), 1, 600);
+    std::vector<float> fallbacks(std::size_t(bins), 0.0f), contacts(std::size_t(bins), 0.0f);
+    for (const TimelineMark& m : s.crowd->marks) {
+        const auto b = std::size_t(std::clamp(int(double(m.frame) * r.dt / seconds * bins), 0, bins - 1));
+        if (m.kind == TimelineMark::Fallback)
+            fallbacks[b] += 1.0f;
+        else
+            contacts[b] += float(m.count);
+    }
+    const float w = ImGui::GetContentRegionAvail().x;
+    const auto plot = [&](const char* id, const std::vector<float>& v, ImVec4 colour, const char* what) {
+        const float high = std::max(1.0f, *std::max_element(v.begin(), v.end()));
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "%s per second (max %.0f)", what, double(high));
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colour);
+        ImGui::PlotHistogram(id, v.data(), int(v.size()), 0, overlay, 0.0f, high, ImVec2(w, 30));
+        ImGui::PopStyleColor();
+        time_line(s.scene.cursor, 0.0, seconds, IM_COL32(255, 255, 255, 200));
+        if (ImGui::IsItemClicked()) s.scene.cursor = double(plot_fraction()) * seconds;
+    };
+    plot("##fallbacks", fallbacks, kFallbackColour, "fallbacks");
+    plot("##contacts", contacts, kContactColour, "contact pairs");
+}
+
+/// The record in one line, playback, the timeline strip, the plots and counts of fallbacks and contacts.
+void playback(State& s) {
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record;
+    if (!r.scenario.empty()) ImGui::Text("scenario %s", r.scenario.c_str());
+    ImGui::Text("%d agents, %.1f s, %s, seed %llu", v.agents, double(r.frames) * r.dt, r.select.c_str(),
+                static_cast<unsigned long long>(r.seed));
+    if (ImGui::Button(v.playing ? "pause" : "play")) v.playing = !v.playing;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::SliderFloat("rate", &v.rate, 0.1f, 4.0f, "%.1f x");
+    float t = float(s.scene.cursor);
+    if (ImGui::SliderFloat("time", &t, 0.0f, float(double(r.frames) * r.dt), "%.2f s")) s.scene.cursor = double(t);
+    timeline_strip(s);
+    const auto count = [&](TimelineMark::Kind kind) {
+        return std::count_if(v.marks.begin(), v.marks.end(), [&](const auto& m) { return m.kind == kind; });
+    };
+    events_over_time(s);
+    ImGui::TextColored(kFallbackColour, "%ld fallbacks", long(count(TimelineMark::Fallback)));
+    ImGui::SameLine();
+    ImGui::TextColored(kContactColour, "%ld contact frames", long(count(TimelineMark::Contact)));
+}
+
+/// The camera presets, named as in the Scene panel; the tooltips give their keys.
+void view_buttons(Ui& ui) {
+    if (ImGui::Button("top")) ui.request_view = ViewPreset::Top;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("top view (T)");
+    ImGui::SameLine();
+    if (ImGui::Button("side")) ui.request_view = ViewPreset::Side;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("side view (S)");
+}
+
+/// The agent chosen, what its skeletons lack, and its choice points; choosing one moves the cursor to it.
+void choice_list(State& s) {
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record;
+    int agent = v.agent;
+    if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select_choice(s, agent, -1);
+    if (!v.graph)
+        ImGui::TextWrapped("graph not loaded (%s): no skeletons, candidates listed only", v.graph_error.c_str());
+    else if (!skeleton_problem(v).empty())
+        ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
+    ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
+    const std::vector<int> choices = agent_choices(v, v.agent);
+    ImGui::BeginChild("choices", ImVec2(0, 110), true);
+    for (int k : choices) {
+        const crowd::ChoicePoint& c = r.choices[std::size_t(k)];
+        char label[96];
+        const std::string outcome = c.outcome == "candidate" ? "" : " (" + c.outcome + ")";
+        std::snprintf(label, sizeof label, "%.2f s: clip %d, %zu candidates%s##%d", double(c.frame) * r.dt, c.taken,
+                      c.candidates.size(), outcome.c_str(), k);
+        if (ImGui::Selectable(label, v.choice == k)) {
+            select_choice(s, v.agent, v.choice == k ? -1 : k);
+            if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;
+        }
+    }
+    ImGui::EndChild();
+}
+
+/// One candidate of the selected choice point, coloured taken / clear / rejected, unfolding into its
+/// queries in the order the crowd ran them (other agent, its clip, the answer); clicking one opens it
+/// in the trace debugger.
+void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
+    CrowdView& v = *s.crowd;
+    const crowd::Candidate& cand = c.candidates[std::size_t(k)];
+    const bool taken = cand.clip == c.taken;
+    const bool ok = !cand.outside && cand.hits == 0 && !cand.crowded;
+    const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f)
+                          : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
+                                : glm::vec3(0.9f, 0.2f, 0.2f);
+    // Why it was refused, short enough for the row; hovering it gives the whole reason.
+    const char* why = cand.outside ? " (wall)" : cand.crowded ? " (too close)" : "";
+    const char* why_long = cand.outside   ? "Leaves the world (random mode) or meets a wall or an obstacle."
+                           : cand.crowded ? "Would stop too close to where another agent stands (the standing gap)."
+                                          : nullptr;
+    char label[128];
+    std::snprintf(label, sizeof label, "clip %d: %s%s, %d queries, %d hits###cand%d", cand.clip,
+                  taken ? "taken"
+                  : ok  ? "clear"
+                        : "rejected",
+                  why, cand.queries, cand.hits, k);
+    ImGui::PushStyleColor(ImGuiCol_Text, imvec(col));
+    // The candidate whose query is open stays unfolded.
+    if (v.opened_candidate == k) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+    const bool open = ImGui::TreeNodeEx(label, cand.against.empty() ? ImGuiTreeNodeFlags_Leaf : 0);
+    ImGui::PopStyleColor();
+    if (why_long && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", why_long);
+    if (!open) return;
+    for (std::size_t j = 0; j < cand.against.size(); ++j) {
+        const crowd::CandidateQuery& q = cand.against[j];
+        std::snprintf(label, sizeof label, "vs %s: %s###q%d_%zu", query_target(v.record, q).c_str(),
+                      q.hit ? "hit" : "clear", k, j);
+        const bool shown = v.opened_candidate == k && v.opened_query == int(j);
+        if (ImGui::Selectable(label, shown) && v.graph) open_candidate_query(s, k, int(j), &ui.status);
+    }
+    ImGui::TreePop();
+}
+
+/// The selected choice point: its counts, who gave way, the plan looked ahead, and its candidates.
+void choice_details(State& s, Ui& ui) {
+    const crowd::ChoicePoint& c = s.crowd->record.choices[std::size_t(s.crowd->choice)];
+    ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
+                static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
+    for (const crowd::ReroutedPlan& rr : c.reroutes) ImGui::TextWrapped("agent %d gave way (right of way)", rr.agent);
+    if (!c.intended.empty()) {
+        std::string plan = "plan: clip " + std::to_string(c.taken);
+        for (const crowd::FramedClip& e : c.intended) plan += ", " + std::to_string(e.clip);
+        ImGui::TextWrapped("%s (looked ahead)", plan.c_str());
+    }
+    // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
+    std::size_t rows = c.candidates.size();
+    for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();
+    const float height = float(std::min<std::size_t>(rows, 14)) * ImGui::GetTextLineHeightWithSpacing() + 8.0f;
+    ImGui::BeginChild("candidates", ImVec2(0, height), true);
+    for (std::size_t k = 0; k < c.candidates.size(); ++k) candidate_row(s, ui, c, int(k));
+    ImGui::EndChild();
+}
+
+}  // namespace
+
+void crowd_panel(State& s, Ui& ui) {
+    if (!s.crowd || !ui.panels.crowd) return;
+    // Bottom middle, between the tree-fit and trace panels, clear of the crowd seen from the default camera.
+    ImGui::SetNextWindowPos(ImVec2(456, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Crowd", &ui.panels.crowd)) return ImGui::End();
+    playback(s);
+    view_buttons(ui);
+    choice_list(s);
+    if (s.crowd->choice >= 0) choice_details(s, ui);
+    if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
+    ImGui::End();
+}
+
+}  // namespace mobb::viewer
