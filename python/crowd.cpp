@@ -1,6 +1,7 @@
 // mobb.crowd: the graph-driven crowd of `mobb crowd` (crowd/crowd.h), its summary, metrics and tracks.
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -62,17 +63,41 @@ crowd::CrowdOptions crowd_options(const CrowdArgs& a, crowd::Scenario& scenario)
     return o;
 }
 
-// (agents, frames, 4) float64: every agent's disk (t, x, y, r) at every global frame.
+// (agents, frames, 4) float64: every agent's disk (t, x, y, r) at every global frame, NaN from the frame
+// an agent left the run on.
 py::array_t<double> tracks_array(const crowd::Record& record) {
     const auto agents = py::ssize_t(record.tracks.size()), frames = py::ssize_t(record.frames);
     py::array_t<double> out({agents, frames, py::ssize_t(4)});
     auto o = out.mutable_unchecked<3>();
     for (py::ssize_t a = 0; a < agents; ++a) {
         const auto& samples = record.tracks[std::size_t(a)].samples;
-        if (py::ssize_t(samples.size()) != frames) throw std::runtime_error("crowd: a track is not one sample per frame");
+        if (py::ssize_t(samples.size()) > frames) throw std::runtime_error("crowd: a track longer than the run");
         for (py::ssize_t f = 0; f < frames; ++f)
-            for (py::ssize_t k = 0; k < 4; ++k) o(a, f, k) = samples[std::size_t(f)][std::size_t(k)];
+            for (py::ssize_t k = 0; k < 4; ++k)
+                o(a, f, k) = f < py::ssize_t(samples.size()) ? samples[std::size_t(f)][std::size_t(k)]
+                                                             : std::numeric_limits<double>::quiet_NaN();
     }
+    return out;
+}
+
+// Each agent's goals as a (g, 2) array (g = 0 for one that wanders).
+py::list goals_list(const crowd::Record& record) {
+    py::list out;
+    for (const crowd::AgentTrack& track : record.tracks) {
+        py::array_t<double> goals({py::ssize_t(track.goals.size()), py::ssize_t(2)});
+        auto g = goals.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < track.goals.size(); ++i)
+            for (py::ssize_t k = 0; k < 2; ++k) g(py::ssize_t(i), k) = track.goals[i][std::size_t(k)];
+        out.append(goals);
+    }
+    return out;
+}
+
+// (agents,) int64: the frame each agent left the run at, -1 for one still in it at the end.
+py::array_t<std::int64_t> left_frames(const crowd::Record& record) {
+    py::array_t<std::int64_t> out(py::ssize_t(record.tracks.size()));
+    auto o = out.mutable_unchecked<1>();
+    for (std::size_t a = 0; a < record.tracks.size(); ++a) o(py::ssize_t(a)) = record.tracks[a].left_frame.value_or(-1);
     return out;
 }
 
@@ -139,6 +164,8 @@ py::dict run(const CrowdArgs& args) {
     out["metrics"] = loads(metrics_text);
     out["tracks"] = tracks_array(result.record);
     out["clips"] = clips_list(result.record);
+    out["goals"] = goals_list(result.record);
+    out["left_frame"] = left_frames(result.record);
     out["dt"] = result.record.dt;
     out["graph"] = file;
     out["narrow_phase"] = narrow_name;
@@ -184,8 +211,11 @@ tree      None: the circle sweep; else a tree type ("mobb", "umobb", ...) whose 
 scenario  a scenario JSON (it sets agents, world, select and seconds); record: write the record there.
 Returns a dict: summary (the record's counts, plus threads, seconds and cd_seconds of wall time),
 metrics (as `mobb crowd` prints them), tracks ((agents, frames, 4) float64 array of every agent's disk
-(t, x, y, r) per frame, seconds and metres), clips (per agent, a (c, 6) array of clip id, start frame,
-x, y, theta (radians), t0 (s)), dt (seconds per frame), graph, narrow_phase, scenario.)doc");
+(t, x, y, r) per frame, seconds and metres; NaN from the frame an agent left the run on), clips (per
+agent, a (c, 6) array of clip id, start frame, x, y, theta (radians), t0 (s)), goals (per agent, a
+(g, 2) array of its goals in turn, metres; g = 0 when it wanders), left_frame ((agents,) int64: the
+frame an agent that leaves at its last goal left the run, -1 otherwise), dt (seconds per frame), graph,
+narrow_phase, scenario.)doc");
 }
 
 }  // namespace mobb::python

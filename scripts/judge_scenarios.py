@@ -11,8 +11,11 @@ environment), then reads R.json (layout: include/mobb/crowd/record.h) and judges
   pass     no two agents' disks overlap at any frame (|p_a - p_b| < r_a + r_b); no disk on an obstacle (the
            centre inside the polygon, or closer to its boundary than r) or, in a walled world, past the world
            rectangle (x - r < x0, ...; unwalled: the centre outside it); and every agent is within 1 m of its
-           goal (distance < 1) from some frame at or before its deadline to the end of the run. Deadline:
-           min(time limit, start_time + 3 d / 1.3 m/s + 20 s), d the straight start-goal distance.
+           goal (distance < 1) from some frame at or before its deadline to the end of the run - or, for
+           an agent that leaves the run at its goal ("left_frame"), to the frame it left. With goals in
+           turn ("goals"), the last counts from the frame the one before was first within 1 m. Deadline:
+           min(time limit, start_time + 3 d / 1.3 m/s + 20 s), d the straight distance from the start
+           through the goals in turn.
   goal ok  agents meeting the goal rule above; reached: agents within 1 m of the goal at some frame. A
            failed goal is one of: never within 1 m; late (first within 1 m after the deadline); in time but
            out of the 1 m circle at some later frame (with how far it went, and whether it was back in).
@@ -92,7 +95,12 @@ def judge(record_path, scenario, stdout):
     dt, frames = float(rec["dt"]), int(rec["frames"])
     tracks = rec["tracks"]
     n = len(tracks)
-    s = np.array([t["samples"] for t in tracks], dtype=float).reshape(n, frames, 4)
+    # An agent that left the run (at_goal "leave") has samples up to its left_frame: NaN after, which
+    # meets nothing.
+    s = np.full((n, frames, 4), np.nan)
+    for a, t in enumerate(tracks):
+        if t["samples"]:
+            s[a, :len(t["samples"])] = np.asarray(t["samples"], dtype=float)
     x, y, r = s[:, :, 1], s[:, :, 2], s[:, :, 3]
     reasons, kinds = [], []
 
@@ -151,7 +159,8 @@ def judge(record_path, scenario, stdout):
     # Goals.
     agents = scenario.get("agents", [])
     time_limit = float(scenario.get("time_limit", frames * dt))
-    goal_agents = [a for a in range(n) if "goal" in tracks[a]]
+    goals_of = lambda t: [t["goal"]] if "goal" in t else t.get("goals", [])
+    goal_agents = [a for a in range(n) if goals_of(tracks[a])]
     late, never, left = [], [], []
     settle = np.full(n, -1)
     ratios, idle, counted = [], 0, 0
@@ -172,13 +181,24 @@ def judge(record_path, scenario, stdout):
         start_time = float(agents[a].get("start_time", 0)) if a < len(agents) else 0.0
         first_frame = min(frames, int(math.ceil(start_time / dt - 1e-9)))
         end = frames
-        if "goal" in tracks[a]:
-            g = np.asarray(tracks[a]["goal"], dtype=float)
+        if goals_of(tracks[a]):
+            goals = np.asarray(goals_of(tracks[a]), dtype=float)
+            g = goals[-1]
             start = np.asarray(agents[a]["start"], dtype=float) if a < len(agents) else s[a, 0, 1:3]
-            d0 = float(np.hypot(*(g - start)))
+            d0 = float(np.hypot(*(goals[0] - start)) + sum(np.hypot(*(goals[k + 1] - goals[k]))
+                                                            for k in range(len(goals) - 1)))
             deadline = min(time_limit, start_time + 3 * d0 / DEADLINE_SPEED + 20)
+            # Each goal within 1 m in turn; the last from the frame the one before was reached on.
+            before = 0
+            for k in range(len(goals) - 1):
+                near = np.nonzero(np.hypot(x[a, before:] - goals[k][0], y[a, before:] - goals[k][1]) < GOAL_RADIUS)[0]
+                before = before + int(near[0]) if len(near) else frames
             dist = np.hypot(x[a] - g[0], y[a] - g[1])
             inside = dist < GOAL_RADIUS
+            inside[:before] = False
+            # An agent that left the run is judged up to the frame it left (its samples end there).
+            last = tracks[a].get("left_frame", frames)
+            inside = inside[:last]
             if inside.any():
                 arrival = int(np.argmax(inside))
                 end = arrival
@@ -187,6 +207,8 @@ def judge(record_path, scenario, stdout):
                     ratios.append(max(0.0, t_arrival - start_time) / (d0 / speed))
                 outside = np.nonzero(~inside)[0]
                 settle[a] = (int(outside[-1]) + 1 if len(outside) else 0) if inside[-1] else -1
+                if "left_frame" in tracks[a]:
+                    settle[a] = arrival  # it left the run at its goal: nothing after to stay for
                 if t_arrival > deadline + 1e-9:
                     late.append((a, t_arrival, deadline))
                 elif settle[a] < 0 or settle[a] * dt > deadline + 1e-9:

@@ -19,26 +19,34 @@ import random
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 HARD = os.path.join(HERE, "hard")
-NOT_PASSING_YET = {"evacuation", "fan_in", "four_way_hallways"}  # bench/results/README.md, issue 28
+NOT_PASSING_YET = {"evacuation", "four_way_hallways"}  # bench/results/README.md, issue 28
 CLEAR = 1.0   # metres from walls and obstacles to a start or a goal
 APART = 1.4   # metres between starts, and between goals
 
 
-def agent(start, goal, heading=None, start_time=None):
+def agent(start, goal, heading=None, start_time=None, via=()):
+    """An agent from `start` to `goal`, through the points of `via` in turn first ("goals" then)."""
     a = {"start": [round(start[0], 2), round(start[1], 2)]}
     if heading is not None:
         a["heading"] = round(heading, 1)
     if start_time:
         a["start_time"] = start_time
-    a["goal"] = [round(goal[0], 2), round(goal[1], 2)]
+    point = lambda p: [round(p[0], 2), round(p[1], 2)]
+    if via:
+        a["goals"] = [point(p) for p in via] + [point(goal)]
+    else:
+        a["goal"] = point(goal)
     return a
 
 
-def write(name, source, description, world, time_limit, agents, obstacles=(), folder=HERE):
+def write(name, source, description, world, time_limit, agents, obstacles=(), folder=HERE, at_goal=None):
     """Obstacles: (x0, y0, x1, y1) rectangles, or {"polygon": [[x, y], ...]} as they are."""
     scenario = {"name": name, "description": description, "source": source, "world": world, "walls": True,
                 "obstacles": [o if isinstance(o, dict) else {"rectangle": list(o)} for o in obstacles],
-                "time_limit": time_limit, "agents": agents}
+                "time_limit": time_limit}
+    if at_goal:
+        scenario["at_goal"] = at_goal
+    scenario["agents"] = agents
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, name + ".json"), "w") as f:
         json.dump(scenario, f, indent=2)
@@ -166,14 +174,18 @@ def main():
           [agent(s, g) for s, g in zip(starts, goals)], obstacles)
 
 
-def checked(agents, world, obstacles=()):
+def checked(agents, world, obstacles=(), shared_goals=False):
     """The agents as given, after checking the rules every scenario keeps: starts and goals clear of walls and
-    obstacles by CLEAR, starts APART from each other and goals APART from each other."""
-    for key in ("start", "goal"):
-        points = [tuple(a[key]) for a in agents]
+    obstacles by CLEAR, starts APART from each other and last goals APART from each other (unless the
+    agents leave there: then they may share one)."""
+    last = lambda a: a["goals"][-1] if "goals" in a else a["goal"]
+    for key, of in (("start", lambda a: a["start"]), ("goal", last)):
+        points = [tuple(of(a)) for a in agents]
         for k, p in enumerate(points):
             assert clear_of(p, world, obstacles), (key, k, p)
-            assert all(math.dist(p, q) >= APART for q in points[:k]), (key, k, p)
+            assert shared_goals and key == "goal" or all(math.dist(p, q) >= APART for q in points[:k]), (key, k, p)
+    for a in agents:
+        assert all(clear_of(p, world, obstacles) for p in a.get("goals", [])), a
     return agents
 
 
@@ -303,6 +315,48 @@ def more():
         world, 120, [agent(s, g) for s, g in zip(starts, goals)], walls)
 
 
+def leaving_and_sequences():
+    """Scenarios whose agents leave at their goals (SteerSuite's semantics: an exit, a door) or walk through
+    goal sequences (SteerSuite's goalSequence of static targets)."""
+    # bottleneck-evacuation as SteerSuite runs it: everyone leaves the room through its 2.4 m door for
+    # one exit beyond it, and leaves the run there.
+    world = [-16, -10, 20, 10]
+    walls = [(-0.5, -10, 0.5, -1.2), (-0.5, 1.2, 0.5, 10)]
+    rng = random.Random(2812)
+    starts = scatter(rng, 30, [2, -9, 19, 9], world, walls)
+    agents = [agent(s, (-10, 0), rng.uniform(-180, 180)) for s in starts]
+    write("evacuation_exit", "SteerSuite testcases/bottleneck-evacuation.xml (30 agents instead of 200; they leave at the exit)",
+          "Thirty agents leave a walled room through its one door, 2.4 m wide, for one exit 10 m beyond it, "
+          "where each leaves the run.", world, 120, checked(agents, world, walls, shared_goals=True), walls,
+          at_goal="leave")
+
+    # fan-in as SteerSuite runs it: six agents standing close together make for one point 20 m ahead and
+    # leave there.
+    formation = [(0, 0), (0, -1.3), (-2, 0), (-1, -1), (1.3, 1), (-1.4, 1.4)]
+    agents = [agent((1.5 * x, 1.5 * y), (0, 20), 90) for x, y in formation]
+    world = [-10, -6, 10, 26]
+    write("fan_in_exit", "SteerSuite testcases/fan-in.xml (start formation 1.5 x larger; they leave at the point)",
+          "Six agents standing close together converge on one point 20 m ahead, where each leaves the run.",
+          world, 60, checked(agents, world, shared_goals=True), at_goal="leave")
+
+    # Goal sequences: eight agents cross a square round a central block, each through two waypoints on
+    # its own side of the block (north for those from the west, south for those from the east), so the
+    # two groups cross twice; each stays at a goal of its own.
+    world = [-14, -14, 14, 14]
+    block = [(-2, -2, 2, 2)]
+    agents = []
+    for k, y in enumerate((-6.0, -3.0, 3.0, 6.0)):
+        agents.append(agent((-12, y), (10, 1.5 * k - 2.25), 0, via=((-5, 5 + 0.8 * k), (5, 5 + 0.8 * k))))
+        agents.append(agent((12, y + 0.7), (-10, 1.5 * k - 2.25), 180,
+                            via=((5, -5 - 0.8 * k), (-5, -5 - 0.8 * k))))
+    write("waypoints", "SteerSuite's goalSequence (several seekStaticTarget goals in turn), on a crossing as in "
+          "testcases/crossing-obstacle.xml",
+          "Eight agents cross a 28 m square round a 4 m block, each through two waypoints on its side of the "
+          "block, the two groups meeting twice; each stays at a goal of its own.",
+          world, 90, checked(agents, world, block), block)
+
+
 if __name__ == "__main__":
     main()
     more()
+    leaving_and_sequences()

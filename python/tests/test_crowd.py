@@ -38,3 +38,19 @@ def test_crowd_scenario_refuses_its_own_options():
     scenario = os.path.join(folder, sorted(f for f in os.listdir(folder) if f.endswith(".json"))[0])
     with pytest.raises(ValueError, match="agents does not go with scenario"):
         mobb.crowd(scenario=scenario, agents=3)
+
+
+def test_crowd_agents_that_leave_and_goal_sequences():
+    folder = os.path.join(SOURCE_DIR, "assets", "scenarios")
+    run = mobb.crowd(scenario=os.path.join(folder, "fan_in_exit.json"), threads=1)
+    left = run["left_frame"]
+    assert left.shape == (6,) and left.dtype == np.int64
+    assert (left > 0).all() and (left < run["tracks"].shape[1]).all()
+    for a, frame in enumerate(left):
+        assert not np.isnan(run["tracks"][a, :frame]).any()
+        assert np.isnan(run["tracks"][a, frame:]).all()  # gone from the run
+        np.testing.assert_array_equal(run["goals"][a], [[0, 20]])
+    assert run["metrics"]["left"] == 6
+    run = mobb.crowd(scenario=os.path.join(folder, "waypoints.json"), threads=1)
+    assert all(g.shape == (3, 2) for g in run["goals"])
+    assert (run["left_frame"] == -1).all()

@@ -1,6 +1,7 @@
 // mobb scenario import: crowd scenarios from other tools' test cases (SteerSuite's XML).
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,9 @@ void add_import(CLI::App& group, int& exit_code) {
         ->capture_default_str();
     cmd->add_option("--time-limit", o->time_limit, "Seconds (default: estimated from the longest walk)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--at-goal", o->at_goal, "At their last goal agents leave (SteerSuite's semantics, the default) or stay")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, crowd::AtGoal>{{"leave", crowd::AtGoal::Leave}, {"stay", crowd::AtGoal::Stay}}));
     cmd->add_option("--graph", *graph,
                     "Motion graph whose agents must fit (default: assets/graphs/cmu_locomotion.json, as mobb crowd)");
     cmd->callback([=, &exit_code] {

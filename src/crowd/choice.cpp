@@ -253,7 +253,7 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal, a.waited, false, {}};
+    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.waited, false, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
@@ -659,7 +659,7 @@ void Choice::evaluate(const CrowdState& s) {
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, Hits::Stop)) continue;
         const auto& routes = s.escapes.routes[std::size_t(c.clip)];
-        const std::uint32_t crowded = a.goal ? 0 : crowded_routes(s, k);
+        const std::uint32_t crowded = a.goals.empty() ? crowded_routes(s, k) : 0;
         const std::vector<int>* refused_route = nullptr;
         std::size_t refused = 0;
         for (std::size_t r = 0; r < routes.size(); ++r) {

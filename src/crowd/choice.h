@@ -97,7 +97,10 @@ SpaceTimeBox box_of(const Piece& piece);
 struct Agent {
     Placement start;
     std::int64_t start_frame = 0;  ///< stands at its start until then
-    std::optional<std::array<double, 2>> goal;
+    std::vector<std::array<double, 2>> goals;  ///< AgentSpec::goals, reached in turn
+    std::size_t next_goal = 0;                 ///< the one it heads for now
+    AtGoal at_goal = AtGoal::Stay;
+    std::optional<std::int64_t> left_frame;    ///< it left the run then (AtGoal::Leave)
     std::vector<PlacedClip> clips;  ///< committed, in time order
     Plan plan;                      ///< reserved beyond its last clip
     std::vector<int> reserved;      ///< broad-phase ids of the plan's pieces
@@ -105,6 +108,14 @@ struct Agent {
     int waited = 0;                 ///< choice points in a row it followed its escape
     std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
     LearnedCost learned;            ///< what its look-aheads learned of the time to go (look_ahead.h)
+
+    /// The goal it heads for now; nothing for an agent that wanders.
+    std::optional<std::array<double, 2>> goal() const {
+        if (next_goal >= goals.size()) return std::nullopt;
+        return goals[next_goal];
+    }
+    /// Whether it stands at the goal it heads for for good: the last one, and it stays.
+    bool stops_at_goal() const { return next_goal + 1 == goals.size() && at_goal == AtGoal::Stay; }
 };
 
 /// What a choice point reads, all of it frozen while a frame's choice points are evaluated.

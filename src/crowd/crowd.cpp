@@ -47,8 +47,7 @@ BroadPhase solid_grid(const std::vector<Polygon>& solids, const CrowdOptions& o)
 
 std::vector<std::array<double, 2>> goals_of(const CrowdOptions& o) {
     std::vector<std::array<double, 2>> out;
-    for (const AgentSpec& a : o.placed)
-        if (a.goal) out.push_back(*a.goal);
+    for (const AgentSpec& a : o.placed) out.insert(out.end(), a.goals.begin(), a.goals.end());
     return out;
 }
 
@@ -84,6 +83,9 @@ private:
     void place_agents();
     void place_at_random(double gap, double margin);
     void reserve_starts();
+    std::array<double, 2> last_position(const Agent& a) const;
+    void reach_goals(std::int64_t frame, std::vector<int>& batch);
+    void leave(int agent, std::int64_t frame);
     void run_frames(const std::function<void(double)>& progress);
     // Not inlined: a profile of the collision detection collects this (callgrind --toggle-collect).
     [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
@@ -175,7 +177,7 @@ void Simulation::place_at_random(double gap, double margin) {
                                         std::to_string(gap) + " m apart in the world");
         grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(
             a);
-        agents_.push_back({p, 0, std::nullopt, {}, {}, {}, false, 0, 0, {}});
+        agents_.emplace_back().start = p;
     }
 }
 
@@ -190,8 +192,11 @@ void Simulation::place_agents() {
         Placement p = s.start;
         p.t0 = 0;
         const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
-        const std::int64_t start = std::max<std::int64_t>(0, frame);
-        agents_.push_back({p, start, s.goal, {}, {}, {}, false, 0, start, {}});
+        Agent& a = agents_.emplace_back();
+        a.start = p;
+        a.start_frame = a.moved_until = std::max<std::int64_t>(0, frame);
+        a.goals = s.goals;
+        a.at_goal = s.at_goal;
     }
 }
 
@@ -441,6 +446,55 @@ void Simulation::commit(Choice& c) {
     cp.candidates = std::move(candidates);
 }
 
+// Where the agent's disk is at the frame before its choice point: the last sample of its last clip (as
+// the record has it), or its start.
+std::array<double, 2> Simulation::last_position(const Agent& a) const {
+    if (a.clips.empty()) return {a.start.x, a.start.y};
+    const PlacedClip& c = a.clips.back();
+    const Sample& s = g_.clips[std::size_t(c.clip)].path.samples.back();
+    const Rigid2 m = Rigid2::of(c.place);
+    return {m.apply_x(s.x, s.y), m.apply_y(s.x, s.y)};
+}
+
+// Agents at a choice point whose disk came within the goal radius of the goal they head for: they head
+// for the next one, or - at the last, when they leave - leave the run (after one clip at least, so that
+// every track has samples) and drop out of the batch.
+void Simulation::reach_goals(std::int64_t frame, std::vector<int>& batch) {
+    const std::size_t before = batch.size();
+    std::size_t kept = 0;
+    for (int agent : batch) {
+        Agent& a = agents_[std::size_t(agent)];
+        const auto goal = a.goal();
+        if (goal && !a.stops_at_goal() && frame >= a.start_frame && !a.clips.empty()) {
+            const auto [x, y] = last_position(a);
+            if (std::hypot(x - (*goal)[0], y - (*goal)[1]) < o_.goal_radius) {
+                ++a.next_goal;
+                a.learned.clear();  // times to go to the goal reached
+            }
+        }
+        if (a.at_goal == AtGoal::Leave && !a.goal() && !a.clips.empty()) {
+            leave(agent, frame);
+            continue;
+        }
+        batch[kept++] = agent;
+    }
+    batch.resize(kept);
+    if (kept == before) return;
+    flush();  // the frame's choice points see the ground they left free
+    apply_waiting();
+}
+
+// The agent leaves the run at `frame`: what it reserved is released, it waits no more, and it has no
+// more choice points.
+void Simulation::leave(int agent, std::int64_t frame) {
+    Agent& a = agents_[std::size_t(agent)];
+    a.left_frame = frame;
+    for (int id : a.reserved) released_.push_back(id);
+    a.reserved.clear();
+    a.plan = {};
+    if (in_waiting_[std::size_t(agent)]) wait_changes_.push_back({agent, false});
+}
+
 void Simulation::run_frames(const std::function<void(double)>& progress) {
     const std::int64_t frames = out_.record.frames;
     due_.assign(std::size_t(frames), {});
@@ -459,6 +513,7 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
         if (batch.empty()) continue;
         std::sort(batch.begin(), batch.end());  // commit order: agent ids within a frame
+        reach_goals(f, batch);
         const auto start = Clock::now();
         broad_.expire(f);  // clips ending by now cannot overlap a candidate starting now
         for (std::int64_t e = expired_until_; e <= f; ++e) {
@@ -481,11 +536,14 @@ void Simulation::fill_samples() {
     pool_.for_each(agents_.size(), [&](std::size_t a, int) {
         AgentTrack& t = out_.record.tracks[a];
         t.clips = std::move(agents_[a].clips);
-        t.goal = agents_[a].goal;
-        t.samples.reserve(std::size_t(frames));
+        t.goals = agents_[a].goals;
+        t.at_goal = agents_[a].at_goal;
+        t.left_frame = agents_[a].left_frame;
+        const std::int64_t until = t.left_frame.value_or(frames);
+        t.samples.reserve(std::size_t(until));
         std::size_t k = 0;
         Rigid2 m = Rigid2::of(t.clips[0].place);  // the core's own transform, so the check rounds as the queries do
-        for (std::int64_t f = 0; f < frames; ++f) {
+        for (std::int64_t f = 0; f < until; ++f) {
             if (k + 1 < t.clips.size() && t.clips[k + 1].start <= f) m = Rigid2::of(t.clips[++k].place);
             const PlacedClip& c = t.clips[k];
             const Sample& s = g_.clips[std::size_t(c.clip)].path.samples[std::size_t(f - c.start)];

@@ -47,6 +47,8 @@ public:
     /// Seconds learned at (x, y); 0 where nothing was.
     double at(double x, double y) const;
     void raise(double x, double y, double seconds);
+    /// Forgets everything: what was learned holds for one goal only.
+    void clear() { value_.clear(); }
 
 private:
     static std::int64_t key(double x, double y);

@@ -18,12 +18,27 @@ using Samples = std::vector<std::array<double, 4>>;
 
 double step(const Samples& s, std::size_t f) { return std::hypot(s[f + 1][1] - s[f][1], s[f + 1][2] - s[f][2]); }
 
-// The first frame within `radius` of the goal, or -1.
+// The first frame within `radius` of the last goal after coming within it of each goal before in turn,
+// or -1.
 std::int64_t arrival(const AgentTrack& t, double radius) {
-    if (!t.goal) return -1;
-    for (std::size_t f = 0; f < t.samples.size(); ++f)
-        if (std::hypot(t.samples[f][1] - (*t.goal)[0], t.samples[f][2] - (*t.goal)[1]) < radius) return std::int64_t(f);
+    std::size_t f = 0;
+    for (std::size_t k = 0; k < t.goals.size(); ++k) {
+        const auto& g = t.goals[k];
+        while (f < t.samples.size() && !(std::hypot(t.samples[f][1] - g[0], t.samples[f][2] - g[1]) < radius)) ++f;
+        if (f == t.samples.size()) return -1;
+        if (k + 1 == t.goals.size()) return std::int64_t(f);
+    }
     return -1;
+}
+
+// The straight lines from the start through the goals in turn, metres.
+double straight_length(const AgentTrack& t) {
+    double length = 0, x = t.samples[0][1], y = t.samples[0][2];
+    for (const auto& g : t.goals) {
+        length += std::hypot(g[0] - x, g[1] - y);
+        x = g[0], y = g[1];
+    }
+    return length;
 }
 
 // Idle frames of one agent before `until`: ground speed over the window centred on the frame below the
@@ -183,12 +198,13 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
         m.longest_idle = std::max(m.longest_idle, double(idle_frames(s, until, dt, idle)) * dt);
         double to_goal = 0;
         for (std::int64_t f = 0; f < until && std::size_t(f) + 1 < s.size(); ++f) to_goal += step(s, std::size_t(f));
-        if (t.goal) ++m.goal_agents;
+        if (!t.goals.empty()) ++m.goal_agents;
         if (reached >= 0) {
             ++m.reached;
+            m.left += t.left_frame.has_value();
             time += double(reached) * dt;
             m.max_time_to_goal = std::max(m.max_time_to_goal, double(reached) * dt);
-            const double straight = std::hypot((*t.goal)[0] - s[0][1], (*t.goal)[1] - s[0][2]);
+            const double straight = straight_length(t);
             ratio += straight > 0 ? to_goal / straight : 1.0;
             time_ratio += straight > 0 ? double(reached) * dt * m.walking_speed / straight : 1.0;
         }
@@ -228,6 +244,7 @@ std::string metrics_json(const CrowdMetrics& m) {
     j["longest_idle"] = rounded(m.longest_idle, 6);
     j["goal_agents"] = m.goal_agents;
     j["reached"] = m.reached;
+    j["left"] = m.left;
     j["mean_time_to_goal"] = rounded(m.mean_time_to_goal, 6);
     j["max_time_to_goal"] = rounded(m.max_time_to_goal, 6);
     j["path_ratio"] = rounded(m.path_ratio, 6);
@@ -250,7 +267,8 @@ std::string metrics_text(const CrowdMetrics& m) {
         << "idle                     " << 100.0 * m.idle_share << " % of agent time, longest " << m.longest_idle
         << " s\n";
     if (m.goal_agents > 0)
-        out << "goals                    " << m.reached << " of " << m.goal_agents << " reached, mean "
+        out << "goals                    " << m.reached << " of " << m.goal_agents << " reached ("
+            << m.left << " left the run there), mean "
             << m.mean_time_to_goal << " s, last " << m.max_time_to_goal << " s, path " << m.path_ratio
             << " x the straight line: " << (m.passed ? "PASSED" : "FAILED") << "\n"
             << "time to goal             " << m.time_ratio << " x the straight line at the graph's walking speed ("

@@ -24,7 +24,24 @@ public:
 
     double x0 = 0, y0 = 0, cell = 0.25, clearance = 0;
     int nx = 1, ny = 1;
-    std::vector<char> free;  ///< [ix * ny + iy]
+    std::vector<char> free;                 ///< [ix * ny + iy]
+    std::vector<std::size_t> just_blocked;  ///< the cells the last block_disk() blocked (free before it)
+
+    /// Calls f(n, step) for each of cell c's eight neighbours n inside the grid, step the distance
+    /// between their centres (metres).
+    template <class F>
+    void for_neighbours(std::size_t c, F&& f) const {
+        const int ix = int(c / std::size_t(ny)), iy = int(c % std::size_t(ny));
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int jx = ix + dx, jy = iy + dy;
+                if ((dx == 0 && dy == 0) || jx < 0 || jy < 0 || jx >= nx || jy >= ny) continue;
+                f(std::size_t(jx) * std::size_t(ny) + std::size_t(jy), (dx && dy ? kDiagonal : 1.0) * cell);
+            }
+    }
+
+private:
+    static constexpr double kDiagonal = 1.4142135623730951;  // sqrt(2)
 };
 
 class NavField {
@@ -41,21 +58,24 @@ public:
 
     static constexpr double kUnreachable = 1e9;
 
-    /// Brings the field up to date after cells of `grid` (the one it was built on) were blocked: the
-    /// same distances as building it again, computed only where a path ran through a blocked cell.
+    /// Brings the field up to date after block_disk() blocked the cells `grid.just_blocked` of `grid` (the
+    /// grid it was built on): the same distances as building it again, computed only where a path ran
+    /// through a blocked cell - in time proportional to those cells, not to the grid.
     void block(const NavGrid& grid);
 
 private:
     using Heap = std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>,
                                      std::greater<>>;
-    void spread(const NavGrid& grid, Heap& open, const std::vector<char>* only, std::vector<int>& settled);
+    void spread(const NavGrid& grid, Heap& open, const std::vector<char>* only);
+    void cut_paths(const NavGrid& grid);
 
     double x0_, y0_, cell_;
     int nx_, ny_;
     std::array<double, 2> goal_;
     std::vector<double> value_;
-    std::vector<int> parent_;  ///< the neighbour each cell's shortest path goes on through (-1: none)
-    std::vector<int> order_;   ///< the reached cells by value (the order Dijkstra settled them in)
+    std::vector<int> parent_;        ///< the neighbour each cell's shortest path goes on through (-1: none)
+    std::vector<char> cut_;          ///< scratch of block(): per cell, whether its path met a blocked cell
+    std::vector<std::size_t> cuts_;  ///< scratch of block(): those cells
     std::size_t goal_cell_ = 0;
 };
 

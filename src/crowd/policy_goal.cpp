@@ -62,7 +62,7 @@ public:
     }
 
     bool arrived(const ChoiceSite& site) const override {
-        return site.goal && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
+        return site.goal && site.stops && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
     }
 
 private:
@@ -74,11 +74,19 @@ private:
     static constexpr int kHorizon = 3;        // clips searched ahead (about 3.6 s of the graph's clips)
 
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
-    // cost for ending close to where the neighbours will be.
-    static double seconds(const NavField& field, const Placement& end, const std::vector<std::array<double, 2>>& near) {
+    // cost for ending close to where the neighbours will be. Within the stop radius, the path alone: the
+    // agent stops there whichever way it faces and whoever stands near (else ending at the goal facing
+    // away, or beside an agent standing at its own goal, would cost more than ending short of it, and an
+    // agent could circle its goal for good).
+    double seconds(const NavField& field, const Placement& end, const std::vector<std::array<double, 2>>& near) const {
+        const double distance = field.distance(end.x, end.y);
+        if (distance < stop_radius_) return distance / kWalking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
-        double t = field.distance(end.x, end.y) / kWalking + turn / kTurning;
-        for (const auto& n : near) t += kCrowding * std::max(0.0, kPersonal - std::hypot(end.x - n[0], end.y - n[1]));
+        double t = distance / kWalking + turn / kTurning;
+        for (const auto& n : near) {  // squared first: most neighbours are farther (and hypot is slow)
+            const double dx = end.x - n[0], dy = end.y - n[1], d2 = dx * dx + dy * dy;
+            if (d2 < kPersonal * kPersonal) t += kCrowding * (kPersonal - std::sqrt(d2));
+        }
         return t;
     }
 

@@ -15,6 +15,14 @@
 
 namespace mobb::crowd {
 
+const char* to_string(AtGoal at_goal) { return at_goal == AtGoal::Leave ? "leave" : "stay"; }
+
+std::optional<AtGoal> at_goal_of(const std::string& name) {
+    if (name == "stay") return AtGoal::Stay;
+    if (name == "leave") return AtGoal::Leave;
+    return std::nullopt;
+}
+
 namespace {
 
 // Whether agent a plays a fallback clip at frame f (clips are in time order).
@@ -35,7 +43,7 @@ public:
         int agent;
     };
 
-    /// Sorts the disks of one frame, `frame[a]` for agent a (frame[a].agent == a).
+    /// Sorts the n disks of one frame (the agents in the run then).
     void build(const Disk* frame, std::size_t n, double reach) {
         x0_ = y0_ = 1e300;
         double x1 = -1e300, y1 = -1e300;
@@ -107,20 +115,25 @@ std::vector<Contact> frame_contacts(const Record& record) {
     // so every track is read in runs rather than one cache line per agent per frame.
     constexpr std::int64_t kBlock = 32;
     std::vector<FrameGrid::Disk> block(std::size_t(kBlock) * n);
+    std::vector<std::size_t> in_run;
     FrameGrid grid;
     const auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
     for (std::int64_t f0 = 0; f0 < record.frames; f0 += kBlock) {
         const std::int64_t frames = std::min(kBlock, record.frames - f0);
         double rmax = 0;  // of the block: contacts are closer than 2 rmax
-        for (std::size_t a = 0; a < n; ++a)
-            for (std::int64_t k = 0; k < frames; ++k) {
-                const auto& s = record.tracks[a].samples[std::size_t(f0 + k)];
-                block[std::size_t(k) * n + a] = {s[1], s[2], s[3], int(a)};
+        in_run.assign(std::size_t(frames), 0);  // per frame: agents still in the run (none left yet)
+        for (std::size_t a = 0; a < n; ++a) {
+            const auto& samples = record.tracks[a].samples;
+            const std::int64_t until = std::min(frames, std::int64_t(samples.size()) - f0);
+            for (std::int64_t k = 0; k < until; ++k) {
+                const auto& s = samples[std::size_t(f0 + k)];
+                block[std::size_t(k) * n + in_run[std::size_t(k)]++] = {s[1], s[2], s[3], int(a)};
                 rmax = std::max(rmax, s[3]);
             }
+        }
         for (std::int64_t k = 0; k < frames; ++k) {
             const std::int64_t f = f0 + k;
-            grid.build(&block[std::size_t(k) * n], n, 2 * rmax);
+            grid.build(&block[std::size_t(k) * n], in_run[std::size_t(k)], 2 * rmax);
             const std::size_t first = out.size();
             grid.overlaps([&](int a, int b) { out.push_back({f, std::min(a, b), std::max(a, b), false}); });
             std::sort(out.begin() + std::ptrdiff_t(first), out.end(), by_pair);
@@ -201,7 +214,13 @@ J track_json(const AgentTrack& t) {
     J samples = J::array();
     for (const auto& s : t.samples) samples.push_back({s[0], s[1], s[2], s[3]});
     J out = J::object();
-    if (t.goal) out["goal"] = {(*t.goal)[0], (*t.goal)[1]};
+    if (t.goals.size() == 1) out["goal"] = {t.goals[0][0], t.goals[0][1]};
+    if (t.goals.size() > 1) {
+        out["goals"] = J::array();
+        for (const auto& g : t.goals) out["goals"].push_back({g[0], g[1]});
+    }
+    if (t.at_goal == AtGoal::Leave) out["at_goal"] = to_string(t.at_goal);
+    if (t.left_frame) out["left_frame"] = *t.left_frame;
     out["clips"] = clips;
     out["samples"] = samples;
     return out;
@@ -408,24 +427,44 @@ PlacedClip placed_clip_of(const json& c, const Record& r, const PlacedClip* befo
     return out;
 }
 
-// An agent: its goal, its clips, and one disk [t, x, y, r] per frame, t = k * dt, r >= 0.
+// A goal agent's goals ("goal": [x, y] or "goals": [[x, y], ...], not both) and what it does at the last.
+void goals_of(const json& t, const std::string& w, AgentTrack& track) {
+    if (t.contains("goal") && t.contains("goals")) fail(w, "\"goal\" or \"goals\", not both");
+    const auto point = [&](const json& v, const std::string& place) {
+        const json& g = tuple(v, 2, place, "[x, y]");
+        track.goals.push_back({coordinate(g[0], at(place, 0)), coordinate(g[1], at(place, 1))});
+    };
+    if (t.contains("goal")) point(t["goal"], dot(w, "goal"));
+    if (t.contains("goals")) {
+        const json& goals = array(t["goals"], dot(w, "goals"), "an array of [x, y]");
+        if (goals.empty()) fail(dot(w, "goals"), "at least one goal");
+        for (std::size_t k = 0; k < goals.size(); ++k) point(goals[k], at(dot(w, "goals"), k));
+    }
+    if (!t.contains("at_goal")) return;
+    const json& v = t["at_goal"];
+    const auto at_goal = v.is_string() ? at_goal_of(v.get<std::string>()) : std::nullopt;
+    if (!at_goal) fail(dot(w, "at_goal"), "expected \"stay\" or \"leave\"");
+    if (track.goals.empty()) fail(dot(w, "at_goal"), "an agent without a goal has none");
+    track.at_goal = *at_goal;
+}
+
+// An agent: its goals, its clips, and one disk [t, x, y, r] per frame it is in the run, t = k * dt, r >= 0.
 AgentTrack track_of(const json& t, const Record& r, const std::string& w) {
     AgentTrack track;
     if (!t.is_object()) fail(w, "expected an object");
-    if (t.contains("goal")) {
-        const json& g = tuple(t["goal"], 2, dot(w, "goal"), "[x, y]");
-        track.goal =
-            std::array<double, 2>{coordinate(g[0], at(dot(w, "goal"), 0)), coordinate(g[1], at(dot(w, "goal"), 1))};
-    }
+    goals_of(t, w, track);
     const json& clips = array(need(t, "clips", w), dot(w, "clips"), "an array of clips");
     if (clips.empty()) fail(dot(w, "clips"), "an agent plays at least one clip");
     for (std::size_t k = 0; k < clips.size(); ++k)
         track.clips.push_back(
             placed_clip_of(clips[k], r, k ? &track.clips.back() : nullptr, at(dot(w, "clips"), k)));
+    if (t.contains("left_frame")) track.left_frame = integer(t["left_frame"], dot(w, "left_frame"), 1, r.frames - 1);
+    if (track.left_frame && track.at_goal != AtGoal::Leave) fail(dot(w, "left_frame"), "only an agent that leaves has one");
+    const std::int64_t frames = track.left_frame.value_or(r.frames);
     const json& samples = array(need(t, "samples", w), dot(w, "samples"), "an array of [t, x, y, r]");
-    if (std::int64_t(samples.size()) != r.frames)
+    if (std::int64_t(samples.size()) != frames)
         fail(dot(w, "samples"), std::to_string(samples.size()) + " samples, expected one per frame (" +
-                                    std::to_string(r.frames) + ")");
+                                    std::to_string(frames) + (track.left_frame ? ", until it left)" : ")"));
     track.samples.reserve(samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const std::string place = at(dot(w, "samples"), k);

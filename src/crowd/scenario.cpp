@@ -90,18 +90,41 @@ void check_start_times(const Scenario& s, const std::string& where) {
             fail(where + ".agents[" + std::to_string(k) + "].start_time", "must be before the time limit");
 }
 
-AgentSpec agent(const json& j, const World& w, const std::string& where) {
-    only_keys(j, where, {"start", "heading", "start_time", "goal"});
-    if (!j.contains("start") || !j.contains("goal")) fail(where, "needs \"start\" and \"goal\"");
+AtGoal at_goal(const json& v, const std::string& where) {
+    const auto out = v.is_string() ? at_goal_of(v.get<std::string>()) : std::nullopt;
+    if (!out) fail(where, "expected \"stay\" or \"leave\"");
+    return *out;
+}
+
+std::array<double, 2> goal(const json& v, const World& w, const std::string& where) {
+    const auto g = numbers(v, 2, where);
+    if (!w.inside(g[0], g[1])) fail(where, "outside the world");
+    return {g[0], g[1]};
+}
+
+// "goal": [x, y], or "goals": [[x, y], ...] reached in turn.
+std::vector<std::array<double, 2>> goals(const json& j, const World& w, const std::string& where) {
+    if (j.contains("goal") == j.contains("goals")) fail(where, "needs \"goal\" or \"goals\" (not both)");
+    if (j.contains("goal")) return {goal(j["goal"], w, where + ".goal")};
+    const json& v = j["goals"];
+    if (!v.is_array() || v.empty()) fail(where + ".goals", "expected a non-empty array of [x, y]");
+    std::vector<std::array<double, 2>> out;
+    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(goal(v[k], w, where + ".goals[" + std::to_string(k) + "]"));
+    return out;
+}
+
+AgentSpec agent(const json& j, const World& w, AtGoal at_goal_default, const std::string& where) {
+    only_keys(j, where, {"start", "heading", "start_time", "goal", "goals", "at_goal"});
+    if (!j.contains("start")) fail(where, "needs \"start\"");
     const auto s = numbers(j["start"], 2, where + ".start");
-    const auto g = numbers(j["goal"], 2, where + ".goal");
     if (!w.inside(s[0], s[1])) fail(where + ".start", "outside the world");
-    if (!w.inside(g[0], g[1])) fail(where + ".goal", "outside the world");
     AgentSpec a;
+    a.goals = goals(j, w, where);
+    a.at_goal = j.contains("at_goal") ? at_goal(j["at_goal"], where + ".at_goal") : at_goal_default;
+    const auto& g = a.goals[0];
     const double heading = j.contains("heading") ? radians(number(j["heading"], where + ".heading"))
                                                  : std::atan2(g[1] - s[1], g[0] - s[0]);
     a.start = {s[0], s[1], heading, 0.0};
-    a.goal = std::array<double, 2>{g[0], g[1]};
     if (j.contains("start_time")) {
         a.start_time = number(j["start_time"], where + ".start_time");
         if (a.start_time < 0) fail(where + ".start_time", "must not be negative");
@@ -112,7 +135,8 @@ AgentSpec agent(const json& j, const World& w, const std::string& where) {
 }  // namespace
 
 Scenario parse_scenario(const json& j, const std::string& where) {
-    only_keys(j, where, {"name", "description", "source", "world", "walls", "obstacles", "time_limit", "agents"});
+    only_keys(j, where,
+              {"name", "description", "source", "world", "walls", "obstacles", "time_limit", "at_goal", "agents"});
     Scenario s;
     const auto text = [&](const char* key) {
         if (!j.contains(key)) return std::string();
@@ -142,8 +166,9 @@ Scenario parse_scenario(const json& j, const std::string& where) {
     s.time_limit = time_limit(j["time_limit"], where + ".time_limit");
     if (!j.contains("agents") || !j["agents"].is_array() || j["agents"].empty())
         fail(where, "needs \"agents\": a non-empty array");
+    if (j.contains("at_goal")) s.at_goal = at_goal(j["at_goal"], where + ".at_goal");
     for (std::size_t k = 0; k < j["agents"].size(); ++k)
-        s.agents.push_back(agent(j["agents"][k], s.world, where + ".agents[" + std::to_string(k) + "]"));
+        s.agents.push_back(agent(j["agents"][k], s.world, s.at_goal, where + ".agents[" + std::to_string(k) + "]"));
     check_start_times(s, where);
     return s;
 }
@@ -203,13 +228,18 @@ nlohmann::ordered_json obstacle_json(const Polygon& p) {
     return o;
 }
 
-nlohmann::ordered_json agent_json(const AgentSpec& a) {
+nlohmann::ordered_json agent_json(const AgentSpec& a, AtGoal at_goal_default) {
     const auto m = [](double x) { return util::rounded(x, 6); };
     nlohmann::ordered_json o;
     o["start"] = {m(a.start.x), m(a.start.y)};
     o["heading"] = util::rounded(degrees(a.start.theta), 6);
     if (a.start_time > 0) o["start_time"] = m(a.start_time);
-    if (a.goal) o["goal"] = {m((*a.goal)[0]), m((*a.goal)[1])};
+    if (a.goals.size() == 1) o["goal"] = {m(a.goals[0][0]), m(a.goals[0][1])};
+    if (a.goals.size() > 1) {
+        o["goals"] = nlohmann::ordered_json::array();
+        for (const auto& g : a.goals) o["goals"].push_back({m(g[0]), m(g[1])});
+    }
+    if (a.at_goal != at_goal_default) o["at_goal"] = to_string(a.at_goal);
     return o;
 }
 
@@ -225,8 +255,9 @@ std::string scenario_json(const Scenario& s) {
     j["obstacles"] = nlohmann::ordered_json::array();
     for (const Polygon& p : s.world.obstacles) j["obstacles"].push_back(obstacle_json(p));
     j["time_limit"] = s.time_limit;
+    if (s.at_goal != AtGoal::Stay) j["at_goal"] = to_string(s.at_goal);
     j["agents"] = nlohmann::ordered_json::array();
-    for (const AgentSpec& a : s.agents) j["agents"].push_back(agent_json(a));
+    for (const AgentSpec& a : s.agents) j["agents"].push_back(agent_json(a, s.at_goal));
     return util::readable_json(j);
 }
 

@@ -277,7 +277,7 @@ private:
     void obstacle_region(const XMLElement& e);
     void add_obstacle(Box b, const XMLElement& e, const std::string& name, int region);
     void narrow_gaps();
-    bool goal_of(const Group& g, std::array<double, 2>& goal);
+    bool goals_of(const Group& g, std::vector<std::array<double, 2>>& goals);
     bool start_fits(const Group& g, double x, double y);
     std::optional<std::array<double, 2>> random_start(const Box& region);
     std::array<double, 2> random_goal();
@@ -320,6 +320,7 @@ void Importer::header(const XMLElement& root) {
     s_.source = "SteerSuite test case " + std::filesystem::path(src_.file).filename().string() +
                 " (mobb scenario import, seed " + std::to_string(options_.seed) + ")";
     if (s_.description.empty()) s_.description = "Imported from " + s_.source + ".";
+    s_.at_goal = options_.at_goal;
 }
 
 // The world's edges are walls (World::solids), after the obstacles so that notes name obstacles first.
@@ -435,11 +436,15 @@ std::array<double, 2> Importer::random_goal() {
 }
 
 // The last seekStaticTarget (mobb's agents have one goal); false when it is outside the world.
-bool Importer::goal_of(const Group& g, std::array<double, 2>& goal) {
-    const Ground& at = g.goals.targets.back().at;
-    goal = at.random ? random_goal() : std::array<double, 2>{at.x, at.y};
-    drew_ = drew_ || at.random;
-    return s_.world.inside(goal[0], goal[1]);
+// The group's targets in turn, random ones drawn; false at the first outside the world (goals.back()).
+bool Importer::goals_of(const Group& g, std::vector<std::array<double, 2>>& goals) {
+    goals.clear();
+    for (const Target& t : g.goals.targets) {
+        goals.push_back(t.at.random ? random_goal() : std::array<double, 2>{t.at.x, t.at.y});
+        drew_ = drew_ || t.at.random;
+        if (!s_.world.inside(goals.back()[0], goals.back()[1])) return false;
+    }
+    return true;
 }
 
 // A start given in the file, checked as the crowd will check it; the note says why it is left out.
@@ -472,7 +477,8 @@ void Importer::place(const Group& g, std::vector<AgentSpec>& out, bool random) {
     if (g.goals.targets.empty() || g.start.random != random) return;
     int placed = 0;
     for (; placed < g.count; ++placed) {
-        std::array<double, 2> start{g.start.x, g.start.y}, goal{};
+        std::array<double, 2> start{g.start.x, g.start.y};
+        std::vector<std::array<double, 2>> goals;
         if (random) {
             const auto s = random_start(g.region ? *g.region : Box{s_.world.x0, s_.world.y0, s_.world.x1, s_.world.y1});
             if (!s) break;
@@ -481,11 +487,12 @@ void Importer::place(const Group& g, std::vector<AgentSpec>& out, bool random) {
         } else if (!start_fits(g, start[0], start[1])) {
             return;
         }
-        if (!goal_of(g, goal)) {
-            note(*g.element, "its goal (" + num(goal[0]) + ", " + num(goal[1]) +
+        if (!goals_of(g, goals)) {
+            note(*g.element, "its goal (" + num(goals.back()[0]) + ", " + num(goals.back()[1]) +
                                  ") is outside the world: " + (g.count == 1 ? "left out" : "its agents are left out"));
             return;
         }
+        const auto& goal = goals.front();
         double heading = std::atan2(goal[1] - start[1], goal[0] - start[0]);  // no direction: face the goal
         if (g.direction.random)
             heading = radians(util::rounded(rng_.uniform(-180, 180), 1));
@@ -494,10 +501,11 @@ void Importer::place(const Group& g, std::vector<AgentSpec>& out, bool random) {
         drew_ = drew_ || g.direction.random;
         AgentSpec a;
         a.start = {start[0], start[1], heading, 0.0};
-        a.goal = goal;
+        a.goals = goals;
+        a.at_goal = options_.at_goal;
         out.push_back(a);
         starts_.add(start[0], start[1]);
-        goals_.add(goal[0], goal[1]);
+        goals_.add(goals.back()[0], goals.back()[1]);
         kept_starts_.push_back(start);
         kept_lines_.push_back(g.element->GetLineNum());
     }
@@ -519,12 +527,6 @@ void Importer::group_notes(const Group& g) {
         return;
     }
     if (!others.empty()) note(e, "goals mobb's agents do not pursue (" + others + "): dropped");
-    const std::size_t n = g.goals.targets.size();
-    if (n > 1) {
-        const Ground& last = g.goals.targets.back().at;
-        note(e, "a goal sequence of " + std::to_string(n) + " targets; mobb's agents have one goal: kept the last, " +
-                    (last.random ? std::string("a random one") : "(" + num(last.x) + ", " + num(last.y) + ")"));
-    }
 }
 
 // Speeds and radii (always SteerSuite's own, never mobb's), goals two agents would share.
@@ -546,9 +548,9 @@ void Importer::file_notes(const std::vector<Group>& groups) {
          num(room_.walk_speed) + " m/s on average)");
     note("radii of " + range(r_lo, r_hi) + " m ignored: mobb's agents are their clips' disks (" +
          num(room_.walk_width / 2) + " m or wider while walking)");
-    std::size_t shared = 0;  // goals_ holds every kept agent's goal, its own included
-    for (const AgentSpec& a : s_.agents) shared += goals_.near((*a.goal)[0], (*a.goal)[1]) > 1;
-    if (shared > 0)
+    std::size_t shared = 0;  // goals_ holds every kept agent's last goal, its own included
+    for (const AgentSpec& a : s_.agents) shared += goals_.near(a.goals.back()[0], a.goals.back()[1]) > 1;
+    if (shared > 0 && s_.at_goal == AtGoal::Stay)
         note(std::to_string(shared) + " agents have a goal within " + num(2 * room_.hold_radius) +
              " m of another's: an agent at its goal stands there for good, so not all of them can reach theirs");
     if (drew_)
@@ -564,8 +566,11 @@ void Importer::time_limit(const std::vector<Group>& groups) {
         return;
     }
     double longest = 0, allowed = 0;
-    for (const AgentSpec& a : s_.agents)
-        longest = std::max(longest, std::hypot((*a.goal)[0] - a.start.x, (*a.goal)[1] - a.start.y));
+    for (const AgentSpec& a : s_.agents) {
+        double length = 0, x = a.start.x, y = a.start.y;  // from the start through the goals in turn
+        for (const auto& g : a.goals) length += std::hypot(g[0] - x, g[1] - y), x = g[0], y = g[1];
+        longest = std::max(longest, length);
+    }
     for (const Group& g : groups) allowed = std::max(allowed, g.goals.duration);
     const double estimate = 10 * std::ceil((2 * longest / std::max(room_.walk_speed, 0.1) + 20) / 10);
     s_.time_limit = allowed > 0 ? std::min(estimate, allowed) : estimate;

@@ -253,9 +253,16 @@ std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
     if (w.walls)
         out.push_back({crowd::Polygon::rectangle(w.x0, w.y0, w.x1, w.y1).vertices, 0, end, glm::vec3(0.35f), 0, false});
     for (const crowd::Polygon& p : w.obstacles) out.push_back({p.vertices, 0, end, glm::vec3(0.30f), 0.35f, false});
-    for (std::size_t a = 0; a < r.tracks.size(); ++a)
-        if (const auto& g = r.tracks[a].goal)
-            out.push_back({circle((*g)[0], (*g)[1], 0.15, 4), 0, end, render::clip_color(int(a)), 0.6f, false});
+    // Goals in the agent's colour while it is in the run: a sequence's goals small, its last one larger.
+    for (std::size_t a = 0; a < r.tracks.size(); ++a) {
+        const crowd::AgentTrack& track = r.tracks[a];
+        const double until = double(track.samples.size()) * r.dt;
+        for (std::size_t k = 0; k < track.goals.size(); ++k) {
+            const double size = k + 1 == track.goals.size() ? 0.15 : 0.08;
+            out.push_back({circle(track.goals[k][0], track.goals[k][1], size, 4), 0, until,
+                           render::clip_color(int(a)), 0.6f, false});
+        }
+    }
     const auto frame = std::int64_t(std::floor(t / r.dt));
     auto it = std::lower_bound(v.contacts.begin(), v.contacts.end(), frame,
                                [](const crowd::Contact& c, std::int64_t f) { return c.frame < f; });

@@ -108,7 +108,7 @@ TEST(CrowdCli, ScenarioRunsToItsGoals) {
     const crowd::Record record = crowd::load_record(rec);
     EXPECT_EQ(record.scenario, "oncoming");
     EXPECT_EQ(record.select, "goal");
-    ASSERT_TRUE(record.tracks[0].goal);
+    ASSERT_EQ(record.tracks[0].goals.size(), 1u);
     const nlohmann::json j = nlohmann::json::parse(test::slurp(rec));
     EXPECT_TRUE(j["metrics"]["passed"].get<bool>());
     EXPECT_EQ(j["world"].size(), 4u);

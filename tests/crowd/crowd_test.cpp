@@ -602,10 +602,10 @@ TEST(Crowd, RejectsImpossibleWorlds) {
     none.threads = 0;
     EXPECT_THROW(run(none), std::invalid_argument);
     CrowdOptions walled;
-    walled.placed = {{{0.1, 5, 0, 0}, 0, std::nullopt}};  // against the wall
+    walled.placed = {{{0.1, 5, 0, 0}, 0, {}}};  // against the wall
     EXPECT_THROW(run(walled), std::invalid_argument);
     CrowdOptions close;
-    close.placed = {{{5, 5, 0, 0}, 0, std::nullopt}, {{5.3, 5, 0, 0}, 0, std::nullopt}};
+    close.placed = {{{5, 5, 0, 0}, 0, {}}, {{5.3, 5, 0, 0}, 0, {}}};
     EXPECT_THROW(run(close), std::invalid_argument);
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "choice.h"
+#include "committed_graph.h"
 #include "look_ahead.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/scenario.h"
@@ -16,12 +17,7 @@
 namespace mobb::crowd {
 namespace {
 
-const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
-
-const MotionGraph& graph() {
-    static const MotionGraph g = load_graph(kGraph);
-    return g;
-}
+const MotionGraph& graph() { return test::committed_graph(); }
 
 // The goal 12 m ahead (+x); a barrier across x in [4.5, 5.5] for |y| < 2.5: walking straight on (about
 // 1.8 m a clip) meets it in the third clip; the way round turns before.

@@ -25,7 +25,7 @@ Record passing(bool fallback) {
             r.tracks[std::size_t(a)].samples.push_back({t, a == 0 ? 2.01 : 0.5 + 1.5 * t, 5.0, 0.3});
         }
     }
-    r.tracks[1].goal = std::array<double, 2>{3.52, 5};
+    r.tracks[1].goals = {{3.52, 5}};
     r.choices.resize(4);
     r.choices[2].fallback = fallback;
     return r;

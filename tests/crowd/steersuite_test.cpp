@@ -86,7 +86,9 @@ std::string region(int n, double x0, double x1, double z0, double z1, const std:
 }
 
 ImportedScenario import(const std::string& file, std::uint64_t seed = 1) {
-    return import_steersuite(file, kRoom, {seed, 0});
+    ImportOptions o;
+    o.seed = seed;
+    return import_steersuite(file, kRoom, o);
 }
 
 // The notes that contain `text`.
@@ -123,7 +125,8 @@ TEST(SteerSuite, MapsGroundXZToXY) {
     EXPECT_EQ(a.start.x, 2.0);
     EXPECT_EQ(a.start.y, -3.0);
     EXPECT_NEAR(degrees(a.start.theta), 90, 1e-12);  // SteerSuite's +z is mobb's +y
-    EXPECT_EQ(*a.goal, (std::array<double, 2>{5, 4}));
+    EXPECT_EQ(a.goals, (std::vector<std::array<double, 2>>{{5, 4}}));
+    EXPECT_EQ(a.at_goal, AtGoal::Leave);  // SteerSuite's agents leave at their goal
     EXPECT_GT(s.scenario.time_limit, 0);
     std::remove(file.c_str());
 }
@@ -140,7 +143,9 @@ TEST(SteerSuite, NoDirectionFacesTheGoal) {
 TEST(SteerSuite, WrittenScenarioLoadsAndRuns) {
     const std::string file = write_case(
         "runs", agent(-5, 0, seek(5, 0)) + agent(5, 1.5, seek(-5, 1.5), xyz(-1, 0, 0)) + obstacle(-1, 1, 8, 9));
-    const ImportedScenario s = import_steersuite(file, kRoom, {1, 2.0});
+    ImportOptions o;
+    o.time_limit = 2.0;
+    const ImportedScenario s = import_steersuite(file, kRoom, o);
     EXPECT_EQ(s.scenario.time_limit, 2.0);
     const std::string json_file = test::temp_file("runs.json");
     std::ofstream(json_file) << scenario_json(s.scenario);
@@ -156,7 +161,8 @@ TEST(SteerSuite, WrittenScenarioLoadsAndRuns) {
         EXPECT_EQ(back.agents[k].start.x, s.scenario.agents[k].start.x);
         EXPECT_EQ(back.agents[k].start.y, s.scenario.agents[k].start.y);
         EXPECT_NEAR(back.agents[k].start.theta, s.scenario.agents[k].start.theta, 1e-6);
-        EXPECT_EQ(back.agents[k].goal, s.scenario.agents[k].goal);
+        EXPECT_EQ(back.agents[k].goals, s.scenario.agents[k].goals);
+        EXPECT_EQ(back.agents[k].at_goal, s.scenario.agents[k].at_goal);
     }
     const MotionGraph g = load_graph(kGraph);
     const CrowdRun run = run_crowd(g, NarrowPhase::sweep(g), scenario_options(back));
@@ -176,7 +182,7 @@ TEST(SteerSuite, ScenarioJsonKeepsPolygonsAndThinWalls) {
     AgentSpec a;
     a.start = {1, 8, radians(30), 0};
     a.start_time = 1.5;
-    a.goal = std::array<double, 2>{9, 9};
+    a.goals = {{9, 9}};
     s.agents.push_back(a);
     const nlohmann::json j = nlohmann::json::parse(scenario_json(s));
     EXPECT_EQ(j["obstacles"][0]["polygon"].size(), 3u);
@@ -204,7 +210,7 @@ TEST(SteerSuite, AgentRegionPlacesItsCountApartAndInside) {
         EXPECT_LE(p.x, 10 - kRoom.wall_clearance);
         for (std::size_t b = 0; b < a; ++b)
             EXPECT_GE(std::hypot(p.x - agents[b].start.x, p.y - agents[b].start.y), 2 * kRoom.hold_radius);
-        EXPECT_EQ(*agents[a].goal, (std::array<double, 2>{0, 15}));
+        EXPECT_EQ(agents[a].goals.back(), (std::array<double, 2>{0, 15}));
     }
     EXPECT_EQ(notes_with(s, "seed 7").size(), 1u);
     std::remove(file.c_str());
@@ -304,15 +310,29 @@ TEST(SteerSuite, NarrowGapIsReported) {
     std::remove(file.c_str());
 }
 
-TEST(SteerSuite, GoalSequenceKeepsTheLastTarget) {
+TEST(SteerSuite, GoalSequenceBecomesGoalsInTurn) {
     const std::string file = write_case("sequence", agent(0, 0, seek(5, 5) + seek(-5, 8)));
     const ImportedScenario s = import(file);
     ASSERT_EQ(s.scenario.agents.size(), 1u);
-    EXPECT_EQ(*s.scenario.agents[0].goal, (std::array<double, 2>{-5, 8}));
-    const auto n = notes_with(s, "goal sequence");
-    ASSERT_EQ(n.size(), 1u);
-    EXPECT_EQ(n[0],
-              file + ":8: agent: a goal sequence of 2 targets; mobb's agents have one goal: kept the last, (-5, 8)");
+    EXPECT_EQ(s.scenario.agents[0].goals, (std::vector<std::array<double, 2>>{{5, 5}, {-5, 8}}));
+    EXPECT_TRUE(notes_with(s, "goal sequence").empty());
+    // Through both goals: 7.07 + 10.44 m, twice at 1.38 m/s plus 20 s, in whole tens.
+    EXPECT_EQ(s.scenario.time_limit, 50);
+    const nlohmann::json j = nlohmann::json::parse(scenario_json(s.scenario));
+    EXPECT_EQ(j["at_goal"], "leave");
+    EXPECT_EQ(j["agents"][0]["goals"], nlohmann::json::parse("[[5, 5], [-5, 8]]"));
+    std::remove(file.c_str());
+}
+
+TEST(SteerSuite, AgentsStayWhenAsked) {
+    const std::string file = write_case("stay", agent(0, 0, seek(5, 5)) + agent(3, 0, seek(5, 5.5)));
+    ImportOptions o;
+    o.at_goal = AtGoal::Stay;
+    const ImportedScenario stay = import_steersuite(file, kRoom, o);
+    EXPECT_EQ(stay.scenario.at_goal, AtGoal::Stay);
+    for (const AgentSpec& a : stay.scenario.agents) EXPECT_EQ(a.at_goal, AtGoal::Stay);
+    const nlohmann::json j = nlohmann::json::parse(scenario_json(stay.scenario));
+    EXPECT_FALSE(j.contains("at_goal"));
     std::remove(file.c_str());
 }
 
@@ -322,7 +342,7 @@ TEST(SteerSuite, OtherGoalTypes) {
         write_case("kinds", agent(0, 0, idle) + agent(4, 0, idle + seek(4, 10)) + region(3, -5, 5, -15, -10, idle));
     const ImportedScenario s = import(file);
     ASSERT_EQ(s.scenario.agents.size(), 1u);
-    EXPECT_EQ(*s.scenario.agents[0].goal, (std::array<double, 2>{4, 10}));
+    EXPECT_EQ(s.scenario.agents[0].goals, (std::vector<std::array<double, 2>>{{4, 10}}));
     EXPECT_EQ(notes_with(s,
                          ":8: agent: no seekStaticTarget among its goals (idle); mobb's agents seek one static "
                          "goal: the agent is left out")
@@ -346,8 +366,13 @@ TEST(SteerSuite, SpeedsRadiiAndSharedGoalsAreReported) {
                   .size(),
               1u);
     EXPECT_EQ(notes_with(s, ": radii of 0.5 m ignored").size(), 1u);
-    EXPECT_EQ(notes_with(s, ": 2 agents have a goal within 0.98 m of another's").size(), 1u);
     EXPECT_EQ(notes_with(s, ": time limit ").size(), 1u);
+    // Two goals 0.5 m apart: said only when the agents stay at their goals (AgentsStayWhenAsked).
+    EXPECT_TRUE(notes_with(s, "of another's").empty());
+    ImportOptions stay;
+    stay.at_goal = AtGoal::Stay;
+    EXPECT_EQ(notes_with(import_steersuite(file, kRoom, stay), ": 2 agents have a goal within 0.98 m of another's").size(),
+              1u);
     std::remove(file.c_str());
 }
 

@@ -205,7 +205,7 @@ TEST(CrowdOverlay, WallsObstaclesGoalsAndContacts) {
         EXPECT_EQ(p.t1, end);
         EXPECT_FALSE(p.on_top);
     }
-    EXPECT_NEAR(prisms[3].ground[0][0], (*r.tracks[0].goal)[0] + 0.15, 1e-12);
+    EXPECT_NEAR(prisms[3].ground[0][0], r.tracks[0].goals[0][0] + 0.15, 1e-12);
     EXPECT_TRUE(s.crowd->marks.empty()) << "a passed scenario: no fallback, no contact";
     // Two contacts: agent 1 put onto agent 0 at frames 40 and 41.
     for (std::size_t f : {40u, 41u}) {

@@ -257,7 +257,7 @@ TEST(Golden, CrowdChoicePoint) {
     ASSERT_EQ(s.crowd->candidate_clips.size(), c.candidates.size());
     s.scene.cursor = double(c.frame) * s.crowd->record.dt;
     s.scene.layers.disks_translucent = true;
-    s.camera.top();  // the "from above" preset: the candidates fan out from the agent's disk
+    s.camera.top();  // the "top" preset: the candidates fan out from the agent's disk
     viewer::frame_all(s, 1280.0f / 720.0f);
     s.camera.pan(0.0f, -130.0f, 720.0f);  // the crowd above the Crowd panel
     check_image("crowd_choice", viewer::render_headless(s, {1280, 720, true}));
@@ -318,7 +318,7 @@ TEST(Golden, CrowdScenario) {
     s.scene.layers.skeletons = false;  // no mocap needed
     const auto& r = s.crowd->record;
     ASSERT_EQ(r.world.obstacles.size(), 2u);
-    ASSERT_TRUE(r.tracks[0].goal && r.tracks[1].goal);
+    ASSERT_TRUE(r.tracks[0].goals.size() == 1 && r.tracks[1].goals.size() == 1);
     s.scene.cursor = 0.5 * double(r.frames) * r.dt;
     // A crowd opens with a time window: only the slab of the run around the cursor is drawn.
     EXPECT_GT(s.scene.window, 0.0);
@@ -331,6 +331,40 @@ TEST(Golden, CrowdScenario) {
     s.camera.top();
     viewer::frame_all(s, 640.0f / 480.0f);
     check_image("crowd_scenario_contact", viewer::render_headless(s, {640, 480, false}));
+}
+
+/// Goal sequences seen from above (waypoints: each agent's two waypoints drawn small, its last goal
+/// larger, in its colour), and agents that leave at their goal (fan_in_exit) in space-time: each disk
+/// stack ends at the frame its agent left, and its goal is drawn until then.
+TEST(Golden, CrowdGoalSequencesAndLeaving) {
+    const std::string waypoints = scenario_record("waypoints");
+    ASSERT_FALSE(waypoints.empty()) << "mobb crowd --scenario failed";
+    State s = viewer::load_crowd_state(waypoints, 640.0f / 480.0f);
+    s.scene.layers.skeletons = false;  // no mocap needed
+    for (const auto& t : s.crowd->record.tracks) ASSERT_EQ(t.goals.size(), 3u);
+    s.scene.window = 0;  // all of the run
+    s.scene.cursor = 0;
+    s.camera.top();
+    viewer::frame_all(s, 640.0f / 480.0f);
+    check_image("crowd_waypoints", viewer::render_headless(s, {640, 480, false}));
+
+    const std::string exit = scenario_record("fan_in_exit");
+    ASSERT_FALSE(exit.empty()) << "mobb crowd --scenario failed";
+    State e = viewer::load_crowd_state(exit, 640.0f / 480.0f);
+    e.scene.layers.skeletons = false;
+    const auto& r = e.crowd->record;
+    double last = 0;
+    for (const auto& t : r.tracks) {
+        ASSERT_TRUE(t.left_frame);
+        last = std::max(last, double(*t.left_frame) * r.dt);
+    }
+    const auto prisms = viewer::crowd_prisms(*e.crowd, 0);
+    const auto goal = std::find_if(prisms.begin(), prisms.end(), [](const auto& p) { return p.fill > 0.5f; });  // goals
+    ASSERT_NE(goal, prisms.end());
+    EXPECT_LE(goal->t1, last + 1e-9) << "a goal is drawn until its agent left";
+    e.scene.window = 0;
+    e.scene.cursor = last + 1;  // everyone has left: no disk at the cursor
+    check_image("crowd_leaving", viewer::render_headless(e, {640, 480, false}));
 }
 
 /// The Crowd panel's plots of fallbacks and contacts over time (ImGui's PlotHistogram) at 1280x720:

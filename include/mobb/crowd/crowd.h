@@ -22,7 +22,8 @@ namespace mobb::crowd {
 struct AgentSpec {
     Placement start;                            ///< x, y (metres), heading theta (radians); t0 unused
     double start_time = 0;                      ///< seconds: it stands at its start until then
-    std::optional<std::array<double, 2>> goal;  ///< metres
+    std::vector<std::array<double, 2>> goals;   ///< metres, reached in turn (within goal_radius); empty: wanders
+    AtGoal at_goal = AtGoal::Stay;              ///< at the last goal: stand there, or leave the run
 };
 
 struct CrowdOptions {
@@ -41,7 +42,9 @@ struct CrowdOptions {
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;
     std::vector<AgentSpec> placed;  ///< the agents of a scenario (then `agents` is ignored)
-    double goal_radius = 1.0;       ///< metres: a goal agent this close to its goal stops there
+    /// Metres: a goal agent this close to its goal has reached it - it heads for the next, leaves (once
+    /// it has played a clip), or stops there.
+    double goal_radius = 1.0;
     /// Search clip sequences at choice points where the policy asks for it (Policy::horizon, the goal
     /// policy; src/crowd/look_ahead.h); off, candidates are tried in the policy's order alone.
     bool look_ahead = true;

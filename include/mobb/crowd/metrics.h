@@ -24,12 +24,15 @@ struct CrowdMetrics {
     double speed_ratio = 0;   ///< mean_speed / graph_speed
     double idle_share = 0;    ///< of agent time (an agent at its goal no longer counts)
     double longest_idle = 0;  ///< seconds: the longest idle stretch of any agent
-    // Goals (agents with one).
-    int goal_agents = 0, reached = 0;                    ///< reached: within the goal radius at some frame
-    double mean_time_to_goal = 0, max_time_to_goal = 0;  ///< seconds, over the agents that reached it
-    double path_ratio = 0;  ///< path length to the goal / straight distance, mean over them
+    // Goals (agents with one or a sequence).
+    int goal_agents = 0;
+    int reached = 0;  ///< within the goal radius of each of its goals in turn, at some frames
+    int left = 0;     ///< of them, left the run at the last (AtGoal::Leave)
+    double mean_time_to_goal = 0, max_time_to_goal = 0;  ///< seconds to the last goal, over the agents that reached it
+    /// Path length to the last goal / the straight lines from the start through the goals, mean over them.
+    double path_ratio = 0;
     double walking_speed = 0;  ///< m/s: graph_walking_speed()
-    /// Time to the goal over the straight distance at walking_speed, mean over the agents that reached it.
+    /// Time to the last goal over the straight lines' time at walking_speed, mean over the agents that reached it.
     double time_ratio = 0;
     bool passed = false;    ///< every goal agent reached its goal and no contact at any frame
     // SteerSuite's benchmark scores (steerlib/src/CompositeTechnique01.cpp, CompositeTechnique02.cpp), lower

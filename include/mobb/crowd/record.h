@@ -10,10 +10,12 @@
 //     "obstacles": [ [[x, y], ...], ... ],            // polygons
 //     "summary": { see CrowdSummary in crowd.h }, "metrics": { see metrics.h },
 //     "tracks": [ {                                   // one per agent, index = agent id
-//        "goal": [x, y] (goal agents only),
+//        "goal": [x, y] (goal agents with one goal), or "goals": [[x, y], ...] (a sequence, reached in
+//        turn), "at_goal": "leave" (when it leaves at its last goal; else it stays), "left_frame": f (the
+//        frame it left at: its samples stop before it),
 //        "clips": [ {"clip": id, "start": frame, "place": [x, y, theta, t0], "fallback": bool,
 //                    "commit": n}, ... ],              // commit: the choice point that took it
-//        "samples": [ [t, x, y, r], ... ]             // F samples: the world disk at frames 0..F-1
+//        "samples": [ [t, x, y, r], ... ]             // the world disk at frames 0..F-1 (0..left_frame-1)
 //     }, ... ],
 //     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "outcome": "candidate" | "escape" |
 //                   "arrived" | "fallback" | "right of way", "fallback": bool, "queries": q, "tests2d": n,
@@ -116,11 +118,21 @@ struct ChoicePoint {
     std::vector<FramedClip> intended;
 };
 
-/// One agent: its clips in time order and its disk at every global frame, [t, x, y, r].
+/// What a goal agent does at its last goal (SteerSuite's semantics for "leave"): stand there to the end
+/// of the run, or leave the run - an exit, a door - its track ending there and holding no ground after.
+enum class AtGoal : std::uint8_t { Stay, Leave };
+const char* to_string(AtGoal at_goal);
+/// "stay" or "leave"; nothing for anything else.
+std::optional<AtGoal> at_goal_of(const std::string& name);
+
+/// One agent: its clips in time order and its disk at every global frame it is in the run, [t, x, y, r]:
+/// frames 0 .. frames - 1, or 0 .. left_frame - 1 for one that left.
 struct AgentTrack {
     std::vector<PlacedClip> clips;
     std::vector<std::array<double, 4>> samples;
-    std::optional<std::array<double, 2>> goal;  ///< metres (goal agents)
+    std::vector<std::array<double, 2>> goals;  ///< metres, reached in turn (goal agents; empty: it wanders)
+    AtGoal at_goal = AtGoal::Stay;
+    std::optional<std::int64_t> left_frame;  ///< the frame it left the run at (AtGoal::Leave, once there)
 };
 
 struct Record {

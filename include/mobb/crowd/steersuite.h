@@ -12,10 +12,11 @@
 // What a mobb agent cannot do is not refused but reported, one line per finding (ImportedScenario::notes),
 // and left out of the scenario where it would stop `mobb crowd` from running it: an agent starting
 // within AgentRoom::wall_clearance of a wall or an obstacle, or within 2 x AgentRoom::hold_radius of an
-// agent kept before it. Reported and kept: gaps narrower than AgentRoom::walk_width, goal sequences of
-// more than one target (the last is kept: mobb agents have one goal), speeds and radii (mobb's agents
-// walk at their clips' speeds with their clips' disks), goal types mobb has not (the agent is left out
-// when no seekStaticTarget remains).
+// agent kept before it. Reported and kept: gaps narrower than AgentRoom::walk_width, speeds and radii
+// (mobb's agents walk at their clips' speeds with their clips' disks), goal types mobb has not (the agent
+// is left out when no seekStaticTarget remains), and - when agents stay at their goals - goals two agents
+// share. A goalSequence's static targets become the agent's "goals", reached in turn; at the last the
+// agents leave the run, as SteerSuite's do (ImportOptions::at_goal).
 #pragma once
 #include <cstdint>
 #include <stdexcept>
@@ -57,8 +58,11 @@ struct AgentRoom {
 struct ImportOptions {
     std::uint64_t seed = 1;  ///< random positions, directions and obstacles (agentRegion, obstacleRegion, <random>)
     /// Seconds; 0: estimated, twice the longest straight walk from a start to its goal at
-    /// AgentRoom::walk_speed plus 20 s, in whole tens, and no more than the agent's timeDurations.
+    /// AgentRoom::walk_speed plus 20 s (through its goals in turn), in whole tens, and no more than the agent's timeDurations.
     double time_limit = 0;
+    /// What the agents do at their last goal: leave, as SteerSuite disables an agent that reached its
+    /// goal (the default), or stay there.
+    AtGoal at_goal = AtGoal::Leave;
 };
 
 struct ImportedScenario {
