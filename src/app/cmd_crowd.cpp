@@ -97,9 +97,18 @@ void add_crowd(CLI::App& app, int& exit_code) {
     cmd->add_option("--record", *record, "Write the record (JSON) to this file");
     cmd->add_option("--scenario", *scenario,
                     "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
-    auto no_look_ahead = std::make_shared<bool>(false);
-    cmd->add_flag("--no-look-ahead", *no_look_ahead,
-                  "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
+    // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
+    auto off = std::make_shared<crowd::CrowdTuning>();
+    const auto rule_off = [&](const char* flag, bool crowd::CrowdTuning::*rule, const char* what) {
+        cmd->add_flag_callback(flag, [off, rule] { (*off).*rule = false; }, what);
+    };
+    rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
+             "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
+    rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
+             "An agent that waited never pushes others' reservations aside");
+    rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
+    rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
+             "Wanderers may stop right beside another's held ground");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
     cmd->callback([=, &exit_code] {
@@ -122,7 +131,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 opt.threads = o->threads;
                 opt.cell = o->cell;
             }
-            opt.look_ahead = !*no_look_ahead;
+            opt.tuning = *off;
             opt.record_queries = !record->empty();  // only a written record shows them
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);

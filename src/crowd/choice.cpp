@@ -12,8 +12,6 @@ namespace mobb::crowd {
 
 namespace {
 
-constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
-
 // How far a point is outside the world rectangle (0 inside), metres.
 double excursion(double x, double y, const World& w) { return std::max({0.0, w.x0 - x, x - w.x1, w.y0 - y, y - w.y1}); }
 
@@ -51,11 +49,6 @@ bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const Pla
         }
     }
     return false;
-}
-
-bool holds_meet(const Hold& a, const Hold& b, double gap = 0) {
-    const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r + gap;
-    return dx * dx + dy * dy < r * r;
 }
 
 }  // namespace
@@ -275,7 +268,7 @@ void Choice::order(const CrowdState& s) {
     next_ = drawn_;
     s.policy.order(site, next_);
     searched_ = false;
-    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.look_ahead) look_ahead(s, site, horizon);
+    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead) look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
 }
@@ -283,7 +276,8 @@ void Choice::order(const CrowdState& s) {
 // The policy's order (next_) reordered by the best sequence each candidate leads to (look_ahead.h); the
 // policy's order breaks ties.
 void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
-    const LookAheadLimits limits{horizon, kLookAheadBudget, kLookAheadDeadEnd};
+    const CrowdTuning& t = s.options.tuning;
+    const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
     const auto free = [&](const SearchStep& step) {
         Piece piece;
         piece.agent = agent_;
@@ -311,7 +305,7 @@ const Placed& Choice::place(const CrowdState& s, int k) {
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
         // The random mode ranks candidates leaving the world; the others meet the walls instead.
-        const World* world = s.policy.kind() == Selection::Random ? &s.options.world : nullptr;
+        const World* world = s.policy.avoids() ? nullptr : &s.options.world;
         placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
                                      std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, m, frame_,
                                      world));
@@ -375,18 +369,6 @@ bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits 
     return free;
 }
 
-// Whether another agent's piece may give way to an agent with the right of way: a reservation (escape
-// clip or held ground, not the clip it plays nor where it started) of an agent that plays a clip moving
-// beyond this frame (not at a choice point now, not standing, not at its goal).
-bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
-    if (other.index == 0 || other.commit < 0) return false;
-    const Agent& owner = s.agents[std::size_t(other.agent)];
-    if (owner.arrived || owner.clips.empty()) return false;
-    const PlacedClip& playing = owner.clips.back();
-    const auto end = playing.start + std::int64_t(s.graph.clips[std::size_t(playing.clip)].path.size());
-    return end > frame_ && !s.escapes.in_place[std::size_t(playing.clip)];
-}
-
 // The queries of one piece of candidate k's plan: the solids, then every other agent's piece live in
 // the broad phase.
 bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits) {
@@ -416,7 +398,7 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
         if (!hit) continue;
         if (hits == Hits::Yield && may_yield(s, other)) {
             if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) continue;
-            if (yielding_.size() < kMaxYielding) {
+            if (yielding_.size() < std::size_t(s.options.tuning.max_yielding)) {
                 yielding_.push_back(other.agent);
                 continue;
             }
@@ -427,44 +409,6 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
     }
     return free;
 }
-
-namespace {
-
-// The plan of clip `c` along an escape route, built piece by piece: its stopping clips chained after it
-// on the frame grid, then the held ground where the route's idle clip starts. Each piece goes to
-// `accept` as it is placed, and the plan stops at the first it refuses; returns whether none was.
-template <class Accept>
-bool build_plan(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route, Plan& plan, Accept&& accept) {
-    // (The route's first i + 1 clips place its i-th piece: a refused escape clip refuses every route
-    // sharing that prefix, which the caller skips.)
-    const MotionGraph& g = s.graph;
-    plan.escape.clear();
-    plan.hold.reset();
-    int prev = c.clip;
-    Placement p = c.place;
-    Rigid2 m = c.m;
-    std::int64_t f = c.frame + std::int64_t(g.clips[std::size_t(prev)].path.size());
-    Piece piece;
-    for (std::size_t i = 0; i < route.size(); ++i) {
-        p = g.next(p, m, prev);
-        p.t0 = double(f) * g.dt();
-        if (i + 1 == route.size()) break;  // the idle clip: the held ground starts with it
-        m = Rigid2::of(p);
-        piece.index = int(i) + 1;
-        piece.clip = frame_clip(s, route[i], p, m, f);
-        plan.escape.push_back(piece.clip);
-        if (!accept(piece)) return false;
-        prev = route[i];
-        f += std::int64_t(g.clips[std::size_t(prev)].path.size());
-    }
-    plan.hold = Hold{p.x, p.y, s.escapes.hold_of(route.back()), f};
-    piece.kind = Piece::Held;
-    piece.index = -1;
-    piece.hold = *plan.hold;
-    return accept(piece);
-}
-
-}  // namespace
 
 Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route) {
     Plan plan;
@@ -485,38 +429,6 @@ bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const 
     });
 }
 
-// Which routes of candidate k would hold ground within kStandingGap of another agent's (bit r: route r),
-// leaving out the held ground the agent already stands that close to (it could not stop otherwise).
-std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
-    const int clip = placed_[std::size_t(k)].clip;
-    const auto& ends = s.escapes.ends[std::size_t(clip)];
-    if (ends.empty()) return 0;
-    // Held ground lasts for good and clips do not: asked at the end of time, the broad phase answers with
-    // held ground alone.
-    SpaceTimeBox box{1e300, 1e300, -1e300, -1e300, kForever - 1, kForever};
-    Hold at[EscapeTable::kMaxRoutes];
-    for (std::size_t r = 0; r < ends.size(); ++r) {
-        const auto& [x, y] = ends[r];
-        at[r] = {base_m_.apply_x(x, y), base_m_.apply_y(x, y),
-                 s.escapes.hold_of(s.escapes.routes[std::size_t(clip)][r].back()), frame_};
-        box.x0 = std::min(box.x0, at[r].x), box.y0 = std::min(box.y0, at[r].y);
-        box.x1 = std::max(box.x1, at[r].x), box.y1 = std::max(box.y1, at[r].y);
-    }
-    const double reach = s.escapes.hold_radius + kStandingGap;
-    box.x0 -= reach, box.y0 -= reach, box.x1 += reach, box.y1 += reach;
-    note_query(box);
-    query_pieces(s, box, agent_, near_);
-    const Hold here{base_.x, base_.y, s.escapes.hold_radius, 0};
-    std::uint32_t crowded = 0;
-    for (int id : near_) {
-        const Piece& p = s.pieces[std::size_t(id)];
-        if (p.kind != Piece::Held || holds_meet(here, p.hold, kStandingGap)) continue;
-        for (std::size_t r = 0; r < ends.size(); ++r)
-            if (holds_meet(at[r], p.hold, kStandingGap)) crowded |= 1u << r;
-    }
-    return crowded;
-}
-
 void Choice::take(int k, Outcome how) {
     const Placed& c = placed_[std::size_t(k)];
     taken_ = {c.clip, c.place, frame_, c.box, base_m_};
@@ -526,59 +438,6 @@ void Choice::take(int k, Outcome how) {
     if (!searched_) return;
     const std::vector<SearchStep> sequence = search_.sequence(ranked_[std::size_t(k)].second);
     if (!sequence.empty()) intended_.assign(sequence.begin() + 1, sequence.end());
-}
-
-// The agent's own escape: its next stopping clip, else one more clip in place on its held ground.
-bool Choice::take_escape(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    if (!a.plan.escape.empty()) {
-        taken_ = a.plan.escape.front();
-        plan_.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
-        plan_.hold = a.plan.hold;
-        outcome_ = Outcome::Escape;
-        point_.taken = taken_.clip;
-        return true;
-    }
-    return hold_on(s);
-}
-
-// Whether every disk of clip `c` placed at `base` lies inside the held disk h.
-bool inside_hold(const CrowdState& s, int c, const Placement& base, const Hold& h) {
-    if (base.x == h.x && base.y == h.y) return s.escapes.hold_of(c) <= h.r;  // idle clips start on the anchor
-    const Rigid2 m = Rigid2::of(base);
-    for (const Sample& x : s.graph.clips[std::size_t(c)].path.samples) {
-        const double dx = m.apply_x(x.x, x.y) - h.x, dy = m.apply_y(x.x, x.y) - h.y, room = h.r - x.r;
-        if (room < 0 || dx * dx + dy * dy > room * room) return false;
-    }
-    return true;
-}
-
-// One more idle clip on the held ground, all of its disks inside it (so free: the others planned around
-// it). Idle clips loop exactly in place, so the next one fits too.
-bool Choice::hold_on(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    if (!a.plan.hold) return false;
-    const Hold& h = *a.plan.hold;
-    const MotionGraph& g = s.graph;
-    const auto idle = [&](int c) { return s.escapes.kind[std::size_t(c)] == ClipKind::Idle; };
-    std::vector<int> options;
-    if (a.clips.empty()) {
-        for (int c = 0; c < int(g.clips.size()); ++c)
-            if (idle(c)) options.push_back(c);
-    } else {
-        for (int c : g.clips[std::size_t(a.clips.back().clip)].successors)
-            if (idle(c)) options.push_back(c);
-    }
-    std::sort(options.begin(), options.end());
-    for (int c : options) {
-        if (!inside_hold(s, c, base_, h)) continue;
-        taken_ = frame_clip(s, c, base_, base_m_, frame_);
-        plan_ = Plan{{}, h};
-        outcome_ = Outcome::Escape;
-        point_.taken = c;
-        return true;
-    }
-    return false;
 }
 
 // Nothing is free and the agent's escape cannot go on: the candidate that stays clear of walls and
@@ -636,7 +495,7 @@ void Choice::evaluate(const CrowdState& s) {
     outcome_ = Outcome::Candidate;
     order(s);
     point_.candidates.reserve(order_.size());
-    if (s.policy.kind() == Selection::Random) return evaluate_random(s);
+    if (!s.policy.avoids()) return evaluate_random(s);
     const Agent& a = s.agents[std::size_t(agent_)];
     if (frame_ < a.start_frame || a.arrived) {
         if (!take_escape(s)) return fall_back(s);
@@ -659,7 +518,7 @@ void Choice::evaluate(const CrowdState& s) {
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, Hits::Stop)) continue;
         const auto& routes = s.escapes.routes[std::size_t(c.clip)];
-        const std::uint32_t crowded = a.goals.empty() ? crowded_routes(s, k) : 0;
+        const std::uint32_t crowded = crowded_routes(s, k);
         const std::vector<int>* refused_route = nullptr;
         std::size_t refused = 0;
         for (std::size_t r = 0; r < routes.size(); ++r) {
@@ -668,7 +527,7 @@ void Choice::evaluate(const CrowdState& s) {
             if (refused > 0 && route.size() > refused &&
                 std::equal(route.begin(), route.begin() + std::ptrdiff_t(refused), refused_route->begin()))
                 continue;
-            if (crowded >> r & 1) continue;  // it would stop too close to another (kStandingGap)
+            if (crowded >> r & 1) continue;  // it would stop too close to another (standing_gap.cpp)
             refused_route = &route;
             if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
             if (s.escapes.moves[std::size_t(c.clip)] && passes_waiting(s, k)) {
@@ -688,125 +547,6 @@ void Choice::evaluate(const CrowdState& s) {
     if (!take_escape(s)) fall_back(s);
 }
 
-void Choice::take_deferred() {
-    std::swap(plan_, deferred_plan_);
-    take(deferred_, Outcome::Candidate);
-}
-
-// Whether candidate k's clip passes within kGiveWayReach of an agent that waits (CrowdState::waiting).
-bool Choice::passes_waiting(const CrowdState& s, int k) {
-    const Placed& c = placed_[std::size_t(k)];
-    const SpaceTimeBox& b = c.box;
-    s.waiting.query(
-        {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},
-        agent_, waiters_);
-    if (waiters_.empty()) return false;
-    constexpr double r2 = kGiveWayReach * kGiveWayReach;
-    for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {
-        const double px = base_m_.apply_x(x.x, x.y), py = base_m_.apply_y(x.x, x.y);
-        for (int w : waiters_) {
-            const auto& at = s.waiting_at[std::size_t(w)];
-            if ((px - at[0]) * (px - at[0]) + (py - at[1]) * (py - at[1]) < r2) return true;
-        }
-    }
-    return false;
-}
-
-bool Choice::has_right_of_way(const CrowdState& s) const {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    return !arriving_ && double(frame_ - a.moved_until) * s.graph.dt() >= kRightOfWay;
-}
-
-// The moving candidates before `end` again, in order, now past the reservations that may yield (at most kMaxYielding
-// owners): the first whose plan is free but for them, and whose owners all find another way to stop, is
-// taken.
-bool Choice::take_right_of_way(const CrowdState& s, int end) {
-    for (int k = 0; k < end; ++k) {
-        const Placed& c = placed_[std::size_t(k)];
-        if (!s.escapes.moves[std::size_t(c.clip)]) continue;
-        Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        yielding_.clear();
-        if (!free_of_others(s, k, mine, Hits::Yield)) continue;
-        const std::size_t owners = yielding_.size();
-        for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
-            yielding_.resize(owners);
-            const bool free = build_plan(s, mine.clip, route, plan_,
-                                         [&](const Piece& piece) { return free_of_others(s, k, piece, Hits::Yield); });
-            if (!free || !reroute_yielding(s, mine.clip)) continue;
-            take(k, Outcome::RightOfWay);
-            return true;
-        }
-    }
-    reroutes_.clear();
-    return false;
-}
-
-// Another way to stop for every owner in yielding_, each free of the new plan (clip c and plan_), of the
-// reroutes found before it and of everything else but what the taking would release.
-bool Choice::reroute_yielding(const CrowdState& s, const PlannedClip& c) {
-    excluded_.clear();
-    excluded_.insert(excluded_.end(), s.agents[std::size_t(agent_)].reserved.begin(),
-                     s.agents[std::size_t(agent_)].reserved.end());
-    for (int w : yielding_) {
-        const auto& r = s.agents[std::size_t(w)].reserved;
-        excluded_.insert(excluded_.end(), r.begin(), r.end());
-    }
-    extra_.clear();
-    Piece p;
-    p.agent = agent_;
-    p.clip = c;
-    extra_.push_back(p);
-    for (const PlannedClip& e : plan_.escape) {
-        p.clip = e;
-        extra_.push_back(p);
-    }
-    if (plan_.hold) {
-        p.kind = Piece::Held;
-        p.hold = *plan_.hold;
-        extra_.push_back(p);
-    }
-    reroutes_.clear();
-    for (int w : yielding_)
-        if (!reroute(s, w)) return false;
-    return true;
-}
-
-// The first escape route of `owner` from the clip it plays whose pieces are free (free_for_reroute); it
-// joins reroutes_ and extra_.
-bool Choice::reroute(const CrowdState& s, int owner) {
-    const Agent& a = s.agents[std::size_t(owner)];
-    const PlacedClip& playing = a.clips.back();
-    const PlannedClip c = frame_clip(s, playing.clip, playing.place, Rigid2::of(playing.place), playing.start);
-    Plan plan;
-    for (const std::vector<int>& route : s.escapes.routes[std::size_t(playing.clip)]) {
-        const bool free = build_plan(s, c, route, plan, [&](Piece piece) {
-            piece.agent = owner;
-            return free_for_reroute(s, piece);
-        });
-        if (!free) continue;
-        Reroute r{owner, plan, {}};
-        for (int id : a.reserved) {
-            const Piece& old = s.pieces[std::size_t(id)];
-            r.released.push_back(box_of(old));
-        }
-        for (const PlannedClip& e : plan.escape) {
-            Piece p;
-            p.agent = owner;
-            p.clip = e;
-            extra_.push_back(p);
-        }
-        Piece h;
-        h.kind = Piece::Held;
-        h.agent = owner;
-        h.hold = *plan.hold;
-        extra_.push_back(h);
-        reroutes_.push_back(std::move(r));
-        return true;
-    }
-    return false;
-}
-
 // A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live
 // piece of the others but the `excluded` ids. Its queries count for the choice point, not for a candidate.
 bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded) {
@@ -822,20 +562,6 @@ bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vect
         if (excluded && std::find(excluded->begin(), excluded->end(), id) != excluded->end()) continue;
         QueryStats st;
         const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
-        count_query(st);
-        if (hit) return false;
-    }
-    return true;
-}
-
-// A piece of a reroute: free of everything but what the taking would release (excluded_), and of the
-// extra pieces (the new plan, the reroutes found before it).
-bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
-    if (!piece_free(s, piece, &excluded_)) return false;
-    for (const Piece& e : extra_) {
-        if (e.agent == piece.agent) continue;
-        QueryStats st;
-        const bool hit = pieces_collide(s, piece, e, &st);
         count_query(st);
         if (hit) return false;
     }

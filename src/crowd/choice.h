@@ -7,6 +7,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -131,7 +132,7 @@ struct CrowdState {
     const BroadPhase& broad;             ///< pieces live now
     const std::vector<Agent>& agents;
     const std::vector<Piece>& pieces;  ///< by broad-phase id
-    const BroadPhase& waiting;         ///< agents that waited kGiveWay or longer, by agent id (their ground)
+    const BroadPhase& waiting;         ///< agents that waited give_way_after or longer, by id (their ground)
     const std::vector<std::array<double, 2>>& waiting_at;  ///< per agent: where it waits (metres)
 };
 
@@ -143,43 +144,8 @@ enum class Outcome : std::uint8_t {
     Fallback,    ///< nothing free and no escape left: the least bad candidate
     RightOfWay,  ///< none was free, but the agent had waited long enough and a moving candidate was free once
                  ///< the other agents whose reservations it met took other ways to stop (Reroute), or
-                 ///< free but for the standing gap (no Reroute then)
+                 ///< free but for the standing gap (no Reroute then): right_of_way.cpp
 };
-
-/// The right of way: an agent that has not moved for kRightOfWay seconds may take a moving candidate whose
-/// plan meets other agents' reservations - the escape clips and held ground beyond the clip they play,
-/// never the clip itself - when each of those agents (at most kMaxYielding, none at a choice point in the
-/// frame, none standing) has another escape route from the clip it plays, free of everything else and of
-/// the new plan. The other agent then reserves that route instead: safe as before, it just stops
-/// elsewhere. (Priority to the agent that waited longest, as in Okumura et al.'s priority inheritance
-/// with backtracking, PIBT 2019: the higher-priority agent pushes the lower ones, which plan again.)
-/// The right of way also passes the standing gap (kStandingGap): one that waited may stop close.
-/// (Keeping the gap there too made the idle tail longer: bench/results/README.md.)
-inline constexpr double kRightOfWay = 2.0;  // seconds without a clip that moves
-inline constexpr std::size_t kMaxYielding = 2;
-
-/// Giving way: a free moving candidate whose clip passes within kGiveWayReach of an agent that has not
-/// moved for kGiveWay seconds (CrowdState::waiting) is taken only when no later moving candidate is free
-/// and clear of such agents: walkers keep out of the way of those who wait, when they can, so that the
-/// ground they would walk into stays open. It only reorders free candidates: nothing is refused for it.
-inline constexpr double kGiveWay = kRightOfWay;  // seconds
-inline constexpr double kGiveWayReach = 2.5;     // metres
-
-/// Room between standing places: a wandering agent (one without a goal) takes no candidate along an
-/// escape route whose held ground would come within kStandingGap metres, beyond what the disks need, of
-/// another agent's held ground - unless it already stands that close to that ground (the test is then
-/// left out: it could never stop otherwise). Agents that stop leave room to pass between them instead
-/// of packing into knots whose every walk is refused and that untangle one slow clip at a time (the
-/// longest idle stretches: bench/results/README.md). Goal agents converge on purpose (a doorway, a
-/// circle's centre), where stopping close behind another is queueing; the right of way passes the gap.
-/// A preference of the choice, not a collision: contacts keep the exact test.
-inline constexpr double kStandingGap = 0.45;  // metres
-
-/// The look-ahead (look_ahead.h) of a policy with a horizon: at most kLookAheadBudget searched clips
-/// tested per choice point; a first clip whose every sequence met a reservation before the horizon
-/// ranks kLookAheadDeadEnd seconds behind its best free step.
-inline constexpr int kLookAheadBudget = 96;
-inline constexpr double kLookAheadDeadEnd = 2.0;  // seconds
 
 /// Another agent's plan that gives way to a choice point's: what it reserves from now on, and the boxes
 /// of the pieces it releases.
@@ -302,6 +268,49 @@ PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const 
 /// The plan of clip `c` along an escape route (EscapeTable::routes): its stopping clips chained after it
 /// on the frame grid, and the held ground where the route's clip in place starts.
 Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route);
+
+// The plan of clip `c` along an escape route, built piece by piece: its stopping clips chained after it
+// on the frame grid, then the held ground where the route's idle clip starts. Each piece goes to
+// `accept` as it is placed, and the plan stops at the first it refuses; returns whether none was.
+template <class Accept>
+bool build_plan(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route, Plan& plan, Accept&& accept) {
+    // (The route's first i + 1 clips place its i-th piece: a refused escape clip refuses every route
+    // sharing that prefix, which the caller skips.)
+    const MotionGraph& g = s.graph;
+    plan.escape.clear();
+    plan.hold.reset();
+    int prev = c.clip;
+    Placement p = c.place;
+    Rigid2 m = c.m;
+    std::int64_t f = c.frame + std::int64_t(g.clips[std::size_t(prev)].path.size());
+    Piece piece;
+    for (std::size_t i = 0; i < route.size(); ++i) {
+        p = g.next(p, m, prev);
+        p.t0 = double(f) * g.dt();
+        if (i + 1 == route.size()) break;  // the idle clip: the held ground starts with it
+        m = Rigid2::of(p);
+        piece.index = int(i) + 1;
+        piece.clip = frame_clip(s, route[i], p, m, f);
+        plan.escape.push_back(piece.clip);
+        if (!accept(piece)) return false;
+        prev = route[i];
+        f += std::int64_t(g.clips[std::size_t(prev)].path.size());
+    }
+    plan.hold = Hold{p.x, p.y, s.escapes.hold_of(route.back()), f};
+    piece.kind = Piece::Held;
+    piece.index = -1;
+    piece.hold = *plan.hold;
+    return accept(piece);
+}
+
+/// The frame that never comes: held ground lasts until then.
+inline constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
+
+/// Whether two held disks come closer than `gap` metres beyond touching.
+inline bool holds_meet(const Hold& a, const Hold& b, double gap = 0) {
+    const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r + gap;
+    return dx * dx + dy * dy < r * r;
+}
 
 /// Whether piece `mine` of an agent's plan collides with another agent's piece: clips by the narrow
 /// phase; a clip and held ground by their samples overlapping the held disk from its first frame on;

@@ -5,10 +5,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 
 #include "choice.h"
 #include "mobb/core/angle.h"
@@ -30,8 +28,6 @@ void check(const CrowdOptions& o) {
         throw std::invalid_argument("crowd: agents, seconds and the world must be positive");
     if (o.threads < 1) throw std::invalid_argument("crowd: threads must be at least 1");
 }
-
-bool reserves(const CrowdOptions& o) { return o.select != Selection::Random; }
 
 // The solids by index in a grid of their own: they never change, and a scenario may have many.
 BroadPhase solid_grid(const std::vector<Polygon>& solids, const CrowdOptions& o) {
@@ -62,10 +58,10 @@ public:
           outlines_(outlines_of(g)),
           narrow_(narrow),
           o_(o),
-          escapes_(reserves(o) ? EscapeTable::build(g) : EscapeTable{}),
-          solids_(reserves(o) ? o.world.solids() : std::vector<Polygon>{}),
+          escapes_(EscapeTable::build(g, o.tuning)),
+          policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
+          solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
           solid_grid_(solid_grid(solids_, o)),
-          policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, 0.45})),
           pool_(o.threads),
           broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
           chosen_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
@@ -106,9 +102,9 @@ private:
     const NarrowPhase& narrow_;
     const CrowdOptions& o_;
     const EscapeTable escapes_;
-    const std::vector<Polygon> solids_;
-    const BroadPhase solid_grid_;
     const std::unique_ptr<Policy> policy_;
+    const std::vector<Polygon> solids_;  // none when the policy does not avoid
+    const BroadPhase solid_grid_;
     util::WorkerPool pool_;
     BroadPhase broad_;                            // pieces live now
     std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
@@ -126,7 +122,7 @@ private:
     std::int64_t expired_until_ = 0;                 // ending_ below it went to unused_
     std::vector<std::vector<int>> due_;              // per frame: agents at a choice point
     std::vector<Choice> slots_;                      // one per choice point of a batch, reused
-    BroadPhase waiting_;                             // agents that waited kGiveWay or longer: their ground, by agent id
+    BroadPhase waiting_;                             // agents that waited give_way_after or longer: their ground, by id
     std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
     std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
     std::vector<char> in_waiting_;                    // per agent: in waiting_
@@ -185,7 +181,7 @@ void Simulation::place_at_random(double gap, double margin) {
 // paper's experiment), their held grounds apart and inside the walls otherwise.
 void Simulation::place_agents() {
     if (o_.placed.empty()) {
-        if (!reserves(o_)) return place_at_random(2 * max_radius(), max_radius());
+        if (!policy_->avoids()) return place_at_random(2 * max_radius(), max_radius());
         return place_at_random(2 * escapes_.hold_radius, escapes_.wall_clearance);
     }
     for (const AgentSpec& s : o_.placed) {
@@ -382,16 +378,19 @@ void Simulation::reserve(int agent, int commit, const Plan& plan) {
     a.plan = plan;
 }
 
-// Whether the agent will have waited kGiveWay by the end of the clip it took (`end`): others' walks keep
+// Whether the agent will have waited give_way_after by the end of the clip it took (`end`): others' walks keep
 // clear of it from the next frame on, until it moves.
 void Simulation::note_waiting(int agent, std::int64_t end) {
     const Agent& a = agents_[std::size_t(agent)];
-    const bool waits = reserves(o_) && !a.arrived && a.plan.hold && double(end - a.moved_until) * g_.dt() >= kGiveWay;
+    const CrowdTuning& t = o_.tuning;
+    const bool waits = t.give_way && policy_->avoids() && !a.arrived && a.plan.hold &&
+                       double(end - a.moved_until) * g_.dt() >= t.give_way_after;
     if (!waits && !in_waiting_[std::size_t(agent)]) return;
     wait_changes_.push_back({agent, waits});
 }
 
 void Simulation::apply_waiting() {
+    const double reach = o_.tuning.give_way_reach;
     for (const auto& [agent, waits] : wait_changes_) {
         in_waiting_[std::size_t(agent)] = waits;
         if (!waits) {
@@ -401,7 +400,7 @@ void Simulation::apply_waiting() {
         const Hold& h = *agents_[std::size_t(agent)].plan.hold;
         waiting_at_[std::size_t(agent)] = {h.x, h.y};
         waiting_.insert(agent, agent,
-                        {h.x - kGiveWayReach, h.y - kGiveWayReach, h.x + kGiveWayReach, h.y + kGiveWayReach,
+                        {h.x - reach, h.y - reach, h.x + reach, h.y + reach,
                          std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()});
     }
     wait_changes_.clear();
@@ -431,10 +430,11 @@ void Simulation::commit(Choice& c) {
         policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
     }
     // Waiting: following its escape, or choosing to stay in place (the random mode has no escapes).
-    const bool stays = reserves(o_) && escapes_.in_place[std::size_t(t.clip)];
+    const bool avoids = policy_->avoids();
+    const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
     a.waited = c.outcome() == Outcome::Escape || stays ? a.waited + 1 : 0;
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
-    if (escapes_.moves.empty() || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
+    if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     note_waiting(c.agent(), end);
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
@@ -558,7 +558,7 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     r.dt = g_.dt();
     r.frames = std::max<std::int64_t>(1, std::llround(o_.seconds / r.dt));
     r.world = o_.world;
-    if (!reserves(o_)) r.world.walls = false;  // the random mode ignores them
+    if (!policy_->avoids()) r.world.walls = false;  // the paper's timing mode ignores them
     r.seed = o_.seed;
     r.select = to_string(o_.select);
     r.tree = narrow_.name();
@@ -568,7 +568,7 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     s.agents = std::uint64_t(agents_.size());
     s.simulated_seconds = double(r.frames) * r.dt;
     s.threads = o_.threads;
-    if (reserves(o_)) reserve_starts();
+    if (policy_->avoids()) reserve_starts();
     run_frames(progress);
     fill_samples();
     s.seconds = since(start);
@@ -579,8 +579,6 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     if (progress) progress(1.0);
     return std::move(out_);
 }
-
-double per(std::uint64_t x, std::uint64_t n) { return n ? double(x) / double(n) : 0.0; }
 
 }  // namespace
 
@@ -595,56 +593,6 @@ CrowdRun run_crowd(const MotionGraph& graph, const NarrowPhase& narrow, const Cr
                    const std::function<void(double)>& progress) {
     check(options);
     return Simulation(graph, narrow, options).run(progress);
-}
-
-double CrowdSummary::cd_us_per_agent_second() const {
-    const double n = double(agents) * simulated_seconds;
-    return n > 0 ? cd_seconds * 1e6 / n : 0.0;
-}
-
-std::string summary_json(const CrowdSummary& s) {
-    nlohmann::ordered_json j;
-    j["choice_points"] = s.choice_points;
-    j["candidates"] = s.candidates;
-    j["queries"] = s.queries;
-    j["positive_queries"] = s.hits;
-    j["mean_tests2d"] = per(s.tests2d, s.queries);
-    j["mean_tests3d"] = per(s.tests3d, s.queries);
-    j["mean_samples"] = per(s.samples, s.queries);
-    j["root_rejected_share"] = per(s.root_rejected, s.queries);
-    j["time_overlapping_pairs"] = s.time_pairs;
-    j["pairs_pruned"] = s.pruned;
-    j["escapes"] = s.escapes;
-    j["right_of_way"] = s.right_of_way;
-    j["reroutes"] = s.reroutes;
-    j["fallbacks"] = s.fallbacks;
-    j["fallbacks_outside_world"] = s.outside;
-    j["contacts"] = s.contacts;
-    j["contacts_outside_fallbacks"] = s.contacts_unexcused;
-    j["reevaluated"] = s.reevaluated;
-    return j.dump();
-}
-
-std::string summary_text(const CrowdSummary& s) {
-    std::ostringstream out;
-    out << "choice points            " << s.choice_points << " (" << s.candidates << " candidates)\n"
-        << "queries                  " << s.queries << " (" << s.hits << " positive)\n"
-        << "mean tests per query     2D " << per(s.tests2d, s.queries) << ", 3D " << per(s.tests3d, s.queries)
-        << ", samples " << per(s.samples, s.queries) << "\n"
-        << "rejected at the root     " << 100.0 * per(s.root_rejected, s.queries) << " %\n"
-        << "pairs pruned (broad)     " << s.pruned << " of " << s.time_pairs << " overlapping in time\n"
-        << "escapes taken            " << s.escapes << " (" << 100.0 * per(s.escapes, s.choice_points)
-        << " % of choice points)\n"
-        << "right of way             " << s.right_of_way << " (" << s.reroutes << " plans of others gave way)\n"
-        << "fallbacks                " << s.fallbacks << " (" << 100.0 * per(s.fallbacks, s.choice_points) << " %, "
-        << s.outside << " leaving the world)\n"
-        << "contacts (frame check)   " << s.contacts << " agent-pair frames, " << s.contacts_unexcused
-        << " outside fallbacks\n"
-        << "re-evaluated choices     " << s.reevaluated << " (a commit earlier in the frame was near)\n"
-        << "simulation time          " << s.seconds << " s (" << s.threads << " threads)\n"
-        << "collision detection      " << s.cd_seconds << " s, " << s.cd_us_per_agent_second()
-        << " us per agent per simulated s\n";
-    return out.str();
 }
 
 }  // namespace mobb::crowd

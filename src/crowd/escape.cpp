@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "mobb/crowd/metrics.h"
+#include "mobb/crowd/tuning.h"
 
 namespace mobb::crowd {
 
@@ -67,7 +67,8 @@ std::array<double, 2> route_end(const MotionGraph& g, int clip, const std::vecto
 
 }  // namespace
 
-EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_routes) {
+EscapeTable EscapeTable::build(const MotionGraph& g, const CrowdTuning& tuning) {
+    const int max_steps = tuning.escape_steps, max_routes = tuning.escape_routes;
     if (max_routes > kMaxRoutes) throw std::invalid_argument("crowd: more escape routes per clip than kMaxRoutes");
     EscapeTable t;
     for (int c = 0; c < int(g.clips.size()); ++c) {
@@ -76,7 +77,7 @@ EscapeTable EscapeTable::build(const MotionGraph& g, int max_steps, int max_rout
         t.in_place.push_back(t.kind.back() == ClipKind::InPlace || t.kind.back() == ClipKind::Idle);
         t.footprint.push_back(footprint_of(clip.path));
         const double duration = double(clip.path.size()) * g.dt();
-        t.moves.push_back(std::hypot(clip.exit_x, clip.exit_y) >= CrowdMetrics::kIdleSpeed * duration);
+        t.moves.push_back(std::hypot(clip.exit_x, clip.exit_y) >= tuning.moving_speed * duration);
         if (t.kind.back() == ClipKind::Idle) t.hold_radius = std::max(t.hold_radius, t.hold_of(c));
     }
     for (int c = 0; c < int(g.clips.size()); ++c)

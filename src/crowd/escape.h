@@ -9,19 +9,20 @@
 #include <vector>
 
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/tuning.h"
 
 namespace mobb::crowd {
 
 struct EscapeTable {
     std::vector<ClipKind> kind;  ///< per clip
     std::vector<char> in_place;  ///< per clip: InPlace or Idle
-    /// Per clip: from its start to its exit at CrowdMetrics::kIdleSpeed or faster (an agent playing it is
-    /// not idle). An agent that played none for a while has the right of way (choice.h).
+    /// Per clip: from its start to its exit at CrowdTuning::moving_speed or faster (an agent playing it
+    /// is not waiting). An agent that played none for a while has the right of way (right_of_way.cpp).
     std::vector<char> moves;
     std::vector<double> footprint;  ///< per clip: max over samples of |p_i - p_0| + r_i
     /// Per clip: successor chains c1..ck, ck idle (k = 1 when a successor already is), the shortest first,
-    /// then one clip longer, at most max_routes of them; none when an idle clip is more than max_steps
-    /// clips away.
+    /// then one clip longer, at most CrowdTuning::escape_routes of them; none when an idle clip is more
+    /// than CrowdTuning::escape_steps clips away.
     std::vector<std::vector<std::vector<int>>> routes;
     /// Per clip, per route: where the route's held ground is, in the clip's own frame (metres: the clip
     /// placed at the origin facing +x), so a choice point places it without chaining the route.
@@ -37,8 +38,9 @@ struct EscapeTable {
 
     static constexpr int kMaxRoutes = 32;  ///< a choice point marks a clip's routes in 32 bits
 
-    /// Throws std::invalid_argument when the graph has no idle clip or max_routes > kMaxRoutes.
-    static EscapeTable build(const MotionGraph& graph, int max_steps = 3, int max_routes = 16);
+    /// With CrowdTuning's moving_speed, escape_steps and escape_routes. Throws std::invalid_argument when
+    /// the graph has no idle clip or escape_routes > kMaxRoutes.
+    static EscapeTable build(const MotionGraph& graph, const CrowdTuning& tuning = {});
 };
 
 }  // namespace mobb::crowd

@@ -9,7 +9,6 @@
 #include <iterator>
 #include <utility>
 
-#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/policy.h"
 
 namespace mobb::crowd {
@@ -18,7 +17,7 @@ namespace {
 
 class AvoidPolicy : public Policy {
 public:
-    explicit AvoidPolicy(const PolicyContext& c) : graph_(c.graph), world_(c.world) {
+    explicit AvoidPolicy(const PolicyContext& c) : graph_(c.graph), world_(c.world), moving_(c.tuning.moving_speed) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) {
             const GraphClip& clip = graph_.clips[std::size_t(k)];
             kinds_.push_back(kind_of(clip, k));
@@ -29,6 +28,7 @@ public:
     }
 
     Selection kind() const override { return Selection::Avoid; }
+    bool keeps_standing_gap() const override { return true; }
 
     // A stable insertion sort by rank: a few dozen candidates, no allocation.
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
@@ -74,7 +74,7 @@ private:
     static constexpr int kBands = int(kOpenAhead / kBand);
     static constexpr std::size_t kMaxSlower = 256;  // order_in_open counts them on the stack
 
-    // Clips that do not walk, after every walk: slow ones (starts, stops) that move at kIdleSpeed or
+    // Clips that do not walk, after every walk: slow ones (starts, stops) that move (moving_) or
     // faster, then those in place, then the slow ones that only creep; each kind the faster first (an
     // agent that must slow down keeps as much of its speed as it can, and one that cannot move turns to
     // find a way out rather than creep along the way it is stuck in).
@@ -87,7 +87,7 @@ private:
             const double duration = double(graph_.clips[std::size_t(k)].path.size()) * graph_.dt();
             const double speed = reach_[std::size_t(k)] / duration;
             if (kind != ClipKind::Slow) return std::pair{1, -speed};
-            return std::pair{speed >= CrowdMetrics::kIdleSpeed ? 0 : 2, -speed};
+            return std::pair{speed >= moving_ ? 0 : 2, -speed};
         };
         std::stable_sort(slower.begin(), slower.end(), [&](int a, int b) { return key(a) < key(b); });
         slower_rank_.assign(kinds_.size(), 0);
@@ -132,6 +132,7 @@ private:
 
     const MotionGraph& graph_;
     const World& world_;
+    const double moving_;           // m/s: CrowdTuning::moving_speed
     std::vector<ClipKind> kinds_;   // per clip
     std::vector<double> reach_;     // per clip: metres from its start to its exit
     std::vector<int> slower_rank_;  // per clip that does not walk: its rank

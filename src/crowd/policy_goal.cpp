@@ -18,7 +18,8 @@ namespace {
 
 class GoalPolicy : public Policy {
 public:
-    explicit GoalPolicy(const PolicyContext& c) : graph_(c.graph), radius_(c.goal_radius), grid_(c.world, c.clearance) {
+    explicit GoalPolicy(const PolicyContext& c)
+        : graph_(c.graph), tuning_(c.tuning), radius_(c.goal_radius), grid_(c.world, c.tuning.nav_clearance) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
         // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
         // stops that much inside the goal radius so that it stays within it to the end.
@@ -46,9 +47,9 @@ public:
 
     double neighbourhood() const override { return 6.0; }
 
-    // A stuck agent (kPatience) and one at its goal order their candidates alone.
+    // A stuck agent (CrowdTuning::goal_patience) and one at its goal order their candidates alone.
     int horizon(const ChoiceSite& site) const override {
-        return site.goal && !site.arrived && site.waited < kPatience ? kHorizon : 0;
+        return site.goal && !site.arrived && site.waited < tuning_.goal_patience ? tuning_.goal_horizon : 0;
     }
 
     double to_go(const ChoiceSite& site, const Placement& end) const override {
@@ -66,12 +67,6 @@ public:
     }
 
 private:
-    static constexpr double kWalking = 1.3;   // metres per second
-    static constexpr double kTurning = 1.3;   // radians per second, turning on the spot
-    static constexpr double kPersonal = 2.0;  // metres: nearer than this to a neighbour costs
-    static constexpr double kCrowding = 1.2;  // seconds per metre inside that distance
-    static constexpr int kPatience = 3;       // choice points in a row without moving on before making room
-    static constexpr int kHorizon = 3;        // clips searched ahead (about 3.6 s of the graph's clips)
 
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
     // cost for ending close to where the neighbours will be. Within the stop radius, the path alone: the
@@ -80,21 +75,23 @@ private:
     // agent could circle its goal for good).
     double seconds(const NavField& field, const Placement& end, const std::vector<std::array<double, 2>>& near) const {
         const double distance = field.distance(end.x, end.y);
-        if (distance < stop_radius_) return distance / kWalking;
+        const CrowdTuning& k = tuning_;
+        if (distance < stop_radius_) return distance / k.goal_walking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
-        double t = distance / kWalking + turn / kTurning;
+        double t = distance / k.goal_walking + turn / k.goal_turning;
         for (const auto& n : near) {  // squared first: most neighbours are farther (and hypot is slow)
             const double dx = end.x - n[0], dy = end.y - n[1], d2 = dx * dx + dy * dy;
-            if (d2 < kPersonal * kPersonal) t += kCrowding * (kPersonal - std::sqrt(d2));
+            if (d2 < k.goal_personal * k.goal_personal) t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
         }
         return t;
     }
 
-    // Walking on: the estimated time to the goal; standing idle last. A stuck agent (kPatience) keeps the
-    // stream's random order instead, which moves it out of the way of the agents it waits for.
+    // Walking on: the estimated time to the goal; standing idle last. A stuck agent
+    // (CrowdTuning::goal_patience) keeps the stream's random order instead, which moves it out of the way
+    // of the agents it waits for.
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.waited >= kPatience) return idle;
+        if (site.waited >= tuning_.goal_patience) return idle;
         const Placement end = graph_.next(site.base, m, c);
         return idle + graph_.clips[std::size_t(c)].path.duration() +
                seconds(fields_.at(*site.goal), end, site.neighbours);
@@ -110,6 +107,7 @@ private:
     }
 
     const MotionGraph& graph_;
+    const CrowdTuning tuning_;
     std::vector<ClipKind> kinds_;
     double radius_;
     double stop_radius_;  // metres: radius_ less the idle clips' sway

@@ -9,6 +9,7 @@ namespace {
 class RandomPolicy : public Policy {
 public:
     Selection kind() const override { return Selection::Random; }
+    bool avoids() const override { return false; }
     void order(const ChoiceSite&, std::vector<int>&) const override {}  // the stream's order
 };
 

@@ -74,7 +74,9 @@ TEST(EscapeTable, RouteEndsAreWhereTheRoutesHoldGround) {
     }
     EXPECT_GT(routes, 500);
     EXPECT_LT(worst, 1e-9);
-    EXPECT_THROW(EscapeTable::build(g, 3, EscapeTable::kMaxRoutes + 1), std::invalid_argument);
+    CrowdTuning too_many;
+    too_many.escape_routes = EscapeTable::kMaxRoutes + 1;
+    EXPECT_THROW(EscapeTable::build(g, too_many), std::invalid_argument);
 }
 
 // Hulls with near-ties: many points on a circle (nearly collinear neighbours), a thin sliver, tiny and

@@ -44,7 +44,7 @@ Placement end_of(const ChoiceSite& site, int clip) { return fixture().graph.next
 TEST(Policy, RandomKeepsTheStreamOrder) {
     World w;
     const Fixture& f = fixture();
-    const auto p = make_policy(Selection::Random, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    const auto p = make_policy(Selection::Random, {f.graph, w, f.in_place, {}, 1.0, {}});
     std::vector<int> c = {5, 2, 9, 1};
     p->order({0, {10, 10, 0, 0}, std::nullopt, false, 0, false, {}}, c);
     EXPECT_EQ(c, (std::vector<int>{5, 2, 9, 1}));
@@ -54,7 +54,7 @@ TEST(Policy, RandomKeepsTheStreamOrder) {
 TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
     World w;  // [0, 30] x [0, 40]
     const Fixture& f = fixture();
-    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: every walking clip before every slow one that moves (at the idle speed or faster),
     // before every clip in place, before the slow ones that only creep.
     const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, {}};
@@ -102,7 +102,7 @@ double exit_speed(int clip) {
 TEST(Policy, AvoidSlowsDownAsLittleAsItCanAndTurnsToTheOpen) {
     World w;  // [0, 30] x [0, 40]
     const Fixture& f = fixture();
-    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, 0.45});
+    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: the slow clips the faster first.
     const std::vector<int> c = ordered(*p, {0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, {}});
     std::vector<double> slow;
@@ -130,7 +130,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     w.y1 = 20;
     const Fixture& f = fixture();
     const std::array<double, 2> goal{18, 10};
-    const auto p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {goal}, 1.0, 0.45});
+    const auto p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {goal}, 1.0, {}});
     const ChoiceSite site{0, {5, 10, 0, 0}, goal, true, 0, false, {}};
     const std::vector<int> c = ordered(*p, site);
     const double before = std::hypot(goal[0] - 5, goal[1] - 10);
@@ -165,12 +165,12 @@ TEST(Policy, GoalFindsTheWayAroundAnObstacle) {
         for (int k = 0; k < 4; ++k) sum += end_of(site, c[std::size_t(k)]).theta / 4;
         return sum;
     };
-    const auto straight = make_policy(Selection::Goal, {f.graph, open, f.in_place, {goal}, 1.0, 0.45});
-    const auto around = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, 0.45});
+    const auto straight = make_policy(Selection::Goal, {f.graph, open, f.in_place, {goal}, 1.0, {}});
+    const auto around = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, {}});
     EXPECT_LT(std::abs(mean_turn(*straight)), 0.15);
     EXPECT_GT(mean_turn(*around), 0.3);
     // Agents standing in the gap for good close it: the order changes.
-    const auto blocked = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, 0.45});
+    const auto blocked = make_policy(Selection::Goal, {f.graph, walled, f.in_place, {goal}, 1.0, {}});
     for (double y = 14.5; y < 20; y += 0.5) blocked->settled(8.5, y, 0.5);
     EXPECT_NE(ordered(*blocked, site), ordered(*around, site));
 }

@@ -14,6 +14,7 @@
 #include "mobb/crowd/narrow_phase.h"
 #include "mobb/crowd/policy.h"
 #include "mobb/crowd/record.h"
+#include "mobb/crowd/tuning.h"
 #include "mobb/crowd/world.h"
 
 namespace mobb::crowd {
@@ -45,9 +46,9 @@ struct CrowdOptions {
     /// Metres: a goal agent this close to its goal has reached it - it heads for the next, leaves (once
     /// it has played a clip), or stops there.
     double goal_radius = 1.0;
-    /// Search clip sequences at choice points where the policy asks for it (Policy::horizon, the goal
-    /// policy; src/crowd/look_ahead.h); off, candidates are tried in the policy's order alone.
-    bool look_ahead = true;
+    /// The rules' numbers and switches (tuning.h): the look-ahead of goal agents, the right of way,
+    /// giving way, the standing gap.
+    CrowdTuning tuning;
 };
 
 /// One clip-against-clip narrow-phase query of a run: clip a at pa (the candidate's, or an escape clip of
@@ -108,16 +109,14 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 /// Avoid and goal: a candidate is taken only when its plan is free - the clip, the clips that would stop
 /// the agent after it and the ground it would then hold (escape.h) - of every other agent's plan, of the
 /// obstacles and of the world's walls; the first such candidate in the policy's order is taken, and when
-/// there is none the agent follows its own escape, which the others planned around. The right of way:
-/// an agent that has not moved for 2 s (a clip moves when its exit is at least CrowdMetrics::kIdleSpeed
-/// times its duration away) may take a moving candidate whose plan meets only the reservations (escape
-/// clips, held ground) of at most two agents walking a clip now, when each of them finds another escape
-/// route from that clip free of everything else; they reserve those instead (the record's "reroutes";
-/// priority to the agent that waited, after Okumura et al.'s PIBT, 2019). Giving way: a free moving
-/// candidate whose clip passes within 2.5 m of an agent that has not moved for 2 s is taken only when no
-/// later free moving candidate keeps clear of such agents (it reorders, never refuses). So, outside
-/// fallbacks (no escape left), no two agents ever touch and no disk crosses a wall. Random: a random
-/// successor; every candidate's queries still run; no escapes, no walls (the paper's timing workload).
+/// there is none the agent follows its own escape, which the others planned around. The rules that
+/// order and pass candidates - the right of way (after Okumura et al.'s PIBT, 2019), giving way, the
+/// standing gap, the look-ahead of goal agents - each have a file of their own in src/crowd and their
+/// numbers and switches in CrowdTuning (tuning.h). So, outside fallbacks (no escape left), no two agents
+/// ever touch and no disk crosses a wall, whichever rules are on. Goal agents head for their goals in
+/// turn and stay at the last or leave the run there (AgentSpec). Random (the policy that does not
+/// avoid, Policy::avoids): a random successor; every candidate's queries still run; no escapes, no
+/// walls (the paper's timing workload).
 ///
 /// Choice points take effect in order of frame, then agent: those of one frame are evaluated in
 /// parallel against the state at the start of the frame, then committed in agent order, and one that a

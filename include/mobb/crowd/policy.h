@@ -11,6 +11,7 @@
 
 #include "mobb/core/path.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/tuning.h"
 #include "mobb/crowd/world.h"
 
 namespace mobb::crowd {
@@ -42,6 +43,13 @@ class Policy {
 public:
     virtual ~Policy() = default;
     virtual Selection kind() const = 0;
+    /// Whether a choice keeps its agent's plan free of the others', the walls and the obstacles - the
+    /// clip, the escape that would stop it, the ground it would hold - or just picks (the paper's timing
+    /// mode: its queries run, nothing is reserved, walls are ignored).
+    virtual bool avoids() const { return true; }
+    /// Whether its agents keep the standing gap (CrowdTuning::standing_gap) from where others stand:
+    /// wanderers do; agents with goals converge on purpose (a door, a circle's centre).
+    virtual bool keeps_standing_gap() const { return false; }
     /// Puts `candidates` (successor clips, already in the random order of the choice point's own stream)
     /// in the order they are tried.
     virtual void order(const ChoiceSite& site, std::vector<int>& candidates) const = 0;
@@ -61,15 +69,16 @@ public:
     virtual void settled(double /*x*/, double /*y*/, double /*r*/) {}
 };
 
-/// What the policies may need: the graph (clips' ends, which clips stay in place), the world, and the
-/// goals (navigation fields around the obstacles are built for Goal). `in_place` has one flag per clip.
+/// What the policies may need: the graph (clips' ends, which clips stay in place), the world, the
+/// goals (navigation fields around the obstacles are built for Goal) and the tuning. `in_place` has one
+/// flag per clip.
 struct PolicyContext {
     const MotionGraph& graph;
     const World& world;
     const std::vector<char>& in_place;
     std::vector<std::array<double, 2>> goals;  ///< every goal of the run (Goal)
     double goal_radius = 1.0;                  ///< metres: arrived within this of the goal
-    double clearance = 0.45;                   ///< metres kept from obstacles by the navigation field
+    CrowdTuning tuning;
 };
 
 std::unique_ptr<Policy> make_policy(Selection kind, const PolicyContext& context);

@@ -38,7 +38,7 @@
 // choice point) are the plans other agents reserve from then on instead of theirs: their pieces are
 // named by that choice point's index and their own agent. "crowded": refused, and some of its routes
 // were left out untested because they would hold ground within the standing gap of another agent's (a
-// wandering agent's preference, kStandingGap in src/crowd/choice.h, not a collision): a refused candidate
+// wandering agent's preference, CrowdTuning::standing_gap in tuning.h, not a collision): a refused candidate
 // without hits was refused for that alone.
 #pragma once
 #include <array>

@@ -1,0 +1,69 @@
+// Every tuning number of the crowd's rules in one place, with its unit, what it trades and what chose it
+// (after Box2D's constants.h and DetourCrowd's dtCrowdAgentParams). Each rule can be switched off - on
+// the command line `mobb crowd --no-right-of-way`, `--no-give-way`, `--no-standing-gap`,
+// `--no-look-ahead` - so a rule's effect is one command away. The measurements behind the values are in
+// bench/results/README.md (the section named after each rule). Metrics keep their own thresholds
+// (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
+#pragma once
+
+namespace mobb::crowd {
+
+struct CrowdTuning {
+    /// m/s: a clip "moves" when its exit is at least this speed times its duration away
+    /// (EscapeTable::moves). What the right of way and giving way count as standing still. Chosen equal
+    /// to the idle metric's threshold, 0.25 m/s, so that an agent the metrics call idle is one the rules
+    /// see waiting.
+    double moving_speed = 0.25;
+
+    // The escape (src/crowd/escape.cpp): the clips that stop an agent, then the ground it holds. Always
+    // on - it is what keeps the crowd collision-free - and bounded here.
+    int escape_steps = 3;    ///< clips at most from a clip to a stop (longer chains: no route)
+    int escape_routes = 16;  ///< routes kept per clip, the shortest first (<= EscapeTable::kMaxRoutes)
+
+    // The right of way (src/crowd/right_of_way.cpp; Okumura et al.'s PIBT, 2019): an agent that has not
+    // moved for `right_of_way_after` seconds may take a walk whose plan meets only the reservations of
+    // at most `max_yielding` agents walking a clip, each of which then stops another way. Trades a
+    // waiting agent's time against the others' detours; 2 s and 2 agents: bench/results/README.md
+    // "right of way" (deadlocks of two and three agents resolved, the idle tail cut).
+    bool right_of_way = true;
+    double right_of_way_after = 2.0;  ///< seconds without a moving clip
+    int max_yielding = 2;             ///< agents whose reservations one taking may move
+
+    // Giving way (src/crowd/give_way.cpp): a free walk passing within `give_way_reach` metres of an agent
+    // that has not moved for `give_way_after` seconds is taken only when no later free walk keeps clear
+    // of such agents. Reorders, never refuses: trades a walker's detour for the waiting agent's way out.
+    bool give_way = true;
+    double give_way_after = 2.0;  ///< seconds
+    double give_way_reach = 2.5;  ///< metres
+
+    // The standing gap (src/crowd/standing_gap.cpp): a policy that keeps it (wandering, not goal agents,
+    // which converge on purpose) takes no escape route whose held ground comes within `standing_gap`
+    // metres, beyond the disks, of another's. Trades where an agent may stop for room to pass between
+    // those who stopped: the longest idle stretches halved (bench/results/README.md "room between
+    // standing places").
+    bool standing_gap = true;
+    double standing_gap_width = 0.45;  ///< metres
+
+    // The look-ahead (src/crowd/look_ahead.h; Lau and Kuffner 2005, Silver 2005): a goal agent searches
+    // clip sequences `goal_horizon` clips deep, at most `look_ahead_budget` clips tested per choice
+    // point; a first clip whose every sequence met a reservation ranks `look_ahead_dead_end` seconds
+    // behind. 96 clips and 2 s: bench/results/README.md "goal crowds that look ahead" (192 and a deeper
+    // horizon tried: no better, slower).
+    bool look_ahead = true;
+    int look_ahead_budget = 96;
+    double look_ahead_dead_end = 2.0;  ///< seconds
+
+    // The goal policy's estimate of the time to go (src/crowd/policy_goal.cpp): path length at
+    // `goal_walking` m/s, plus the turn to face down the path at `goal_turning` rad/s, plus
+    // `goal_crowding` seconds per metre an end comes nearer than `goal_personal` to a neighbour. The
+    // speeds are the committed graph's walking and turning clips', rounded.
+    double goal_walking = 1.3;     ///< m/s
+    double goal_turning = 1.3;     ///< rad/s
+    double goal_personal = 2.0;    ///< metres
+    double goal_crowding = 1.2;    ///< seconds per metre
+    int goal_patience = 3;         ///< choice points without moving on before trying candidates at random
+    int goal_horizon = 3;          ///< clips searched ahead (about 3.6 s of the committed graph's clips)
+    double nav_clearance = 0.45;   ///< metres the navigation fields keep from walls and obstacles
+};
+
+}  // namespace mobb::crowd
