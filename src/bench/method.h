@@ -24,10 +24,13 @@ enum class Method : std::uint8_t {
     Umobb1,  ///< collide() on a tree of that type (paper 3-5)
     Brute,   ///< collide_brute(): the reference
     Scan,    ///< collide_scan(): the best scan
-    Sweep,   ///< collide_sweep(): the circle sweep, the library's fastest
+    Sweep,   ///< collide_sweep(): the circle sweep, the library's default exact query
     Fcl,     ///< the FCL peer (fcl_peer.h)
 };
 inline constexpr int kMethodCount = 10;
+/// The library's default exact query (what the crowd and Python's mobb.collide call): its row in the
+/// bench JSON carries "default": true.
+inline constexpr Method kDefaultMethod = Method::Sweep;
 
 /// Short name (command lines, scripts: "mobb", ..., "brute", "scan", "sweep", "fcl") and row label
 /// (tables: "MOBB", "MOBB 1 level", ..., "brute force", "best scan", "circle sweep", "FCL"). The tree

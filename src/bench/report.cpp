@@ -93,6 +93,7 @@ std::string table_json(const BenchTable& t) {
                         {"extra_positives", r.extra},
                         {"missed_positives", r.missed},
                         {"measured", r.measured},
+                        {"default", r.method == kDefaultMethod},
                         {"note", r.note}});
     j["rows"] = rows;
     return readable_json(j);

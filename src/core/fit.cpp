@@ -1,4 +1,5 @@
 #include "mobb/core/fit.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +63,7 @@ glm::dvec2 principal_axis(const Path& path, std::size_t first, std::size_t end) 
 }
 
 Obb2 fit_obb2(const Path& path, std::size_t first, std::size_t end, AxisFit fit) {
+    MOBB_ASSERT(first < end && end <= path.samples.size());
     const Sample& a = path.samples[first];
     const Sample& b = path.samples[end - 1];
     glm::dvec2 u(b.x - a.x, b.y - a.y);
@@ -85,6 +87,7 @@ Obb2 fit_obb2(const Path& path, std::size_t first, std::size_t end, AxisFit fit)
 }
 
 bool fit_obb3(const Path& path, std::size_t first, std::size_t end, Obb3& box) {
+    MOBB_ASSERT(first < end && end <= path.samples.size());
     const Sample& a = path.samples[first];
     const Sample& b = path.samples[end - 1];
     glm::dvec3 a0(b.x - a.x, b.y - a.y, double(end - 1 - first) * path.dt);

@@ -1,4 +1,5 @@
 #include "mobb/core/query.h"
+#include "mobb/core/assert.h"
 
 #include <cmath>
 
@@ -160,6 +161,8 @@ std::int64_t first_ending_after(const Placement& p, double dt, std::int64_t lo, 
 bool leaf_test(const Path& a, const Placement& pa, const Rigid2& ta, std::int64_t fa, std::int64_t ea, const Path& b,
                const Placement& pb, const Rigid2& tb, std::int64_t fb, std::int64_t eb, std::uint64_t& tested,
                SamplePair& hit) {
+    MOBB_ASSERT(0 <= fa && fa <= ea && std::size_t(ea) <= a.samples.size());
+    MOBB_ASSERT(0 <= fb && fb <= eb && std::size_t(eb) <= b.samples.size());
     const double b_end = sample_time(pb, b.dt, eb);
     std::int64_t i = first_ending_after(pa, a.dt, fa, ea, sample_time(pb, b.dt, fb));
     if (i >= ea) return false;

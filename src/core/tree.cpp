@@ -1,4 +1,5 @@
 #include "mobb/core/tree.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +78,9 @@ Tree Tree::build(Path path, const TreeOptions& options) {
 // Fits node `index`'s box, then splits it at the temporal midpoint while it holds more than n_min
 // samples. Children are appended as adjacent pairs, so a node needs only its first child's index.
 void Tree::fill(int index, std::uint32_t first, std::uint32_t end, int level) {
+    MOBB_ASSERT(first < end && end <= path_.samples.size());
+    MOBB_ASSERT(index >= 0 && std::size_t(index) < nodes_.size());
+    MOBB_ASSERT(level < 255);  // Node::level is 8 bits; a 32-bit sample count splits 32 times at most
     Node node;
     node.first = first;
     node.end = end;
@@ -107,6 +111,7 @@ void Tree::fill(int index, std::uint32_t first, std::uint32_t end, int level) {
 }
 
 Obb3 Tree::box3(const Node& node) const {
+    MOBB_ASSERT(node.box < (node.kind == BoxKind::Box3 ? box3s_.size() : box2s_.size()));
     if (node.kind == BoxKind::Box3) return box3s_[node.box];
     // The margin keeps rounding of the extruded time range from separating boxes whose samples overlap.
     return extrude(box2s_[node.box], double(node.first) * path_.dt - margin_, double(node.end) * path_.dt + margin_);

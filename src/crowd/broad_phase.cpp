@@ -1,6 +1,7 @@
 #include "mobb/crowd/broad_phase.h"
 
 #include "mobb/util/worker_pool.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -84,6 +85,8 @@ void BroadPhase::put(Cell& c, const Entry& e) const {
 }
 
 void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
+    MOBB_ASSERT(id >= 0);
+    MOBB_ASSERT(box.x0 <= box.x1 && box.y0 <= box.y1 && box.f0 <= box.f1);
     if (!enroll(id, owner, box)) return;
     const Entry e = entry(box, id, owner);
     cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), e); });

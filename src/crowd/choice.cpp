@@ -7,6 +7,7 @@
 
 #include "mobb/core/angle.h"
 #include "mobb/util/random.h"
+#include "mobb/core/assert.h"
 
 namespace mobb::crowd {
 
@@ -148,9 +149,9 @@ int bin_of(double a) {
 
 // A candidate "leaves the world" when its root goes farther outside the rectangle than where it
 // starts, so an agent pushed out by a fallback may walk back in.
-Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
+PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
                   std::int64_t frame, const World* world) {
-    Placed out{clip, p, {}, false, 0.0};
+    PlacedCandidate out{clip, p, {}, false, 0.0};
     out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + frames};
     if (!world && outline.hull.size() >= 3 && outline.extreme.size() == std::size_t(ClipOutline::kBins)) {
         // Each side by a walk from the hull vertex farthest that way (x grows along the angle -theta in
@@ -300,7 +301,8 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
     for (std::size_t k = 0; k < next_.size(); ++k) next_[k] = scratch_[std::size_t(ranked_[k].second)];
 }
 
-const Placed& Choice::place(const CrowdState& s, int k) {
+const PlacedCandidate& Choice::place(const CrowdState& s, int k) {
+    MOBB_ASSERT(k >= 0 && std::size_t(k) < order_.size());
     const Rigid2& m = base_m_;
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
@@ -430,7 +432,8 @@ bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const 
 }
 
 void Choice::take(int k, Outcome how) {
-    const Placed& c = placed_[std::size_t(k)];
+    MOBB_ASSERT(k >= 0 && std::size_t(k) < placed_.size());  // tried, so placed
+    const PlacedCandidate& c = placed_[std::size_t(k)];
     taken_ = {c.clip, c.place, frame_, c.box, base_m_};
     outcome_ = how;
     point_.taken = c.clip;
@@ -447,7 +450,7 @@ void Choice::fall_back(const CrowdState& s) {
     int best = -1;
     std::pair<int, int> best_key{1 << 30, 1 << 30};
     for (int k = 0; k < int(order_.size()); ++k) {
-        const Placed& c = place(s, k);
+        const PlacedCandidate& c = place(s, k);
         if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
         point_.candidates[std::size_t(k)] = {c.clip, false, 0, 0, {}};
         Piece mine;
@@ -465,7 +468,7 @@ void Choice::fall_back(const CrowdState& s) {
 // The paper's timing mode: every candidate's queries in full, then the random pick, nothing reserved.
 void Choice::evaluate_random(const CrowdState& s) {
     for (int k = 0; k < int(order_.size()); ++k) {
-        const Placed& c = place(s, k);
+        const PlacedCandidate& c = place(s, k);
         point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
@@ -507,7 +510,7 @@ void Choice::evaluate(const CrowdState& s) {
     bool right_of_way = has_right_of_way(s);
     deferred_ = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
-        const Placed& c = place(s, k);
+        const PlacedCandidate& c = place(s, k);
         if (deferred_ >= 0 && !s.escapes.moves[std::size_t(c.clip)]) return take_deferred();
         if (right_of_way && !s.escapes.moves[std::size_t(c.clip)]) {
             if (take_right_of_way(s, k)) return;

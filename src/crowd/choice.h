@@ -42,7 +42,7 @@ ClipOutline outline_of(const Path& path);
 std::vector<ClipOutline> outlines_of(const MotionGraph& g);
 
 /// A candidate clip placed in the world: its space-time box and how far it leaves the world.
-struct Placed {
+struct PlacedCandidate {
     int clip = 0;
     Placement place;
     SpaceTimeBox box;
@@ -53,7 +53,7 @@ struct Placed {
 /// Places graph clip `clip` (outline `outline`, `frames` long) at `p` (rotation m = Rigid2::of(p)) from
 /// global frame `frame` on. The box pads the hull by r_max, so it holds every sample disk. With a world,
 /// also how far the clip leaves its rectangle.
-Placed place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
+PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
                   std::int64_t frame, const World* world);
 
 /// Ground an agent holds from frame `frame` on, for as long as it stands there: a disk of radius r.
@@ -179,7 +179,7 @@ public:
     /// the new and released boxes of the reroutes (for the frame's check of later choice points), appended
     /// to `out` (no list made per choice point).
     void boxes(std::vector<SpaceTimeBox>& out) const;
-    const Placed& candidate(int k) const { return placed_[std::size_t(k)]; }
+    const PlacedCandidate& candidate(int k) const { return placed_[std::size_t(k)]; }
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
     ChoicePoint& point() { return point_; }
     int queried() const { return int(queried_boxes_.size()); }
@@ -206,7 +206,7 @@ private:
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
     void count_query(const QueryStats& st);
     void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
-    const Placed& place(const CrowdState& s, int k);
+    const PlacedCandidate& place(const CrowdState& s, int k);
     bool free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits);
     std::uint32_t crowded_routes(const CrowdState& s, int k);
     bool may_yield(const CrowdState& s, const Piece& other) const;
@@ -238,7 +238,7 @@ private:
     std::vector<std::array<double, 3>> learned_;
     Placement base_;              // where and when the next clip starts
     Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there
-    std::vector<Placed> placed_;  // order_[0 .. placed_.size()) placed
+    std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;         // random mode: index of the clip taken
     bool arriving_ = false;       // at its goal: stops as soon as it can
     std::vector<int> near_;       // scratch: broad-phase ids of one query

@@ -13,6 +13,7 @@
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/util/random.h"
 #include "mobb/util/worker_pool.h"
+#include "mobb/core/assert.h"
 
 namespace mobb::crowd {
 
@@ -137,7 +138,7 @@ double Simulation::max_radius() const {
 }
 
 // Random positions `margin` inside the world, rejected when closer than `gap` to an agent placed before
-// or (with reservations) when their held ground meets an obstacle. Placed agents are kept in a grid of
+// or (with reservations) when their held ground meets an obstacle. PlacedCandidate agents are kept in a grid of
 // cells at least `gap` wide, so a test reads the 3 x 3 cells around the position.
 void Simulation::place_at_random(double gap, double margin) {
     const World& w = o_.world;
@@ -325,6 +326,7 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
     }
     cp.reroutes.clear();
     for (const Reroute& r : c.reroutes()) {
+        MOBB_ASSERT(r.plan.hold);  // a reroute is a way to stop: it ends on held ground
         ReroutedPlan& out = cp.reroutes.emplace_back();
         out.agent = r.agent;
         for (const PlannedClip& e : r.plan.escape) out.escape.push_back({e.clip, e.frame, e.place});
@@ -358,6 +360,8 @@ void Simulation::count(const Choice& c, const ChoicePoint& cp) {
 
 // Agent `agent`'s plan from now on, by choice point `commit`: what it reserved before is released.
 void Simulation::reserve(int agent, int commit, const Plan& plan) {
+    MOBB_ASSERT(agent >= 0 && std::size_t(agent) < agents_.size());
+    MOBB_ASSERT(plan.escape.empty() || plan.hold);  // an escape ends on held ground
     Agent& a = agents_[std::size_t(agent)];
     for (int id : a.reserved) released_.push_back(id);
     a.reserved.clear();
@@ -488,6 +492,7 @@ void Simulation::reach_goals(std::int64_t frame, std::vector<int>& batch) {
 // more choice points.
 void Simulation::leave(int agent, std::int64_t frame) {
     Agent& a = agents_[std::size_t(agent)];
+    MOBB_ASSERT(!a.left_frame && !a.clips.empty());  // leaves once, after a clip (its track has samples)
     a.left_frame = frame;
     for (int id : a.reserved) released_.push_back(id);
     a.reserved.clear();

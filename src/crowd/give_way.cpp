@@ -20,7 +20,7 @@ void Choice::take_deferred() {
 // never with giving way off.
 bool Choice::passes_waiting(const CrowdState& s, int k) {
     if (!s.options.tuning.give_way) return false;
-    const Placed& c = placed_[std::size_t(k)];
+    const PlacedCandidate& c = placed_[std::size_t(k)];
     const SpaceTimeBox& b = c.box;
     s.waiting.query(
         {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},

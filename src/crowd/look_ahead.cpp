@@ -1,4 +1,5 @@
 #include "look_ahead.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,7 @@ void LookAhead::learned(double best, std::vector<std::array<double, 3>>& out) co
 }
 
 std::vector<SearchStep> LookAhead::sequence(int k) const {
+    MOBB_ASSERT(k >= 0 && std::size_t(k) < best_.size());
     std::vector<SearchStep> out;
     for (int i = best_[std::size_t(k)]; i >= 0; i = nodes_[std::size_t(i)].parent)
         out.push_back(nodes_[std::size_t(i)].step);

@@ -1,4 +1,5 @@
 #include "nav_field.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +100,7 @@ void NavField::block(const NavGrid& grid) {
     }
     spread(grid, open, &cut_);
     for (std::size_t k : cuts_) cut_[k] = 0;
+    MOBB_ASSERT(value_[goal_cell_] == 0);  // the goal is never cut
 }
 
 double NavField::downhill(double x, double y) const {

@@ -29,7 +29,8 @@ bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
 
 bool Choice::has_right_of_way(const CrowdState& s) const {
     const Agent& a = s.agents[std::size_t(agent_)];
-    return s.options.tuning.right_of_way && !arriving_ && double(frame_ - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way_after;
+    return s.options.tuning.right_of_way && !arriving_ &&
+           double(frame_ - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way_after;
 }
 
 // The moving candidates before `end` again, in order, now past the reservations that may yield (at most
@@ -37,7 +38,7 @@ bool Choice::has_right_of_way(const CrowdState& s) const {
 // taken.
 bool Choice::take_right_of_way(const CrowdState& s, int end) {
     for (int k = 0; k < end; ++k) {
-        const Placed& c = placed_[std::size_t(k)];
+        const PlacedCandidate& c = placed_[std::size_t(k)];
         if (!s.escapes.moves[std::size_t(c.clip)]) continue;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
@@ -121,7 +122,6 @@ bool Choice::reroute(const CrowdState& s, int owner) {
     }
     return false;
 }
-
 
 // A piece of a reroute: free of everything but what the taking would release (excluded_), and of the
 // extra pieces (the new plan, the reroutes found before it).

@@ -1,4 +1,5 @@
 #include "disk_layer.h"
+#include "mobb/core/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,7 @@ DiskLayer::DiskLayer() {
 }
 
 void DiskLayer::set_segments(int segments) {
+    MOBB_ASSERT(segments >= 3);
     // Stacks' vertex arrays keep referring to the same buffers: only the contents change.
     const Mesh mesh = unit_cylinder(segments);
     glBindBuffer(GL_ARRAY_BUFFER, mesh_);

@@ -8,10 +8,13 @@
 #include <stb_image_write.h>
 
 #include "gl.h"
+#include "mobb/core/assert.h"
 
 namespace mobb::render {
 
 void write_png(const std::string& file, const Image& image) {
+    MOBB_ASSERT(image.width > 0 && image.height > 0 &&
+                image.rgba.size() == std::size_t(image.width) * std::size_t(image.height) * 4);
     const std::string tmp = file + ".part";
     if (!stbi_write_png(tmp.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
         std::remove(tmp.c_str());
@@ -33,6 +36,7 @@ Image read_png(const std::string& file) {
 }
 
 Image read_pixels(int width, int height) {
+    MOBB_ASSERT(width > 0 && height > 0);
     Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4)};
     std::vector<std::uint8_t> rows(image.rgba.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

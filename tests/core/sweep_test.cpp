@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "mobb/core/brute.h"
 #include "mobb/core/scan.h"
@@ -95,6 +96,50 @@ TEST(FastQueryTest, TouchingIsNotACollision) {
         EXPECT_EQ(collide_sweep(ia, pa, ib, pb), collide_brute(a, pa, b, pb)) << x;
         EXPECT_EQ(collide_scan(ia, pa, ib, pb), collide_brute(a, pa, b, pb)) << x;
     }
+}
+
+// collide_sweep's root test and filters use approximate cos/sin (within 1e-8) and take the error into
+// their margins; std::cos / std::sin are evaluated only for the exact test. Placements on the edge of
+// contact (B's x found by bisection on brute force to a few ulps) at angles near the quadrant
+// boundaries of the reduction, up to the 1e6 rad limit of the approximation and beyond it.
+TEST(FastQueryTest, ApproximateRotationsOnTheEdgeOfContact) {
+    std::mt19937_64 rng(33);
+    const double half_pi = 1.5707963267948966;
+    std::vector<double> angles = {0.0, 1e-300, -0.0, 2.5, -3.9, 999999.9, -1e6, 1e6, 1.0000001e6, 1e12, -7e9};
+    for (int k = -8; k <= 8; ++k)
+        for (double e : {-1e-9, 0.0, 1e-9}) angles.push_back(k * half_pi + e);
+    for (int k : {31831, 636619})  // near the limit: k pi/2 with k large
+        for (double e : {-1e-7, 0.0, 1e-7}) angles.push_back(k * half_pi + e);
+    int checked = 0;
+    for (int clip = 0; clip < 6; ++clip) {
+        const Path a = test::random_walk(rng, 20 + clip * 90, 1.0 / 30),
+                   b = test::random_walk(rng, 30 + clip * 70, 1.0 / 30);
+        const ClipIndex ia = ClipIndex::build(a), ib = ClipIndex::build(b);
+        for (std::size_t n = 0; n < angles.size(); ++n) {
+            Placement pa{0.3, -0.2, angles[n], 0.0}, pb{0.0, 0.4, angles[(n * 7 + 3) % angles.size()], 0.0};
+            if (n % 3 == 1) pb.t0 = 5.0 / 30;
+            // Bisect B's x between a colliding and a clear placement, then test both ends and beyond.
+            double lo = pb.x - 1.0, hi = pb.x + 50.0;  // lo: whatever it is; hi: clear
+            Placement p = pb;
+            p.x = lo;
+            if (!collide_brute(a, pa, b, p)) continue;
+            for (int it = 0; it < 200 && std::nextafter(lo, hi) < hi; ++it) {
+                p.x = 0.5 * (lo + hi);
+                (collide_brute(a, pa, b, p) ? lo : hi) = p.x;
+            }
+            for (double x : {lo, hi, std::nextafter(lo, -1e300), std::nextafter(hi, 1e300), hi + 1e-9, lo - 1e-9}) {
+                p.x = x;
+                const bool expected = collide_brute(a, pa, b, p);
+                SamplePair h;
+                ASSERT_EQ(collide_sweep(ia, pa, ib, p, &h), expected) << clip << " " << angles[n] << " " << x;
+                ASSERT_EQ(collide_sweep(ib, p, ia, pa), expected) << clip << " " << angles[n] << " " << x;
+                ASSERT_EQ(collide_scan(ia, pa, ib, p), expected) << clip << " " << angles[n] << " " << x;
+                if (expected) expect_real_hit(a, pa, b, p, h);
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 500);
 }
 
 TEST(FastQueryTest, DegeneratePaths) {

@@ -99,7 +99,7 @@ TEST(World, PathHitsTestsEverySampleFromTheFirstOn) {
     path.dt = 0.1;
     for (int i = 0; i < 20; ++i) path.samples.push_back({0.1 * i, 0, 0.2});
     const Polygon pillar = Polygon::rectangle(1.5, -0.5, 2.5, 0.5);
-    // Placed at x = 0 the samples reach 1.9 + 0.2: into the pillar from sample 14 (1.4 + 0.2 > 1.5) on.
+    // PlacedCandidate at x = 0 the samples reach 1.9 + 0.2: into the pillar from sample 14 (1.4 + 0.2 > 1.5) on.
     const Placement origin{0, 0, 0, 0}, turned{0, 0, kPi, 0}, beside{0, 1.0, 0, 0};
     EXPECT_TRUE(path_hits(path, origin, pillar));
     EXPECT_TRUE(path_hits(path, origin, pillar, 14));

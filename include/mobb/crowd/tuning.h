@@ -57,13 +57,13 @@ struct CrowdTuning {
     // `goal_walking` m/s, plus the turn to face down the path at `goal_turning` rad/s, plus
     // `goal_crowding` seconds per metre an end comes nearer than `goal_personal` to a neighbour. The
     // speeds are the committed graph's walking and turning clips', rounded.
-    double goal_walking = 1.3;     ///< m/s
-    double goal_turning = 1.3;     ///< rad/s
-    double goal_personal = 2.0;    ///< metres
-    double goal_crowding = 1.2;    ///< seconds per metre
-    int goal_patience = 3;         ///< choice points without moving on before trying candidates at random
-    int goal_horizon = 3;          ///< clips searched ahead (about 3.6 s of the committed graph's clips)
-    double nav_clearance = 0.45;   ///< metres the navigation fields keep from walls and obstacles
+    double goal_walking = 1.3;    ///< m/s
+    double goal_turning = 1.3;    ///< rad/s
+    double goal_personal = 2.0;   ///< metres
+    double goal_crowding = 1.2;   ///< seconds per metre
+    int goal_patience = 3;        ///< choice points without moving on before trying candidates at random
+    int goal_horizon = 3;         ///< clips searched ahead (about 3.6 s of the committed graph's clips)
+    double nav_clearance = 0.45;  ///< metres the navigation fields keep from walls and obstacles
 };
 
 }  // namespace mobb::crowd
