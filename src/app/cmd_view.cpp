@@ -152,9 +152,14 @@ void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_
 }
 
 /// `render --ui --pick CLIP:SAMPLE [--pick ..] --panel NAME ..`: the panels' state the image starts
-/// from, as clicks and the View menu would leave it. Throws InputError naming a bad pick or panel.
-viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::vector<std::string>& panels) {
+/// from, as clicks and the View menu would leave it: the panels the state opens by default and those
+/// named; `frame`: everything framed in the viewport the panels leave. Throws InputError naming a bad
+/// pick or panel.
+viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::vector<std::string>& panels,
+                    bool frame) {
     viewer::Ui ui;
+    ui.panels = viewer::default_panels(s);
+    ui.request_frame_all = frame;
     for (const std::string& p : picks) {
         viewer::Pick pick;
         char end = 0;
@@ -259,7 +264,7 @@ void add_render(CLI::App& app, int& exit_code) {
                         << " frames per second\n";
                     return;
                 }
-                const viewer::Ui start = ui_start(s, a->picks, a->panels);
+                const viewer::Ui start = ui_start(s, a->picks, a->panels, true);
                 render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
                 out << a->out << "\n";
                 return;
@@ -286,7 +291,7 @@ void add_render(CLI::App& app, int& exit_code) {
                     << " frames per second\n";
                 return;
             }
-            const viewer::Ui start = ui_start(s, a->picks, a->panels);
+            const viewer::Ui start = ui_start(s, a->picks, a->panels, files || !scene.camera);
             render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
             out << a->out << "\n";
         });
@@ -302,11 +307,15 @@ struct ViewArgs {
 };
 
 // Opens a window on the state, or renders it headless when there is no display (`what` names it; the
-// window keeps its camera under `key` in the user's settings).
-void show(State& s, const ViewArgs& a, const std::string& what, const std::string& key, std::ostream& out) {
+// window keeps its camera under `key` in the user's settings). `frame`: the state has no camera of its
+// own, so everything is framed in the viewport the panels leave.
+void show(State& s, const ViewArgs& a, const std::string& what, const std::string& key, bool frame, std::ostream& out) {
     if (!render::display_available()) {
         const std::string png = a.screenshot.empty() ? "mobb-view.png" : a.screenshot;
-        render::write_png(png, viewer::render_headless(s, {a.width, a.height, true}));
+        viewer::Ui start;
+        start.panels = viewer::default_panels(s);
+        start.request_frame_all = frame;
+        render::write_png(png, viewer::render_headless(s, {a.width, a.height, true, false, &start}));
         std::cerr << "no display: rendered " << what << " headless to " << std::filesystem::absolute(png).string()
                   << "\n";
         return;
@@ -317,6 +326,7 @@ void show(State& s, const ViewArgs& a, const std::string& what, const std::strin
     w.frames = a.frames;
     w.screenshot = a.screenshot;
     w.settings_key = key;
+    w.frame_all = frame;
     viewer::run_window(s, w);
     if (!a.screenshot.empty()) out << a.screenshot << "\n";
     if (!a.save_state.empty()) {  // the scene as the window left it: clips, placements, step, camera
@@ -350,7 +360,7 @@ void add_view(CLI::App& app, int& exit_code) {
                 if (!a->inputs.empty()) throw InputError("view: --crowd takes no scene or clip files");
                 if (!a->save_state.empty()) throw InputError("view: --save-state saves scenes, not crowds");
                 State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
-                show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), out);
+                show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), true, out);
                 return;
             }
             const bool files = names_clip_files(a->inputs);
@@ -368,7 +378,7 @@ void add_view(CLI::App& app, int& exit_code) {
             if (cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit")) scene.tree = a->tree.options();
             State s = viewer::load_state(scene, aspect(a->width, a->height));
             if (files) arrange_clip_files(s, aspect(a->width, a->height));
-            show(s, *a, scene_file.empty() ? "the clips" : scene_file, key, out);
+            show(s, *a, scene_file.empty() ? "the clips" : scene_file, key, files || !scene.camera, out);
         });
     });
 }

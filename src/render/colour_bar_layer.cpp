@@ -53,7 +53,7 @@ void ColourBarLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer&
     quads_.clear();
     lines_.clear();
     const float s = text_scale(ctx.height);
-    const float right = float(ctx.width) - frame.bar_inset - 10.0f * s;
+    const float right = float(ctx.width) - 10.0f * s;
     float top = 10.0f * s;
     if (disks) top = add_bar(frame.disk_scale, ctx, right, top, text);
     if (boxes) add_bar(frame.box_scale, ctx, right, top, text);

@@ -117,7 +117,6 @@ struct Frame {
     /// changes whenever the clips' sample or node values change (the renderer re-uploads them).
     ColourScale disk_scale, box_scale;
     std::uint64_t colour_revision = 0;
-    float bar_inset = 0;  ///< pixels kept free at the image's right edge (the window's panels)
 };
 
 /// Colours shared by the 3D view and the panels.

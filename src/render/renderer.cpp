@@ -63,6 +63,11 @@ Renderer::~Renderer() = default;
 const DiskStats& Renderer::disk_stats() const { return layers_->disks.stats(); }
 
 void Renderer::draw(const Frame& frame, const Camera& camera, int width, int height) {
+    draw(frame, camera, Viewport{0, 0, width, height});
+}
+
+void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& viewport) {
+    const int width = std::max(viewport.width, 1), height = std::max(viewport.height, 1);
     Layers& l = *layers_;
     if (frame.revision != revision_) {
         l.disks.rebuild(frame);
@@ -77,14 +82,15 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
     else
         glEnable(GL_MULTISAMPLE);
     DrawContext ctx;
-    ctx.view_proj = camera.projection(float(width) / float(std::max(height, 1))) * camera.view();
+    ctx.view_proj = camera.projection(float(width) / float(height)) * camera.view();
     ctx.width = width;
     ctx.height = height;
     ctx.color = &l.color;
     ctx.disk = &l.disk;
     ctx.bounds = bounds_;
+    ctx.whole_labels = viewport.whole_labels;
 
-    glViewport(0, 0, width, height);
+    glViewport(viewport.x, viewport.y, width, height);
     glClearColor(0.965f, 0.965f, 0.972f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);

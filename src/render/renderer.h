@@ -17,6 +17,15 @@ Bounds scene_bounds(const Frame& frame);
 /// GL-world corners of space-time bounds at a time scale (for Camera::frame).
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi);
 
+/// Where in the framebuffer the scene is drawn, GL pixels from the bottom-left corner (the window's free
+/// rectangle between its panel columns).
+struct Viewport {
+    int x = 0, y = 0, width = 0, height = 0;
+    /// Labels the viewport's edge would cut are left out (panels stand beside it: a cut label would
+    /// read as if it ran on under them).
+    bool whole_labels = false;
+};
+
 class Renderer {
 public:
     Renderer();  ///< needs a current GL 3.3 core context
@@ -24,7 +33,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    void draw(const Frame& frame, const Camera& camera, int width, int height);
+    void draw(const Frame& frame, const Camera& camera, int width, int height);  ///< the whole framebuffer
+    /// Clears the whole framebuffer, then draws in `viewport` (its aspect, its labels and colour bars).
+    void draw(const Frame& frame, const Camera& camera, const Viewport& viewport);
     /// What the last draw drew of the disk stacks (instances and level of detail).
     const DiskStats& disk_stats() const;
 

@@ -30,6 +30,8 @@ void TextLayer::draw(const DrawContext& ctx) {
                          : label.anchor == Anchor::Right ? sx - w - 3.0f * scale
                                                          : sx - 0.5f * w;
         const float y0 = sy - 3.5f * scale;
+        const float h = 7.0f * scale;  // stb_easy_font's capitals
+        if (ctx.whole_labels && (x0 < 0 || x0 + w > float(ctx.width) || y0 < 0 || y0 + h > float(ctx.height))) continue;
         const int n = stb_easy_font_print(0.0f, 0.0f, label.text.data(), nullptr, quads.data(), int(quads.size()));
         for (int q = 0; q < n; ++q) {
             glm::vec3 v[4];

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "crowd_view.h"
+#include "layout.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -188,7 +189,9 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
         std::snprintf(label, sizeof label, "vs %s: %s###q%d_%zu", query_target(v.record, q).c_str(),
                       q.hit ? "hit" : "clear", k, j);
         const bool shown = v.opened_candidate == k && v.opened_query == int(j);
-        if (ImGui::Selectable(label, shown) && v.graph) open_candidate_query(s, k, int(j), &ui.status);
+        if (ImGui::Selectable(label, shown) && v.graph && open_candidate_query(s, k, int(j), &ui.status))
+            for (bool PanelsOpen::*p : {&PanelsOpen::query, &PanelsOpen::trace, &PanelsOpen::recursion})
+                open_when_used(ui, p);
     }
     ImGui::TreePop();
 }
@@ -216,11 +219,7 @@ void choice_details(State& s, Ui& ui) {
 }  // namespace
 
 void crowd_panel(State& s, Ui& ui) {
-    if (!s.crowd || !ui.panels.crowd) return;
-    // Bottom middle, between the tree-fit and trace panels, clear of the crowd seen from the default camera.
-    ImGui::SetNextWindowPos(ImVec2(456, float(ui.window_size.y - 8)), ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Crowd", &ui.panels.crowd)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::crowd)) return;
     playback(s);
     view_buttons(ui);
     choice_list(s);

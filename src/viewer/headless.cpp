@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 
 #include "context_osmesa.h"
+#include "layout.h"
 #include "panels.h"
 #include "renderer.h"
 #include "target.h"
@@ -43,9 +44,10 @@ std::vector<std::string> cut_windows(const ImVec2& display) {
     return out;
 }
 
-/// The panels drawn into the current framebuffer without any window: ImGui's OpenGL3 backend works
-/// in any context once the display size is set by hand.
-void draw_ui(State& state, const HeadlessOptions& o) {
+/// The panels laid out, the scene drawn in the viewport they leave (camera requests applied, as in the
+/// window), then the panels over it, without any window: ImGui's OpenGL3 backend works in any context
+/// once the display size is set by hand.
+void draw_with_ui(State& state, render::Renderer& renderer, const HeadlessOptions& o) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -54,18 +56,25 @@ void draw_ui(State& state, const HeadlessOptions& o) {
     io.DisplaySize = ImVec2(float(o.width), float(o.height));
     io.DeltaTime = 1.0f / 60.0f;
     ImGui_ImplOpenGL3_Init("#version 330 core");
-    Ui ui = o.start ? *o.start : Ui{};
+    Ui ui;
+    if (o.start)
+        ui = *o.start;
+    else
+        ui.panels = default_panels(state);
     ui.window_size = {o.width, o.height};
     ui.show_help = ui.show_help || o.help;
-    // Three frames: the first lays windows out (auto-sized ones measure themselves, the menu bar its
-    // height), the next settle scroll limits, the last draws.
-    for (int pass = 0; pass < 3; ++pass) {
+    // Four frames: the first measures the menu bar and the panels' content, the second places the
+    // panels in their columns by it, the next settle scroll limits, the last draws.
+    for (int pass = 0; pass < 4; ++pass) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
         draw_panels(state, ui);
+        apply_requests(state, ui);
         ImGui::Render();
     }
     if (o.cut) *o.cut = cut_windows(io.DisplaySize);
+    const glm::ivec2 size(o.width, o.height);
+    renderer.draw(frame_of(state), state.camera, gl_viewport(viewport(state, ui), size, size));
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
@@ -78,8 +87,10 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     render::Target target(options.width, options.height);
     render::Renderer renderer;
     target.bind();
-    renderer.draw(frame_of(state, options.ui ? kRightPanels : 0.0f), state.camera, options.width, options.height);
-    if (options.ui) draw_ui(state, options);
+    if (options.ui)
+        draw_with_ui(state, renderer, options);
+    else
+        renderer.draw(frame_of(state), state.camera, options.width, options.height);
     return target.read();
 }
 

@@ -14,7 +14,9 @@ struct HeadlessOptions {
     int width = 960, height = 540;
     bool ui = false;    ///< also draw the ImGui panels
     bool help = false;  ///< with ui: the Shortcuts window open too
-    const Ui* start = nullptr;  ///< with ui: the panels' state to start from (open panels, picks)
+    /// With ui: the panels' state to start from (open panels, picks, camera requests such as frame all,
+    /// which use the viewport the columns leave); null: default_panels() of the state.
+    const Ui* start = nullptr;
     /// With ui: receives one line per window whose text does not fit ("Trace: 12 px too narrow") or
     /// that reaches past the image.
     std::vector<std::string>* cut = nullptr;

@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <glm/mat4x4.hpp>
 
+#include "layout.h"
 #include "panels.h"
 #include "picking.h"
 #include "space.h"
@@ -30,7 +31,9 @@ void disk_lines(const State& s, const char* role, const Pick& p) {
     if (!d) return;
     ImGui::TextColored(imvec(render::clip_color(p.clip)), "%s: clip %d (%s), sample %d", role, p.clip,
                        s.clips[std::size_t(p.clip)].name.c_str(), p.sample);
-    ImGui::Text("  t %.3f .. %.3f s, at %.3f, %.3f m, r %.3f m", d->t0, d->t1, d->centre.x, d->centre.y, d->r);
+    // Two short lines rather than one long one: they fit the right column's width.
+    ImGui::Text("  t %.3f .. %.3f s, r %.3f m", d->t0, d->t1, d->r);
+    ImGui::Text("  at %.3f, %.3f m", d->centre.x, d->centre.y);
 }
 
 /// Rings the picked disks at their sample's mid-time and joins them with the ruler's line.
@@ -52,9 +55,7 @@ void overlay(const State& s, const Ui& ui) {
 
 void inspector_panel(State& s, Ui& ui) {
     overlay(s, ui);
-    if (!ui.panels.inspector) return;
-    ImGui::SetNextWindowPos(ImVec2(316, ui.menu_height + 8), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Inspector", &ui.panels.inspector, ImGuiWindowFlags_AlwaysAutoResize)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::inspector)) return;
     if (!disk_of(s, ui.pick)) {
         ImGui::TextDisabled("click a disk; click another to measure");
         return ImGui::End();

@@ -1,7 +1,8 @@
-// The main menu bar: File (open, save) and View (every panel, the Shortcuts window). Its height is
-// kept in ui.menu_height so the panels open below it.
+// The main menu bar: File (open, save) and View (every panel, the columns, the Shortcuts window). Its
+// height is kept in ui.menu_height so the panels open below it.
 #include <imgui.h>
 
+#include "layout.h"
 #include "panels.h"
 
 namespace mobb::viewer {
@@ -10,14 +11,20 @@ void main_menu(State& s, Ui& ui) {
     if (!ImGui::BeginMainMenuBar()) return;
     ui.menu_height = ImGui::GetWindowSize().y;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open...", "O")) ui.panels.open = true;
+        if (ImGui::MenuItem("Open...", "O")) choose_panel(ui, &PanelsOpen::open, true);
         if (ImGui::MenuItem("Save scene", nullptr, false, s.crowd == nullptr)) save_to_path(s, ui);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
         // The Crowd panel only when a crowd is loaded: it has nothing to show otherwise.
         for (const PanelInfo& p : panel_list())
-            if (p.open != &PanelsOpen::crowd || s.crowd) ImGui::MenuItem(p.name, nullptr, &(ui.panels.*p.open));
+            if (p.open != &PanelsOpen::crowd || s.crowd)
+                if (bool open = ui.panels.*p.open; ImGui::MenuItem(p.name, nullptr, &open))
+                    choose_panel(ui, p.open, open);
+        ImGui::Separator();
+        if (ImGui::MenuItem("Left column", "[", !ui.columns.left_collapsed)) toggle_column(ui, Column::Left);
+        if (ImGui::MenuItem("Right column", "]", !ui.columns.right_collapsed)) toggle_column(ui, Column::Right);
+        if (ImGui::MenuItem("Both columns", "Tab")) toggle_columns(ui);
         ImGui::Separator();
         ImGui::MenuItem("Shortcuts", "F1", &ui.show_help);
         ImGui::EndMenu();

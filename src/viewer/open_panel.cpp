@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include "layout.h"
 #include "mobb/io/load.h"
 #include "panels.h"
 
@@ -52,10 +53,8 @@ void open_dropped(State& s, Ui& ui) {
 }
 
 void open_panel(State& s, Ui& ui) {
-    if (!ui.panels.open) return;
-    ImGui::SetNextWindowPos(ImVec2(316, ui.menu_height + 200), ImGuiCond_FirstUseEver);  // under the Inspector
     ImGui::SetNextWindowSize(ImVec2(300, 240), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Open", &ui.panels.open)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::open)) return;
     const std::string dir = io::data_dir();
     if (!ui.data_listed) {
         ui.data_files = list_clip_files(dir);

@@ -1,9 +1,14 @@
-// The viewer's panels drawn in order each frame, the list the View menu and the settings file share,
-// and the ImGui style. Each panel has a file of its own (panels.h lists them).
+// The viewer's panels drawn in order each frame, the list the View menu, the columns and the settings
+// file share, which panels open by default, and the ImGui style. Each panel has a file of its own
+// (panels.h lists them).
 #include "panels.h"
+
+#include <algorithm>
 
 #include <imgui.h>
 
+#include "crowd_view.h"
+#include "layout.h"
 #include "shortcuts.h"
 
 namespace mobb::viewer {
@@ -13,22 +18,51 @@ void apply_style() {
     ImGuiStyle& style = ImGui::GetStyle();
     style.FramePadding = ImVec2(4, 2);
     style.ItemSpacing = ImVec2(6, 3);
-    style.WindowRounding = 3;
+    style.WindowRounding = 0;  // panels stand flush in their columns
     style.Alpha = 0.96f;
 }
 
 const std::vector<PanelInfo>& panel_list() {
+    using C = Column;
     static const std::vector<PanelInfo> list = {
-        {"Scene", &PanelsOpen::scene},         {"Query", &PanelsOpen::query},  {"Trace", &PanelsOpen::trace},
-        {"Recursion", &PanelsOpen::recursion}, {"Tree fit", &PanelsOpen::fit}, {"Inspector", &PanelsOpen::inspector},
-        {"Crowd", &PanelsOpen::crowd},         {"Open", &PanelsOpen::open},
+        {"Scene", &PanelsOpen::scene, C::Left, false},  {"Query", &PanelsOpen::query, C::Right, false},
+        {"Trace", &PanelsOpen::trace, C::Right, true},  {"Recursion", &PanelsOpen::recursion, C::Left, true},
+        {"Tree fit", &PanelsOpen::fit, C::Left, false}, {"Inspector", &PanelsOpen::inspector, C::Left, false},
+        {"Crowd", &PanelsOpen::crowd, C::Right, false}, {"Open", &PanelsOpen::open, C::Floating, false},
     };
     return list;
+}
+
+const PanelInfo& panel_info(bool PanelsOpen::*open) {
+    const auto& list = panel_list();
+    return *std::find_if(list.begin(), list.end(), [&](const PanelInfo& p) { return p.open == open; });
+}
+
+PanelsOpen default_panels(const State& s, const std::map<std::string, bool>& choices) {
+    PanelsOpen p;
+    if (s.crowd) {
+        p.query = p.trace = p.recursion = s.crowd->opened_candidate >= 0;
+        p.crowd = true;
+    }
+    for (const PanelInfo& info : panel_list())
+        if (const auto c = choices.find(info.name); c != choices.end()) p.*info.open = c->second;
+    return p;
+}
+
+void open_when_used(Ui& ui, bool PanelsOpen::*panel) {
+    const auto choice = ui.panel_choices.find(panel_info(panel).name);
+    if (choice == ui.panel_choices.end() || choice->second) ui.panels.*panel = true;
+}
+
+void choose_panel(Ui& ui, bool PanelsOpen::*panel, bool open) {
+    ui.panels.*panel = open;
+    ui.panel_choices[panel_info(panel).name] = open;
 }
 
 void draw_panels(State& s, Ui& ui) {
     open_dropped(s, ui);
     main_menu(s, ui);
+    place_panels(s, ui);
     scene_panel(s, ui);
     query_panel(s, ui);
     trace_panel(s, ui);

@@ -2,6 +2,7 @@
 // fit, inspector, crowd, open files; the main menu's View menu opens and closes each of them.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,18 +20,39 @@ struct Pick {
     int sample = -1;
 };
 
-/// Which panels are open (each closable; the View menu lists them, the settings file keeps them).
+/// Which panels are open (each closable; the View menu lists them). What a scene opens by default;
+/// default_panels() says what each kind of file opens.
 struct PanelsOpen {
-    bool scene = true, query = true, trace = true, recursion = true, fit = true, inspector = true, crowd = true;
+    bool scene = true, query = true, trace = true, recursion = true, fit = false, inspector = false, crowd = false;
     bool open = false;  ///< the Open panel (data folder)
 };
+
+/// Where a panel stands: in the left or right column beside the 3D view, or floating over it.
+enum class Column : std::uint8_t { Left, Right, Floating };
 
 struct PanelInfo {
     const char* name;  ///< the window title, also the key in the settings file
     bool PanelsOpen::*open;
+    Column column;
+    bool fills;  ///< takes what its column has left (a list); the others are as tall as their content
 };
-/// Every panel in View-menu order.
+/// Every panel in View-menu order, which is also the top-down order within a column.
 const std::vector<PanelInfo>& panel_list();
+const PanelInfo& panel_info(bool PanelsOpen::*open);
+
+/// The two columns of panels: widths in pixels (dragging a panel's edge sets them), and whether each is
+/// collapsed (its panels hidden, the 3D view takes the room). The settings file keeps them.
+struct Columns {
+    float left = 300, right = 330;
+    bool left_collapsed = false, right_collapsed = false;
+};
+
+/// A rectangle in window pixels, origin top-left.
+struct Rect {
+    float x = 0, y = 0, width = 0, height = 0;
+    float aspect() const { return width / (height > 1 ? height : 1); }
+    bool contains(float px, float py) const { return px >= x && px < x + width && py >= y && py < y + height; }
+};
 
 /// The two camera presets, one name each across the code, the panels and the CLI: Top (the Scene and
 /// Crowd panels' "top", the T key, `mobb render --crowd --top`) and Side (their "side", the S key). The
@@ -54,6 +76,11 @@ struct Ui {
     bool follow = true;  ///< move the time cursor to each trace step
     bool scroll_to_step = true;
     PanelsOpen panels;
+    /// The panels the user opened or closed (View menu, close button, O), by name: kept over the
+    /// defaults and over panels opening when used.
+    std::map<std::string, bool> panel_choices;
+    Columns columns;
+    std::vector<Rect> panel_rects;   ///< this frame's place of each panel in a column (panel_list() order)
     Pick pick;                       ///< the last disk clicked (the inspector)
     Pick ruler;                      ///< the one clicked before it: the inspector measures from it to `pick`
     std::vector<int> picked_events;  ///< trace events whose node holds the picked disk
@@ -79,6 +106,15 @@ struct Ui {
 void apply_style();
 
 void draw_panels(State& state, Ui& ui);
+
+/// The panels a fresh window opens on `state`: a scene's Scene, Query, Trace and Recursion; a crowd's
+/// Scene and Crowd, with Query, Trace and Recursion once a candidate's query is opened. The user's own
+/// `choices` (Ui::panel_choices) go over them.
+PanelsOpen default_panels(const State& state, const std::map<std::string, bool>& choices = {});
+/// Opens a panel as it is used (a pick opens the Inspector) unless the user closed it themselves.
+void open_when_used(Ui& ui, bool PanelsOpen::*panel);
+/// Records the user's own choice for a panel (and applies it).
+void choose_panel(Ui& ui, bool PanelsOpen::*panel, bool open);
 
 /// A disk clicked in the 3D view: it becomes the pick, the previous pick the ruler's other end, and
 /// when it belongs to the query's clips the trace goes to the last event whose node holds it.

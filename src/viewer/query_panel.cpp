@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "mobb/core/angle.h"
+#include "layout.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -98,11 +99,7 @@ void answer(State& s) {
 }  // namespace
 
 void query_panel(State& s, Ui& ui) {
-    if (!ui.panels.query) return;
-    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - kRightWidth - 8, ui.menu_height + 8),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kRightWidth, kQueryHeight), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Query", &ui.panels.query)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::query)) return;
     bool rerun = clip_combo("A", &s.scene.query_a, s);
     rerun |= clip_combo("B", &s.scene.query_b, s);
     rerun |= query_clip(s, "A", "pa", s.scene.query_a);

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "layout.h"
 #include "panels.h"
 
 namespace mobb::viewer {
@@ -66,12 +67,7 @@ void pair_row(RowContext& c, int k) {
 }  // namespace
 
 void recursion_panel(State& s, Ui& ui) {
-    if (!ui.panels.recursion) return;
-    const float top = ui.menu_height + 314.0f;  // under the Scene panel, above the Tree fit panel
-    ImGui::SetNextWindowPos(ImVec2(8, top), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(300, std::max(120.0f, float(ui.window_size.y) - top - 290.0f)),
-                             ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Recursion", &ui.panels.recursion)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::recursion)) return;
     const Recursion& r = recursion(s, ui);
     if (r.pairs.empty()) {
         ImGui::TextDisabled("no query trace");
@@ -131,6 +127,7 @@ void click_disk(State& s, Ui& ui, const Pick& p) {
     ui.ruler = ui.pick;
     ui.pick = p;
     ui.picked_events.clear();
+    open_when_used(ui, &PanelsOpen::inspector);
     const int side = p.clip == s.scene.query_a ? 0 : p.clip == s.scene.query_b ? 1 : -1;
     if (!s.queried || side < 0) return;
     ui.picked_events = events_holding(s.trace, *s.clips[std::size_t(p.clip)].tree, side, p.sample);

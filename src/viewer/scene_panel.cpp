@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "layout.h"
 #include "panels.h"
 
 namespace mobb::viewer {
@@ -87,10 +88,7 @@ void save_to_path(State& s, Ui& ui) {
 }
 
 void scene_panel(State& s, Ui& ui) {
-    if (!ui.panels.scene) return;
-    ImGui::SetNextWindowPos(ImVec2(8, ui.menu_height + 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Scene", &ui.panels.scene)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::scene)) return;
     layer_checkboxes(s);
     colouring_combos(s.scene.layers);
     drag("time", &s.scene.cursor, 0.01f, 0.0, max_time(s), "%.2f s");

@@ -3,6 +3,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "layout.h"
+
 namespace mobb::viewer {
 
 const std::vector<Shortcut>& shortcuts() {
@@ -16,6 +18,9 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_T, false, false, Command::TopView, "T", "view from the top (space-time seen along t)"},
         {GLFW_KEY_S, false, false, Command::SideView, "S", "view from the side"},
         {GLFW_KEY_O, false, false, Command::OpenFiles, "O", "open clip files (the Open panel)"},
+        {GLFW_KEY_LEFT_BRACKET, false, false, Command::ToggleLeftColumn, "[", "collapse / expand the left column"},
+        {GLFW_KEY_RIGHT_BRACKET, false, false, Command::ToggleRightColumn, "]", "collapse / expand the right column"},
+        {GLFW_KEY_TAB, false, false, Command::ToggleColumns, "Tab", "collapse / expand both columns"},
         {GLFW_KEY_ESCAPE, false, false, Command::ClearPicks, "Esc", "clear the picked disks (Inspector)"},
         {GLFW_KEY_Q, false, false, Command::Quit, "Q", "quit (the window's settings are kept)"},
         {GLFW_KEY_F1, false, false, Command::ToggleHelp, "F1", "show / hide this window"},
@@ -37,6 +42,7 @@ const std::vector<Gesture>& gestures() {
         {"wheel", "zoom"},
         {"click", "pick a disk (Inspector; two picks: ruler), select its trace events"},
         {"click a box", "(away from disks) select the trace events on its node"},
+        {"drag a panel's side", "resize its column"},
         {"drop files", "open clip files (BVH, glTF, FBX, Collada, ...)"},
         {"Ctrl+drag", "move a clip on its ground plane (the query reruns)"},
     };
@@ -50,7 +56,10 @@ void run_command(Command command, State& s, Ui& ui) {
         case Command::StepBack: go_to_step(s, ui, shown_step(s) - 1); break;
         case Command::FirstStep: go_to_step(s, ui, 0); break;
         case Command::LastStep: go_to_step(s, ui, int(s.trace.size()) - 1); break;
-        case Command::OpenFiles: ui.panels.open = !ui.panels.open; break;
+        case Command::OpenFiles: choose_panel(ui, &PanelsOpen::open, !ui.panels.open); break;
+        case Command::ToggleLeftColumn: toggle_column(ui, Column::Left); break;
+        case Command::ToggleRightColumn: toggle_column(ui, Column::Right); break;
+        case Command::ToggleColumns: toggle_columns(ui); break;
         case Command::ClearPicks:
             ui.pick = ui.ruler = {};
             ui.picked_events.clear();

@@ -123,7 +123,7 @@ int shown_step(const State& s) {
     return std::min(s.scene.step, int(s.trace.size()) - 1);
 }
 
-render::Frame frame_of(const State& s, float bar_inset) {
+render::Frame frame_of(const State& s) {
     render::Frame f;
     Colouring& colouring = *s.colouring;
     update_colouring(s, colouring);
@@ -154,7 +154,6 @@ render::Frame frame_of(const State& s, float bar_inset) {
     f.disk_scale = colouring.disk_scale;
     f.box_scale = colouring.box_scale;
     f.colour_revision = colouring.serial;
-    f.bar_inset = bar_inset;
     return f;
 }
 

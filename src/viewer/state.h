@@ -67,10 +67,6 @@ int shown_step(const State& state);
 
 /// What the renderer draws. For a crowd it also poses every agent's skeleton at the cursor, loading
 /// the mocap sources it needs the first time (through state.crowd, which is shared, not copied).
-/// `bar_inset`: pixels at the right edge the colour bars keep clear (kRightPanels under the panels).
-render::Frame frame_of(const State& state, float bar_inset = 0);
-
-/// Width of the panels' right column (Trace, Query) with its margins, pixels.
-constexpr float kRightPanels = 296.0f;
+render::Frame frame_of(const State& state);
 
 }  // namespace mobb::viewer

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "crowd_view.h"
+#include "layout.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -51,12 +52,7 @@ void event_list(State& s, Ui& ui, int step) {
 }  // namespace
 
 void trace_panel(State& s, Ui& ui) {
-    if (!ui.panels.trace) return;
-    const float top = ui.menu_height + kQueryHeight + 16;
-    ImGui::SetNextWindowPos(ImVec2(float(ui.window_size.x) - kRightWidth - 8, top), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kRightWidth, std::max(160.0f, float(ui.window_size.y) - top - 8)),
-                             ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Trace", &ui.panels.trace)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::trace)) return;
     const int last = int(s.trace.size()) - 1;
     const int step = shown_step(s);
     step_buttons(s, ui, step, last);

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "layout.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -96,10 +97,7 @@ void tightness_plot(State& s, const FitTable& fit) {
 }  // namespace
 
 void tree_fit_panel(State& s, Ui& ui) {
-    if (!ui.panels.fit) return;
-    ImGui::SetNextWindowPos(ImVec2(8, float(ui.window_size.y) - 8.0f), ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Tree fit", &ui.panels.fit)) return ImGui::End();
+    if (!begin_panel(s, ui, &PanelsOpen::fit, ImGuiWindowFlags_HorizontalScrollbar)) return;
     if (clip_combo("clip", &ui.fit.clip, s)) ui.fit.mobb.clear();
     update_fit(s, ui.fit);
     ImGui::TextDisabled("tight = box / covered (area, volume); 1 is perfect");

@@ -1,5 +1,5 @@
-// What the window keeps between runs, in ImGui's ini file in the user's config folder: ImGui's own
-// window positions and sizes, which panels are open, and the camera of each scene or file set.
+// What the window keeps between runs, in ImGui's ini file in the user's config folder: the panels the
+// user opened or closed, the columns' widths, and the camera of each scene or file set.
 #pragma once
 #include <map>
 #include <string>
@@ -14,8 +14,8 @@ std::string settings_file();
 
 struct ViewSettings {
     std::map<std::string, render::Camera> cameras;  ///< by scene key (a scene file, the clip files, a record)
-    PanelsOpen panels;
-    bool panels_read = false;  ///< the file had a [Mobb][Panels] entry
+    std::map<std::string, bool> panel_choices;      ///< Ui::panel_choices
+    Columns columns;
 };
 
 /// Registers the [Mobb] sections with the current ImGui context; `settings` must outlive it.

@@ -1,5 +1,5 @@
-// Small ImGui pieces several panels share: colours, the right-hand column's layout, the clip chooser and
-// what the panels draw over their plots. One home for each, so the panels agree.
+// Small ImGui pieces several panels share: colours, the clip chooser and what the panels draw over their
+// plots (where a panel stands is layout.h's). One home for each, so the panels agree.
 #pragma once
 #include <vector>
 
@@ -9,9 +9,6 @@
 #include "state.h"
 
 namespace mobb::viewer {
-
-/// The right-hand column: Query above Trace.
-constexpr float kRightWidth = 330.0f, kQueryHeight = 420.0f;
 
 /// A crowd's events as the Crowd panel draws them (timeline strip, plots, counts): fallbacks orange,
 /// contacts red. The 3D view's colours are render::clip_color and its kin.

@@ -11,6 +11,7 @@
 #include "context_glfw.h"
 #include "gl.h"
 #include "image.h"
+#include "layout.h"
 #include "panels.h"
 #include "picking.h"
 #include "renderer.h"
@@ -32,13 +33,15 @@ struct Input {
     glm::dvec2 anchor{0.0};  ///< ground point under the mouse at the last move
 };
 
-render::Ray mouse_ray(const State& s, const ImGuiIO& io) {
-    return s.camera.ray(io.MousePos.x, io.MousePos.y, io.DisplaySize.x, io.DisplaySize.y);
+/// The ray under the mouse, through the viewport the columns leave.
+render::Ray mouse_ray(const State& s, const Ui& ui, const ImGuiIO& io) {
+    const Rect v = viewport(s, ui);
+    return s.camera.ray(io.MousePos.x - v.x, io.MousePos.y - v.y, v.width, v.height);
 }
 
 /// A click in the 3D view: a disk picks it; away from disks, a box of the query selects its events.
 void click(State& s, Ui& ui, const ImGuiIO& io) {
-    const render::Ray ray = mouse_ray(s, io);
+    const render::Ray ray = mouse_ray(s, ui, io);
     double disk = 0;
     const Pick p = pick_disk(s, ray, &disk);
     if (p.clip >= 0) return click_disk(s, ui, p);
@@ -50,13 +53,14 @@ void mouse(State& s, Ui& ui, Input& in) {
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 d = io.MouseDelta;
     in.travel += std::abs(d.x) + std::abs(d.y);  // before a press resets it: moving onto a disk is not a drag
-    if (!io.WantCaptureMouse) {
+    const Rect view = viewport(s, ui);
+    if (!io.WantCaptureMouse && view.contains(io.MousePos.x, io.MousePos.y)) {
         if (io.MouseWheel != 0.0f) s.camera.zoom(io.MouseWheel);
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
             in.travel = 0;
             in.drag = io.KeyShift ? Drag::Pan : io.KeyCtrl ? Drag::Move : Drag::Orbit;
             if (in.drag == Drag::Move) {
-                const render::Ray ray = mouse_ray(s, io);
+                const render::Ray ray = mouse_ray(s, ui, io);
                 const Pick p = pick_disk(s, ray);
                 in.clip = p.clip;
                 if (p.clip < 0) {
@@ -73,9 +77,9 @@ void mouse(State& s, Ui& ui, Input& in) {
     const bool held = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Middle);
     if (held && (d.x != 0 || d.y != 0)) {
         if (in.drag == Drag::Orbit) s.camera.orbit(d.x * 0.3f, d.y * 0.3f);
-        if (in.drag == Drag::Pan) s.camera.pan(d.x, d.y, io.DisplaySize.y);
+        if (in.drag == Drag::Pan) s.camera.pan(d.x, d.y, view.height);
         if (in.drag == Drag::Move) {
-            if (const auto g = ground_point(mouse_ray(s, io), in.height)) {
+            if (const auto g = ground_point(mouse_ray(s, ui, io), in.height)) {
                 Placement& p = s.places[std::size_t(in.clip)];
                 p.x += g->x - in.anchor.x;
                 p.y += g->y - in.anchor.y;
@@ -122,33 +126,34 @@ void keyboard(State& s, Ui& ui, Events& events) {
     events.dropped.clear();
 }
 
-void apply_requests(State& s, Ui& ui, float aspect) {
-    if (ui.request_view == ViewPreset::Top) s.camera.top();
-    if (ui.request_view == ViewPreset::Side) s.camera.side();
-    if (ui.request_view != ViewPreset::None || ui.request_frame_all) frame_all(s, aspect);
-    ui.request_view = ViewPreset::None;
-    ui.request_frame_all = false;
-}
-
-/// ImGui's ini in the user's config folder, with the panels' open flags and the camera of `key` in it.
+/// ImGui's ini in the user's config folder, with the user's panel choices, the columns and the camera of
+/// `key` in it; the panels open are the defaults for the state with the choices over them.
 /// Loaded now (not at the first frame) so the camera is in place before anything is drawn.
 void load_settings(State& s, Ui& ui, ViewSettings& settings, const std::string& file, const std::string& key) {
     add_settings_handler(settings);
+    ui.panels = default_panels(s);
     if (file.empty()) return;
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
     ImGui::GetIO().IniFilename = file.c_str();
     if (std::filesystem::exists(file)) ImGui::LoadIniSettingsFromDisk(file.c_str());
-    if (settings.panels_read) ui.panels = settings.panels;
-    if (const auto c = settings.cameras.find(key); !key.empty() && c != settings.cameras.end()) s.camera = c->second;
+    ui.panel_choices = settings.panel_choices;
+    ui.panels = default_panels(s, ui.panel_choices);
+    ui.columns = settings.columns;
+    if (const auto c = settings.cameras.find(key); !key.empty() && c != settings.cameras.end()) {
+        s.camera = c->second;
+        ui.request_frame_all = false;
+    }
 }
 
 /// Copies what changed into the settings and tells ImGui to write its ini (at its own pace).
 void keep_settings(const State& s, const Ui& ui, ViewSettings& settings, const std::string& key) {
-    const PanelsOpen& p = settings.panels;
-    bool changed = false;
-    for (const PanelInfo& info : panel_list()) changed |= p.*info.open != ui.panels.*info.open;
-    settings.panels = ui.panels;
+    const Columns& c = settings.columns;
+    bool changed = settings.panel_choices != ui.panel_choices || c.left != ui.columns.left ||
+                   c.right != ui.columns.right || c.left_collapsed != ui.columns.left_collapsed ||
+                   c.right_collapsed != ui.columns.right_collapsed;
+    settings.panel_choices = ui.panel_choices;
+    settings.columns = ui.columns;
     if (!key.empty() && camera_line(settings.cameras[key]) != camera_line(s.camera)) {
         settings.cameras[key] = s.camera;
         changed = true;
@@ -176,6 +181,7 @@ void run_window(State& s, const WindowOptions& options) {
         Input input;
         if (!options.scene_file.empty()) ui.save_path = options.scene_file;
         const std::string ini = settings_file();
+        ui.request_frame_all = options.frame_all;
         ViewSettings settings;
         load_settings(s, ui, settings, ini, options.settings_key);
         for (int frame = 1;; ++frame) {
@@ -192,11 +198,11 @@ void run_window(State& s, const WindowOptions& options) {
             keyboard(s, ui, events);
             update_playback(s, ui, ImGui::GetIO().DeltaTime);
             draw_panels(s, ui);
-            apply_requests(s, ui, float(size.x) / float(std::max(size.y, 1)));
+            apply_requests(s, ui);
             keep_settings(s, ui, settings, options.settings_key);
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            renderer.draw(frame_of(s, kRightPanels * float(fb.x) / float(std::max(size.x, 1))), s.camera, fb.x, fb.y);
+            renderer.draw(frame_of(s), s.camera, gl_viewport(viewport(s, ui), size, fb));
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             if (last) {
                 if (!options.screenshot.empty()) {

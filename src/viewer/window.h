@@ -14,6 +14,9 @@ struct WindowOptions {
     /// Names what is shown (a scene file, the clip files, a crowd record): the settings file keeps
     /// the camera under it. Empty: the camera is neither restored nor kept.
     std::string settings_key;
+    /// Frame everything in the viewport the panels leave at the first frame, unless the settings file
+    /// restores a camera (the state's camera was framed for the whole window).
+    bool frame_all = false;
 };
 
 /// Runs until the window closes. Throws std::runtime_error when no window can be opened.

@@ -1,5 +1,6 @@
 // The viewer's new panels' logic without a window: the recursion rebuilt from a trace, picks and the
-// ruler, opening files, the settings file's camera lines, and the layout check itself.
+// ruler, opening files, the settings file's camera lines, the panel columns and the viewport they
+// leave, which panels each kind of file opens, and the layout check itself.
 #include <algorithm>
 #include <filesystem>
 
@@ -9,6 +10,7 @@
 
 #include "crowd_view.h"
 #include "headless.h"
+#include "layout.h"
 #include "panels.h"
 #include "picking.h"
 #include "recursion.h"
@@ -263,6 +265,95 @@ TEST(UiLayout, SmallWindowCutsText) {
     std::vector<std::string> cut;
     viewer::render_headless(s, {480, 300, true, false, &start, &cut});
     EXPECT_FALSE(cut.empty());
+}
+
+/// The viewport is the window between the columns and below the menu bar; collapsing a column, or
+/// closing all of its panels, gives its room to the viewport.
+TEST(PanelLayout, ViewportBetweenTheColumns) {
+    viewer::State s;
+    viewer::Ui ui;
+    ui.window_size = {1280, 720};
+    ui.menu_height = 19;
+    viewer::Rect v = viewer::viewport(s, ui);  // a scene's panels: Scene, Recursion left; Query, Trace right
+    EXPECT_EQ(v.x, ui.columns.left);
+    EXPECT_EQ(v.y, 19.0f);
+    EXPECT_EQ(v.width, 1280.0f - ui.columns.left - ui.columns.right);
+    EXPECT_EQ(v.height, 701.0f);
+    viewer::toggle_column(ui, viewer::Column::Left);
+    EXPECT_EQ(viewer::viewport(s, ui).x, 0.0f);
+    EXPECT_EQ(viewer::viewport(s, ui).width, 1280.0f - ui.columns.right);
+    viewer::toggle_columns(ui);  // one was open: both collapse
+    EXPECT_EQ(viewer::viewport(s, ui).width, 1280.0f);
+    viewer::toggle_columns(ui);
+    EXPECT_EQ(viewer::viewport(s, ui).x, ui.columns.left);
+    ui.panels.query = ui.panels.trace = false;  // nothing left in the right column
+    EXPECT_EQ(viewer::viewport(s, ui).width, 1280.0f - ui.columns.left);
+    // The GL viewport counts rows from the bottom, in framebuffer pixels (here twice the window's).
+    const render::Viewport gl = viewer::gl_viewport({300, 19, 650, 701}, {1280, 720}, {2560, 1440});
+    EXPECT_EQ(gl.x, 600);
+    EXPECT_EQ(gl.y, 0);
+    EXPECT_EQ(gl.width, 1300);
+    EXPECT_EQ(gl.height, 1402);
+}
+
+/// A scene opens Scene, Query, Trace and Recursion; a crowd Scene and Crowd, with the query panels once
+/// a candidate's query is opened. A pick opens the Inspector unless the user closed it; the user's
+/// choices go over the defaults.
+TEST(PanelLayout, PanelsByWhatIsOpen) {
+    const viewer::State scene = load("walks.json");
+    const viewer::PanelsOpen p = viewer::default_panels(scene);
+    EXPECT_TRUE(p.scene && p.query && p.trace && p.recursion);
+    EXPECT_FALSE(p.fit || p.inspector || p.crowd || p.open);
+    const std::string record = scenario_record("doorway_two_way");
+    ASSERT_FALSE(record.empty());
+    viewer::State crowd = viewer::load_crowd_state(record, 1.0f);
+    const viewer::PanelsOpen c = viewer::default_panels(crowd);
+    EXPECT_TRUE(c.scene && c.crowd);
+    EXPECT_FALSE(c.query || c.trace || c.recursion || c.fit || c.inspector);
+    crowd.crowd->opened_candidate = 0;
+    const viewer::PanelsOpen q = viewer::default_panels(crowd);
+    EXPECT_TRUE(q.query && q.trace && q.recursion);
+
+    viewer::Ui ui;
+    ui.panels = p;
+    viewer::open_when_used(ui, &viewer::PanelsOpen::inspector);
+    EXPECT_TRUE(ui.panels.inspector);
+    viewer::choose_panel(ui, &viewer::PanelsOpen::inspector, false);
+    viewer::open_when_used(ui, &viewer::PanelsOpen::inspector);
+    EXPECT_FALSE(ui.panels.inspector);
+    viewer::choose_panel(ui, &viewer::PanelsOpen::scene, false);
+    const viewer::PanelsOpen kept = viewer::default_panels(crowd, ui.panel_choices);
+    EXPECT_FALSE(kept.scene);
+    EXPECT_FALSE(kept.inspector);
+    EXPECT_TRUE(kept.crowd);
+}
+
+/// In a headless image with the panels, frame all fills the viewport the columns leave: the scene's
+/// corners project inside it.
+TEST(PanelLayout, FrameAllFillsTheViewport) {
+    viewer::State s = load("walks.json");
+    viewer::Ui start;
+    start.panels = viewer::default_panels(s);
+    start.request_frame_all = true;
+    viewer::render_headless(s, {1280, 720, true, false, &start});
+    start.window_size = {1280, 720};
+    start.menu_height = 19;
+    const viewer::Rect v = viewer::viewport(s, start);
+    const render::Bounds b = render::scene_bounds(viewer::frame_of(s));
+    glm::vec3 lo, hi;
+    render::gl_bounds(b, s.scene.time_scale, lo, hi);
+    const glm::mat4 m = s.camera.projection(v.aspect()) * s.camera.view();
+    float x0 = 1, x1 = -1, y0 = 1, y1 = -1;
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec4 p = m * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f);
+        x0 = std::min(x0, p.x / p.w), x1 = std::max(x1, p.x / p.w);
+        y0 = std::min(y0, p.y / p.w), y1 = std::max(y1, p.y / p.w);
+    }
+    EXPECT_GE(x0, -1.0f);
+    EXPECT_LE(x1, 1.0f);
+    EXPECT_GE(y0, -1.0f);
+    EXPECT_LE(y1, 1.0f);
+    EXPECT_GT(std::max(x1 - x0, y1 - y0), 1.2f) << "the scene fills most of the viewport";
 }
 
 }  // namespace

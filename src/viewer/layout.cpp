@@ -1,0 +1,180 @@
+#include "layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+namespace mobb::viewer {
+
+namespace {
+
+constexpr float kMinColumn = 200.0f;
+constexpr float kMinFill = 150.0f;  ///< the least a list panel keeps before the others give way
+
+std::size_t index_of(const PanelInfo& info) { return std::size_t(&info - panel_list().data()); }
+
+/// A column's width as the user left it, within what the window allows.
+float clamped_width(float width, const Ui& ui) {
+    return std::clamp(width, kMinColumn, std::max(kMinColumn, 0.4f * float(ui.window_size.x)));
+}
+
+/// How tall the panel's content made it last time it was drawn; infinite for panels that fill their
+/// column and for those not drawn yet (their first frame takes a fair share, then they measure).
+float wanted_height(const PanelInfo& info) {
+    const ImGuiWindow* w = ImGui::FindWindowByName(info.name);
+    if (info.fills || !w) return std::numeric_limits<float>::infinity();
+    if (w->Collapsed) return w->TitleBarHeight();
+    return w->TitleBarHeight() + 2.0f * w->WindowPadding.y + w->ContentSizeIdeal.y + w->ScrollbarSizes.y;
+}
+
+/// The fitting case of share_height: the `least` heights, the spare height split among the lists; the
+/// last panel takes what rounding (or the lack of lists) leaves over.
+std::vector<float> share_fitting(const std::vector<float>& wanted, std::vector<float> out, float height) {
+    float used = 0;
+    for (float& h : out) used += h = std::floor(h);
+    const auto lists = std::count_if(wanted.begin(), wanted.end(), [](float w) { return std::isinf(w); });
+    const float each = lists > 0 ? std::floor((height - used) / float(lists)) : 0.0f;
+    for (std::size_t k = 0; k < out.size(); ++k)
+        if (std::isinf(wanted[k])) out[k] += each, used += each;
+    if (!out.empty()) out.back() += height - used;
+    return out;
+}
+
+/// Heights for a column: when the panels' content fits with kMinFill left for each list, each panel is as
+/// tall as its content and the lists share the rest; else each panel is as tall as it wants while that
+/// is within a fair share (water filling) and the others share the rest. The last takes any left over.
+std::vector<float> share_height(const std::vector<float>& wanted, float height) {
+    float content = 0;
+    for (float w : wanted) content += std::isinf(w) ? kMinFill : w;
+    if (content <= height) {
+        std::vector<float> least = wanted;
+        for (float& w : least)
+            if (std::isinf(w)) w = kMinFill;
+        return share_fitting(wanted, least, height);
+    }
+    std::vector<float> out(wanted.size(), -1.0f);
+    float left = height;
+    std::size_t unset = wanted.size();
+    for (bool changed = true; changed && unset > 0;) {
+        changed = false;
+        const float share = left / float(unset);
+        for (std::size_t k = 0; k < wanted.size(); ++k)
+            if (out[k] < 0 && wanted[k] <= share) {
+                out[k] = std::floor(wanted[k]);
+                left -= out[k];
+                --unset;
+                changed = true;
+            }
+    }
+    for (float& h : out)
+        if (h < 0) {
+            h = std::floor(left / float(unset--));
+            left -= h;
+        }
+    if (!out.empty()) out.back() += left;
+    return out;
+}
+
+void place_column(const State& s, Ui& ui, Column column) {
+    const float width = column_width(s, ui, column);
+    if (width <= 0) return;
+    std::vector<const PanelInfo*> shown;
+    std::vector<float> wanted;
+    for (const PanelInfo& p : panel_list())
+        if (p.column == column && panel_shown(s, ui, p)) {
+            shown.push_back(&p);
+            wanted.push_back(wanted_height(p));
+        }
+    const std::vector<float> heights = share_height(wanted, float(ui.window_size.y) - ui.menu_height);
+    const float x = column == Column::Left ? 0.0f : float(ui.window_size.x) - width;
+    float y = ui.menu_height;
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+        ui.panel_rects[index_of(*shown[k])] = {x, y, width, heights[k]};
+        y += heights[k];
+    }
+}
+
+}  // namespace
+
+bool panel_shown(const State& s, const Ui& ui, const PanelInfo& panel) {
+    return ui.panels.*panel.open && (panel.open != &PanelsOpen::crowd || s.crowd);
+}
+
+float column_width(const State& s, const Ui& ui, Column column) {
+    if (column == Column::Floating) return 0;
+    const bool left = column == Column::Left;
+    if (left ? ui.columns.left_collapsed : ui.columns.right_collapsed) return 0;
+    for (const PanelInfo& p : panel_list())
+        if (p.column == column && panel_shown(s, ui, p))
+            return clamped_width(left ? ui.columns.left : ui.columns.right, ui);
+    return 0;
+}
+
+Rect viewport(const State& s, const Ui& ui) {
+    const float left = column_width(s, ui, Column::Left), right = column_width(s, ui, Column::Right);
+    return {left, ui.menu_height, std::max(1.0f, float(ui.window_size.x) - left - right),
+            std::max(1.0f, float(ui.window_size.y) - ui.menu_height)};
+}
+
+render::Viewport gl_viewport(const Rect& r, const glm::ivec2& window, const glm::ivec2& framebuffer) {
+    const float sx = float(framebuffer.x) / float(std::max(window.x, 1));
+    const float sy = float(framebuffer.y) / float(std::max(window.y, 1));
+    const int x0 = int(std::lround(r.x * sx)), x1 = int(std::lround((r.x + r.width) * sx));
+    const int y0 = int(std::lround((float(window.y) - r.y - r.height) * sy)),
+              y1 = int(std::lround((float(window.y) - r.y) * sy));
+    return {x0, y0, x1 - x0, y1 - y0, true};
+}
+
+void place_panels(const State& s, Ui& ui) {
+    ui.panel_rects.assign(panel_list().size(), Rect{});
+    place_column(s, ui, Column::Left);
+    place_column(s, ui, Column::Right);
+}
+
+bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
+    const PanelInfo& info = panel_info(panel);
+    if (!panel_shown(s, ui, info)) return false;
+    bool& open = ui.panels.*panel;
+    bool drawn = false;
+    if (info.column == Column::Floating) {
+        const Rect v = viewport(s, ui);
+        ImGui::SetNextWindowPos(ImVec2(v.x + 8, v.y + 8), ImGuiCond_Appearing);
+        drawn = ImGui::Begin(info.name, &open, flags);
+    } else {
+        const Rect r = ui.panel_rects[index_of(info)];
+        if (r.width <= 0) return false;  // a collapsed column
+        ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+        ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
+        drawn = ImGui::Begin(info.name, &open, flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+        // Dragging a panel's side edge resizes its whole column.
+        if (const float w = ImGui::GetWindowWidth(); std::abs(w - r.width) > 0.5f)
+            (info.column == Column::Left ? ui.columns.left : ui.columns.right) = clamped_width(w, ui);
+    }
+    if (!open) choose_panel(ui, panel, false);  // its close button
+    if (!drawn) ImGui::End();
+    return drawn;
+}
+
+void toggle_column(Ui& ui, Column column) {
+    bool& collapsed = column == Column::Left ? ui.columns.left_collapsed : ui.columns.right_collapsed;
+    collapsed = !collapsed;
+}
+
+void toggle_columns(Ui& ui) {
+    Columns& c = ui.columns;
+    const bool collapse = !(c.left_collapsed && c.right_collapsed);
+    c.left_collapsed = c.right_collapsed = collapse;
+}
+
+void apply_requests(State& s, Ui& ui) {
+    if (ui.request_view == ViewPreset::Top) s.camera.top();
+    if (ui.request_view == ViewPreset::Side) s.camera.side();
+    if (ui.request_view != ViewPreset::None || ui.request_frame_all) frame_all(s, viewport(s, ui).aspect());
+    ui.request_view = ViewPreset::None;
+    ui.request_frame_all = false;
+}
+
+}  // namespace mobb::viewer
