@@ -11,7 +11,10 @@
 #include <cstdlib>
 
 #if defined(__GLIBC__)
-#define MOBB_ASSERT_FAILED(text) __assert_fail(text, __FILE__, __LINE__, __func__)
+// Declared here too: <cassert> leaves it out under NDEBUG (RelWithDebInfo, the sanitizer build).
+extern "C" [[noreturn]] void __assert_fail(const char* assertion, const char* file, unsigned int line,
+                                           const char* function) noexcept;
+#define MOBB_ASSERT_FAILED(text) __assert_fail(text, __FILE__, static_cast<unsigned int>(__LINE__), __func__)
 #else
 #define MOBB_ASSERT_FAILED(text) std::abort()
 #endif
