@@ -57,7 +57,8 @@ NavField::NavField(const NavGrid& grid, std::array<double, 2> goal)
 // Dijkstra from what `open` holds into the free cells (into the `only` ones, when given).
 void NavField::spread(const NavGrid& grid, Heap& open, const std::vector<char>* only) {
     while (!open.empty()) {
-        const auto [d, c] = open.top();
+        const double d = open.top().first;  // not a structured binding: C++17 lambdas cannot capture one
+        const std::size_t c = open.top().second;
         open.pop();
         if (d > value_[c]) continue;
         grid.for_neighbours(c, [&](std::size_t n, double step) {
