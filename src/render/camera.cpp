@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "mobb/core/assert.h"
+
 namespace mobb::render {
 
 glm::vec3 Camera::eye() const {
@@ -39,11 +41,21 @@ void Camera::pan(float dx, float dy, float height) {
 void Camera::zoom(float steps) { distance = std::clamp(distance * std::pow(0.88f, steps), 0.05f, 5000.0f); }
 
 void Camera::frame(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
+    MOBB_ASSERT(aspect > 0.0f);
     target = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 0.5f);
-    const float half_fov = glm::radians(fov) * 0.5f;
-    const float fit = std::min(half_fov, std::atan(std::tan(half_fov) * aspect));
-    distance = radius / std::sin(fit);
+    // The nearest eye from which the view's frustum holds all eight corners: a corner at (x, y) across
+    // the view and z towards the eye needs distance >= z + |x| / tan(half fov x), likewise in y.
+    const glm::mat4 v = view();
+    const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]), back(v[0][2], v[1][2], v[2][2]);
+    const float tan_y = std::tan(glm::radians(fov) * 0.5f), tan_x = tan_y * aspect;
+    float nearest = 0.5f;
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        const glm::vec3 rel = corner - target;
+        const float z = glm::dot(rel, back);
+        nearest = std::max({nearest, z + std::abs(glm::dot(rel, right)) / tan_x, z + std::abs(glm::dot(rel, up)) / tan_y});
+    }
+    distance = nearest;
 }
 
 void Camera::top() {

@@ -24,7 +24,8 @@ struct Camera {
     /// Moves the target by a screen-space drag of (dx, dy) pixels in a viewport `height` pixels tall.
     void pan(float dx, float dy, float height);
     void zoom(float steps);  ///< positive steps move closer
-    /// Keeps yaw and pitch, centres the GL-world box [lo, hi] and backs off until it fits.
+    /// Keeps yaw and pitch, centres the GL-world box [lo, hi] and backs off to the nearest distance at which
+    /// its eight corners are all in view (the viewport's aspect: width / height).
     void frame(const glm::vec3& lo, const glm::vec3& hi, float aspect);
     void top();   ///< looking straight down
     void side();  ///< looking horizontally along -z: x to the right, time up

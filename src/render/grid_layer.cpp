@@ -11,7 +11,15 @@ double tick_step(double range, int most) {
     return step;
 }
 
+Bounds grid_bounds(const Bounds& scene) {
+    Bounds b;
+    b.add({std::floor(scene.lo.x) - 1, std::floor(scene.lo.y) - 1, std::min(0.0, scene.lo.z)});
+    b.add({std::ceil(scene.hi.x) + 1, std::ceil(scene.hi.y) + 1, std::max(scene.hi.z, std::min(0.0, scene.lo.z) + 1e-3)});
+    return b;
+}
+
 static std::string format(double value, double step, const char* unit) {
+    if (std::fabs(value) < 1e-6 * step) value = 0.0;  // no "-0 m"
     char text[32];
     std::snprintf(text, sizeof text, step < 1 ? "%.1f %s" : "%.0f %s", value, unit);
     return text;
@@ -20,8 +28,8 @@ static std::string format(double value, double step, const char* unit) {
 void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text) {
     if (!frame.layers.grid || ctx.bounds.empty) return;
     const double ts = frame.time_scale;
-    const double x0 = std::floor(ctx.bounds.lo.x) - 1, x1 = std::ceil(ctx.bounds.hi.x) + 1;
-    const double y0 = std::floor(ctx.bounds.lo.y) - 1, y1 = std::ceil(ctx.bounds.hi.y) + 1;
+    const Bounds grid = grid_bounds(ctx.bounds);
+    const double x0 = grid.lo.x, x1 = grid.hi.x, y0 = grid.lo.y, y1 = grid.hi.y;
     const glm::vec4 minor(0.78f, 0.79f, 0.82f, 1.0f), major(0.55f, 0.56f, 0.60f, 1.0f), ink(0.15f, 0.15f, 0.2f, 1.0f);
     lines_.clear();
     for (double x = x0; x <= x1; x += 1.0)
@@ -30,7 +38,7 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
         lines_.line(to_gl(x0, y, 0, ts), to_gl(x1, y, 0, ts), std::fmod(std::fabs(y), 5.0) < 0.5 ? major : minor);
 
     // Time axis at the grid's (x0, y0) corner, from t = 0 (or earlier) to the last sample.
-    const double t0 = std::min(0.0, ctx.bounds.lo.z), t1 = std::max(ctx.bounds.hi.z, t0 + 1e-3);
+    const double t0 = grid.lo.z, t1 = grid.hi.z;
     lines_.line(to_gl(x0, y0, t0, ts), to_gl(x0, y0, t1, ts), ink);
     const double step = tick_step(t1 - t0, 10);
     const double tick = 0.15 * std::max(1.0, (x1 - x0) / 10.0);

@@ -16,6 +16,11 @@ private:
     Batch lines_;
 };
 
+/// What the grid covers for a scene's bounds: whole metres at least a metre past them on the ground,
+/// and in time from 0 (or earlier) to the last sample - the time axis stands at its (lo.x, lo.y) corner.
+/// Framing everything frames this.
+Bounds grid_bounds(const Bounds& scene);
+
 /// A "nice" step (1, 2 or 5 times a power of ten) giving at most `most` ticks over `range`.
 double tick_step(double range, int most);
 

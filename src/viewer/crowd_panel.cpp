@@ -1,5 +1,5 @@
-// The Crowd panel, for a recorded crowd: play the time cursor, see where fallbacks and contacts fall,
-// pick an agent and one of its choice points, list the candidates (accepted / rejected) and their
+// The Crowd panel, for a recorded crowd (its playback and timeline stand in the Timeline strip): pick
+// an agent and one of its choice points, list the candidates (accepted / rejected) and their
 // queries, and open any of them in the trace debugger.
 #include <algorithm>
 #include <cmath>
@@ -28,95 +28,6 @@ std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q)
     } catch (const std::out_of_range&) {
         return "agent " + std::to_string(q.agent) + ", unknown clip";
     }
-}
-
-/// The run as a strip: fallbacks (upper half) and frames with contacts (lower half) at their time, the
-/// cursor in white. Hover names the nearest mark; a click jumps to it (or to the time clicked),
-/// dragging scrubs.
-void timeline_strip(State& s) {
-    CrowdView& v = *s.crowd;
-    const crowd::Record& r = v.record;
-    const float w = std::max(ImGui::GetContentRegionAvail().x, 50.0f), h = 18.0f;
-    const ImVec2 p0 = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("timeline", ImVec2(w, h));
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(38, 38, 44, 255));
-    const double frames = double(std::max<std::int64_t>(1, r.frames));
-    auto x_of = [&](double f) { return p0.x + w * float(f / frames); };
-    const ImU32 fallback_colour = ImGui::ColorConvertFloat4ToU32(kFallbackColour);
-    const ImU32 contact_colour = ImGui::ColorConvertFloat4ToU32(kContactColour);
-    for (const TimelineMark& m : v.marks) {
-        const float x = x_of(double(m.frame));
-        const bool fallback = m.kind == TimelineMark::Fallback;
-        draw->AddLine(ImVec2(x, fallback ? p0.y : p0.y + h / 2), ImVec2(x, fallback ? p0.y + h / 2 : p0.y + h),
-                      fallback ? fallback_colour : contact_colour);
-    }
-    const float cx = x_of(s.scene.cursor / r.dt);
-    draw->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p0.y + h), IM_COL32(255, 255, 255, 255), 2.0f);
-    if (!ImGui::IsItemHovered() && !ImGui::IsItemActive()) return;
-    const auto frame = std::int64_t((ImGui::GetIO().MousePos.x - p0.x) / w * float(frames));
-    const TimelineMark* near = nearest_mark(v.marks, frame, std::int64_t(4.0 / w * frames) + 1);
-    if (near && near->kind == TimelineMark::Fallback)
-        ImGui::SetTooltip("fallback: agent %d at %.2f s", near->agent, double(near->frame) * r.dt);
-    else if (near)
-        ImGui::SetTooltip("%d agent pairs in contact at %.2f s", near->count, double(near->frame) * r.dt);
-    if (ImGui::IsItemClicked() && near)
-        jump_to(s, *near);
-    else if (ImGui::IsItemActive())
-        s.scene.cursor = std::clamp(double(frame), 0.0, frames) * r.dt;
-}
-
-/// Fallbacks and agent pairs in contact per second of the run (ImGui's PlotHistogram); a click moves the
-/// time cursor there.
-void events_over_time(State& s) {
-    if (s.crowd->marks.empty()) return;  // nothing to plot: the counts below say so
-    const crowd::Record& r = s.crowd->record;
-    const double seconds = double(r.frames) * r.dt;
-    const int bins = std::clamp(int(std::ceil(seconds)), 1, 600);
-    std::vector<float> fallbacks(std::size_t(bins), 0.0f), contacts(std::size_t(bins), 0.0f);
-    for (const TimelineMark& m : s.crowd->marks) {
-        const auto b = std::size_t(std::clamp(int(double(m.frame) * r.dt / seconds * bins), 0, bins - 1));
-        if (m.kind == TimelineMark::Fallback)
-            fallbacks[b] += 1.0f;
-        else
-            contacts[b] += float(m.count);
-    }
-    const float w = ImGui::GetContentRegionAvail().x;
-    const auto plot = [&](const char* id, const std::vector<float>& v, ImVec4 colour, const char* what) {
-        const float high = std::max(1.0f, *std::max_element(v.begin(), v.end()));
-        char overlay[64];
-        std::snprintf(overlay, sizeof overlay, "%s per second (max %.0f)", what, double(high));
-        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colour);
-        ImGui::PlotHistogram(id, v.data(), int(v.size()), 0, overlay, 0.0f, high, ImVec2(w, 30));
-        ImGui::PopStyleColor();
-        time_line(s.scene.cursor, 0.0, seconds, IM_COL32(255, 255, 255, 200));
-        if (ImGui::IsItemClicked()) s.scene.cursor = double(plot_fraction()) * seconds;
-    };
-    plot("##fallbacks", fallbacks, kFallbackColour, "fallbacks");
-    plot("##contacts", contacts, kContactColour, "contact pairs");
-}
-
-/// The record in one line, playback, the timeline strip, the plots and counts of fallbacks and contacts.
-void playback(State& s) {
-    CrowdView& v = *s.crowd;
-    const crowd::Record& r = v.record;
-    if (!r.scenario.empty()) ImGui::Text("scenario %s", r.scenario.c_str());
-    ImGui::Text("%d agents, %.1f s, %s, seed %llu", v.agents, double(r.frames) * r.dt, r.select.c_str(),
-                static_cast<unsigned long long>(r.seed));
-    if (ImGui::Button(v.playing ? "pause" : "play")) v.playing = !v.playing;
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
-    ImGui::SliderFloat("rate", &v.rate, 0.1f, 4.0f, "%.1f x");
-    float t = float(s.scene.cursor);
-    if (ImGui::SliderFloat("time", &t, 0.0f, float(double(r.frames) * r.dt), "%.2f s")) s.scene.cursor = double(t);
-    timeline_strip(s);
-    const auto count = [&](TimelineMark::Kind kind) {
-        return std::count_if(v.marks.begin(), v.marks.end(), [&](const auto& m) { return m.kind == kind; });
-    };
-    events_over_time(s);
-    ImGui::TextColored(kFallbackColour, "%ld fallbacks", long(count(TimelineMark::Fallback)));
-    ImGui::SameLine();
-    ImGui::TextColored(kContactColour, "%ld contact frames", long(count(TimelineMark::Contact)));
 }
 
 /// The camera presets, named as in the Scene panel; the tooltips give their keys.
@@ -220,7 +131,6 @@ void choice_details(State& s, Ui& ui) {
 
 void crowd_panel(State& s, Ui& ui) {
     if (!begin_panel(s, ui, &PanelsOpen::crowd)) return;
-    playback(s);
     view_buttons(ui);
     choice_list(s);
     if (s.crowd->choice >= 0) choice_details(s, ui);

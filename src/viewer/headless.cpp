@@ -64,11 +64,17 @@ void draw_with_ui(State& state, render::Renderer& renderer, const HeadlessOption
     ui.window_size = {o.width, o.height};
     ui.show_help = ui.show_help || o.help;
     // Four frames: the first measures the menu bar and the panels' content, the second places the
-    // panels in their columns by it, the next settle scroll limits, the last draws.
+    // panels in their columns by it, the next settle scroll limits, the last draws. Camera requests wait
+    // for the last, when the viewport has its final size.
+    const bool frame_all = ui.request_frame_all;
+    const ViewPreset view = ui.request_view;
+    ui.request_frame_all = false;
+    ui.request_view = ViewPreset::None;
     for (int pass = 0; pass < 4; ++pass) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
         draw_panels(state, ui);
+        if (pass == 3) ui.request_frame_all = frame_all, ui.request_view = view;
         apply_requests(state, ui);
         ImGui::Render();
     }

@@ -13,6 +13,8 @@ namespace {
 
 constexpr float kMinColumn = 200.0f;
 constexpr float kMinFill = 150.0f;  ///< the least a list panel keeps before the others give way
+constexpr float kMaxStrip = 0.35f;  ///< the most of the window's height the bottom strip takes
+constexpr float kFirstStrip = 120.0f;  ///< the strip's height before its panel has measured its content
 
 std::size_t index_of(const PanelInfo& info) { return std::size_t(&info - panel_list().data()); }
 
@@ -22,9 +24,10 @@ float clamped_width(float width, const Ui& ui) {
 }
 
 /// How tall the panel's content made it last time it was drawn; infinite for panels that fill their
-/// column and for those not drawn yet (their first frame takes a fair share, then they measure).
+/// column and for those not drawn yet (their first frame takes a fair share, then they measure) or with
+/// no ImGui context.
 float wanted_height(const PanelInfo& info) {
-    const ImGuiWindow* w = ImGui::FindWindowByName(info.name);
+    const ImGuiWindow* w = ImGui::GetCurrentContext() ? ImGui::FindWindowByName(info.name) : nullptr;
     if (info.fills || !w) return std::numeric_limits<float>::infinity();
     if (w->Collapsed) return w->TitleBarHeight();
     return w->TitleBarHeight() + 2.0f * w->WindowPadding.y + w->ContentSizeIdeal.y + w->ScrollbarSizes.y;
@@ -97,14 +100,42 @@ void place_column(const State& s, Ui& ui, Column column) {
     }
 }
 
+/// The panel standing in the bottom strip, if any is shown.
+const PanelInfo* strip_panel(const State& s, const Ui& ui) {
+    for (const PanelInfo& p : panel_list())
+        if (p.column == Column::Bottom && panel_shown(s, ui, p)) return &p;
+    return nullptr;
+}
+
+void place_strip(const State& s, Ui& ui) {
+    const PanelInfo* panel = strip_panel(s, ui);
+    const float height = strip_height(s, ui);
+    if (!panel || height <= 0) return;
+    const float left = column_width(s, ui, Column::Left), right = column_width(s, ui, Column::Right);
+    ui.panel_rects[index_of(*panel)] = {left, float(ui.window_size.y) - height,
+                                        std::max(1.0f, float(ui.window_size.x) - left - right), height};
+}
+
 }  // namespace
 
+bool crowd_only(const PanelInfo& panel) {
+    return panel.open == &PanelsOpen::crowd || panel.open == &PanelsOpen::timeline;
+}
+
 bool panel_shown(const State& s, const Ui& ui, const PanelInfo& panel) {
-    return ui.panels.*panel.open && (panel.open != &PanelsOpen::crowd || s.crowd);
+    return ui.panels.*panel.open && (!crowd_only(panel) || s.crowd);
+}
+
+float strip_height(const State& s, const Ui& ui) {
+    const PanelInfo* panel = strip_panel(s, ui);
+    if (!panel || ui.columns.bottom_collapsed) return 0;
+    const float wanted = wanted_height(*panel);
+    const float most = kMaxStrip * (float(ui.window_size.y) - ui.menu_height);
+    return std::floor(std::min(std::isinf(wanted) ? kFirstStrip : wanted, most));
 }
 
 float column_width(const State& s, const Ui& ui, Column column) {
-    if (column == Column::Floating) return 0;
+    if (column == Column::Floating || column == Column::Bottom) return 0;
     const bool left = column == Column::Left;
     if (left ? ui.columns.left_collapsed : ui.columns.right_collapsed) return 0;
     for (const PanelInfo& p : panel_list())
@@ -116,7 +147,7 @@ float column_width(const State& s, const Ui& ui, Column column) {
 Rect viewport(const State& s, const Ui& ui) {
     const float left = column_width(s, ui, Column::Left), right = column_width(s, ui, Column::Right);
     return {left, ui.menu_height, std::max(1.0f, float(ui.window_size.x) - left - right),
-            std::max(1.0f, float(ui.window_size.y) - ui.menu_height)};
+            std::max(1.0f, float(ui.window_size.y) - ui.menu_height - strip_height(s, ui))};
 }
 
 render::Viewport gl_viewport(const Rect& r, const glm::ivec2& window, const glm::ivec2& framebuffer) {
@@ -132,6 +163,7 @@ void place_panels(const State& s, Ui& ui) {
     ui.panel_rects.assign(panel_list().size(), Rect{});
     place_column(s, ui, Column::Left);
     place_column(s, ui, Column::Right);
+    place_strip(s, ui);
 }
 
 bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
@@ -148,9 +180,12 @@ bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
         if (r.width <= 0) return false;  // a collapsed column
         ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
         ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
-        drawn = ImGui::Begin(info.name, &open, flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+        // The strip follows the columns and its content: nothing of it to drag.
+        const int fixed = info.column == Column::Bottom ? ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : 0;
+        drawn = ImGui::Begin(info.name, &open,
+                             flags | fixed | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
         // Dragging a panel's side edge resizes its whole column.
-        if (const float w = ImGui::GetWindowWidth(); std::abs(w - r.width) > 0.5f)
+        if (const float w = ImGui::GetWindowWidth(); info.column != Column::Bottom && std::abs(w - r.width) > 0.5f)
             (info.column == Column::Left ? ui.columns.left : ui.columns.right) = clamped_width(w, ui);
     }
     if (!open) choose_panel(ui, panel, false);  // its close button
@@ -159,14 +194,17 @@ bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
 }
 
 void toggle_column(Ui& ui, Column column) {
-    bool& collapsed = column == Column::Left ? ui.columns.left_collapsed : ui.columns.right_collapsed;
+    Columns& c = ui.columns;
+    bool& collapsed = column == Column::Left    ? c.left_collapsed
+                      : column == Column::Right ? c.right_collapsed
+                                                : c.bottom_collapsed;
     collapsed = !collapsed;
 }
 
 void toggle_columns(Ui& ui) {
     Columns& c = ui.columns;
-    const bool collapse = !(c.left_collapsed && c.right_collapsed);
-    c.left_collapsed = c.right_collapsed = collapse;
+    const bool collapse = !(c.left_collapsed && c.right_collapsed && c.bottom_collapsed);
+    c.left_collapsed = c.right_collapsed = c.bottom_collapsed = collapse;
 }
 
 void apply_requests(State& s, Ui& ui) {

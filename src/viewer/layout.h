@@ -1,6 +1,7 @@
-// The window's layout: panels stand in a left and a right column (Dear ImGui 1.86 has no docking, so
-// each frame places them at fixed positions and sizes) and the 3D view gets the free rectangle
-// between the columns and below the menu bar, its viewport: the camera's aspect, picking, framing and
+// The window's layout: panels stand in a left and a right column and a crowd's timeline in a strip at
+// the bottom between them (Dear ImGui 1.86 has no docking, so each frame places them at fixed positions
+// and sizes); the 3D view gets the free rectangle between the columns, below the menu bar and above the
+// strip, its viewport: the camera's aspect, picking, framing and
 // the axis labels use it, so nothing of the scene lies under a panel.
 #pragma once
 #include "panels.h"
@@ -9,13 +10,19 @@
 
 namespace mobb::viewer {
 
-/// Whether the panel is drawn this frame: open and, for the Crowd panel, a crowd loaded.
+/// Whether the panel is drawn only when a crowd is loaded (Crowd, Timeline).
+bool crowd_only(const PanelInfo& panel);
+/// Whether the panel is drawn this frame: open and, for a crowd's panel, a crowd loaded.
 bool panel_shown(const State& state, const Ui& ui, const PanelInfo& panel);
 
 /// The width a column takes this frame: 0 when collapsed or none of its panels is shown.
 float column_width(const State& state, const Ui& ui, Column column);
 
-/// The 3D view's viewport: the window between the columns, below the menu bar.
+/// The height the bottom strip takes this frame, between the columns: 0 when collapsed or none of its
+/// panels is shown; else as tall as its panel's content, within kMaxStrip of the window.
+float strip_height(const State& state, const Ui& ui);
+
+/// The 3D view's viewport: the window between the columns, below the menu bar, above the bottom strip.
 Rect viewport(const State& state, const Ui& ui);
 
 /// A window rectangle in GL framebuffer pixels (origin bottom-left; a HiDPI framebuffer has more pixels
@@ -31,9 +38,10 @@ void place_panels(const State& state, Ui& ui);
 /// flags keeps ImGui out of this header: the tests include it.)
 bool begin_panel(State& state, Ui& ui, bool PanelsOpen::*panel, int flags = 0);  // flags: ImGuiWindowFlags
 
-/// Collapses or expands a column (the [ and ] keys, the View menu).
+/// Collapses or expands a column or the bottom strip (the [ and ] keys, the View menu).
 void toggle_column(Ui& ui, Column column);
-/// Collapses both columns, or expands both when both are collapsed (Tab): the 3D view alone.
+/// Collapses both columns and the bottom strip, or expands them all when all are collapsed (Tab): the 3D
+/// view alone.
 void toggle_columns(Ui& ui);
 
 /// Carries out the camera requests of this frame (presets, frame all) for the viewport's aspect.

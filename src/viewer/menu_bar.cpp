@@ -16,15 +16,16 @@ void main_menu(State& s, Ui& ui) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        // The Crowd panel only when a crowd is loaded: it has nothing to show otherwise.
+        // The crowd's panels only when a crowd is loaded: they have nothing to show otherwise.
         for (const PanelInfo& p : panel_list())
-            if (p.open != &PanelsOpen::crowd || s.crowd)
+            if (!crowd_only(p) || s.crowd)
                 if (bool open = ui.panels.*p.open; ImGui::MenuItem(p.name, nullptr, &open))
                     choose_panel(ui, p.open, open);
         ImGui::Separator();
         if (ImGui::MenuItem("Left column", "[", !ui.columns.left_collapsed)) toggle_column(ui, Column::Left);
         if (ImGui::MenuItem("Right column", "]", !ui.columns.right_collapsed)) toggle_column(ui, Column::Right);
-        if (ImGui::MenuItem("Both columns", "Tab")) toggle_columns(ui);
+        if (ImGui::MenuItem("Bottom strip", nullptr, !ui.columns.bottom_collapsed)) toggle_column(ui, Column::Bottom);
+        if (ImGui::MenuItem("All columns", "Tab")) toggle_columns(ui);
         ImGui::Separator();
         ImGui::MenuItem("Shortcuts", "F1", &ui.show_help);
         ImGui::EndMenu();

@@ -28,7 +28,8 @@ const std::vector<PanelInfo>& panel_list() {
         {"Scene", &PanelsOpen::scene, C::Left, false},  {"Query", &PanelsOpen::query, C::Right, false},
         {"Trace", &PanelsOpen::trace, C::Right, true},  {"Recursion", &PanelsOpen::recursion, C::Left, true},
         {"Tree fit", &PanelsOpen::fit, C::Left, false}, {"Inspector", &PanelsOpen::inspector, C::Left, false},
-        {"Crowd", &PanelsOpen::crowd, C::Right, false}, {"Open", &PanelsOpen::open, C::Floating, false},
+        {"Crowd", &PanelsOpen::crowd, C::Right, false}, {"Timeline", &PanelsOpen::timeline, C::Bottom, false},
+        {"Open", &PanelsOpen::open, C::Floating, false},
     };
     return list;
 }
@@ -42,7 +43,7 @@ PanelsOpen default_panels(const State& s, const std::map<std::string, bool>& cho
     PanelsOpen p;
     if (s.crowd) {
         p.query = p.trace = p.recursion = s.crowd->opened_candidate >= 0;
-        p.crowd = true;
+        p.crowd = p.timeline = true;
     }
     for (const PanelInfo& info : panel_list())
         if (const auto c = choices.find(info.name); c != choices.end()) p.*info.open = c->second;
@@ -70,6 +71,7 @@ void draw_panels(State& s, Ui& ui) {
     tree_fit_panel(s, ui);
     inspector_panel(s, ui);
     crowd_panel(s, ui);
+    timeline_panel(s, ui);
     open_panel(s, ui);
     shortcuts_window(ui);
 }

@@ -1,5 +1,5 @@
 // Dear ImGui panels, one .cpp each: scene and layers, query debugger, trace list, recursion view, tree
-// fit, inspector, crowd, open files; the main menu's View menu opens and closes each of them.
+// fit, inspector, crowd, the crowd's timeline, open files; the main menu's View menu opens and closes each of them.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -24,11 +24,13 @@ struct Pick {
 /// default_panels() says what each kind of file opens.
 struct PanelsOpen {
     bool scene = true, query = true, trace = true, recursion = true, fit = false, inspector = false, crowd = false;
+    bool timeline = false;  ///< a crowd's playback and timeline, in the bottom strip
     bool open = false;  ///< the Open panel (data folder)
 };
 
-/// Where a panel stands: in the left or right column beside the 3D view, or floating over it.
-enum class Column : std::uint8_t { Left, Right, Floating };
+/// Where a panel stands: in the left or right column beside the 3D view, in the bottom strip under it
+/// (between the columns), or floating over it.
+enum class Column : std::uint8_t { Left, Right, Bottom, Floating };
 
 struct PanelInfo {
     const char* name;  ///< the window title, also the key in the settings file
@@ -40,11 +42,12 @@ struct PanelInfo {
 const std::vector<PanelInfo>& panel_list();
 const PanelInfo& panel_info(bool PanelsOpen::*open);
 
-/// The two columns of panels: widths in pixels (dragging a panel's edge sets them), and whether each is
-/// collapsed (its panels hidden, the 3D view takes the room). The settings file keeps them.
+/// The two columns of panels and the bottom strip: widths in pixels (dragging a panel's edge sets them),
+/// and whether each is collapsed (its panels hidden, the 3D view takes the room). The settings file
+/// keeps them.
 struct Columns {
     float left = 300, right = 330;
-    bool left_collapsed = false, right_collapsed = false;
+    bool left_collapsed = false, right_collapsed = false, bottom_collapsed = false;
 };
 
 /// A rectangle in window pixels, origin top-left.
@@ -133,6 +136,7 @@ void outcome_strip(State& state, Ui& ui);  ///< under the Trace panel's step sli
 void tree_fit_panel(State& state, Ui& ui);
 void inspector_panel(State& state, Ui& ui);
 void crowd_panel(State& state, Ui& ui);
+void timeline_panel(State& state, Ui& ui);
 void open_panel(State& state, Ui& ui);
 /// Opens the files dropped on the window; what happened goes to ui.open_status.
 void open_dropped(State& state, Ui& ui);

@@ -20,7 +20,7 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_O, false, false, Command::OpenFiles, "O", "open clip files (the Open panel)"},
         {GLFW_KEY_LEFT_BRACKET, false, false, Command::ToggleLeftColumn, "[", "collapse / expand the left column"},
         {GLFW_KEY_RIGHT_BRACKET, false, false, Command::ToggleRightColumn, "]", "collapse / expand the right column"},
-        {GLFW_KEY_TAB, false, false, Command::ToggleColumns, "Tab", "collapse / expand both columns"},
+        {GLFW_KEY_TAB, false, false, Command::ToggleColumns, "Tab", "collapse / expand the columns and the bottom strip"},
         {GLFW_KEY_ESCAPE, false, false, Command::ClearPicks, "Esc", "clear the picked disks (Inspector)"},
         {GLFW_KEY_Q, false, false, Command::Quit, "Q", "quit (the window's settings are kept)"},
         {GLFW_KEY_F1, false, false, Command::ToggleHelp, "F1", "show / hide this window"},

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "crowd_view.h"
+#include "grid_layer.h"
 #include "random_walk.h"
 #include "renderer.h"
 
@@ -106,11 +107,11 @@ void frame_all(State& s, float aspect) {
     const render::Bounds b = render::scene_bounds(f);
     if (b.empty) return;
     glm::vec3 lo, hi;
-    render::gl_bounds(b, s.scene.time_scale, lo, hi);
-    // The grid reaches a metre past the clips and the time axis stands at its corner, labels outside.
-    const glm::vec3 margin(2.0f, 0.0f, 2.0f);
-    s.camera.frame(lo - margin, hi + margin, aspect);
-    s.camera.distance *= 0.72f;
+    render::gl_bounds(render::grid_bounds(b), s.scene.time_scale, lo, hi);
+    // The grid's labels and the time axis's stand a little outside it.
+    constexpr float kLabelRoom = 1.08f;
+    s.camera.frame(lo, hi, aspect);
+    s.camera.distance *= kLabelRoom;
 }
 
 void sync_scene(State& s) {

@@ -151,7 +151,7 @@ void keep_settings(const State& s, const Ui& ui, ViewSettings& settings, const s
     const Columns& c = settings.columns;
     bool changed = settings.panel_choices != ui.panel_choices || c.left != ui.columns.left ||
                    c.right != ui.columns.right || c.left_collapsed != ui.columns.left_collapsed ||
-                   c.right_collapsed != ui.columns.right_collapsed;
+                   c.right_collapsed != ui.columns.right_collapsed || c.bottom_collapsed != ui.columns.bottom_collapsed;
     settings.panel_choices = ui.panel_choices;
     settings.columns = ui.columns;
     if (!key.empty() && camera_line(settings.cameras[key]) != camera_line(s.camera)) {
