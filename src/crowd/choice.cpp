@@ -247,7 +247,7 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.waited, false, {}};
+    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.waited, false, {}, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
@@ -265,40 +265,15 @@ void Choice::order(const CrowdState& s) {
                 site.neighbours.push_back(
                     {0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
         }
+        ways_to_make(s, site);
     }
+    ask_way(s, site);
     next_ = drawn_;
     s.policy.order(site, next_);
     searched_ = false;
     if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead) look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
-}
-
-// The policy's order (next_) reordered by the best sequence each candidate leads to (look_ahead.h); the
-// policy's order breaks ties.
-void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
-    const CrowdTuning& t = s.options.tuning;
-    const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
-    const auto free = [&](const SearchStep& step) {
-        Piece piece;
-        piece.agent = agent_;
-        piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
-        return piece_free(s, piece, nullptr);
-    };
-    const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
-    const auto to_go = [&](const Placement& end) { return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y)); };
-    const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
-    searched_ = true;
-    const double best = *std::min_element(score.begin(), score.end());
-    if (best < std::numeric_limits<double>::infinity()) {
-        search_.learned(best, learned_);
-        learned_.push_back({base_.x, base_.y, best});
-    }
-    ranked_.clear();
-    for (std::size_t k = 0; k < next_.size(); ++k) ranked_.push_back({score[k], int(k)});
-    std::stable_sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    scratch_ = next_;
-    for (std::size_t k = 0; k < next_.size(); ++k) next_[k] = scratch_[std::size_t(ranked_[k].second)];
 }
 
 const PlacedCandidate& Choice::place(const CrowdState& s, int k) {

@@ -109,6 +109,13 @@ struct Agent {
     int waited = 0;                 ///< choice points in a row it followed its escape
     std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
     LearnedCost learned;            ///< what its look-aheads learned of the time to go (look_ahead.h)
+    std::int64_t heading_since = 0;  ///< the frame it set off for the goal it heads for (its priority)
+    double best_to_go = 1e300;       ///< the least time to go (Policy::to_go) it reached for that goal
+    std::int64_t progress_frame = 0; ///< when it last came make_way_progress nearer
+    /// The way it asked the others to make (make_way.cpp): points down its path, asked until way_until
+    /// (a frame).
+    std::vector<std::array<double, 2>> way;
+    std::int64_t way_until = -1;
 
     /// The goal it heads for now; nothing for an agent that wanders.
     std::optional<std::array<double, 2>> goal() const {
@@ -191,6 +198,10 @@ public:
     const std::vector<SearchStep>& intended() const { return intended_; }
     /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
     const std::vector<std::array<double, 3>>& learned() const { return learned_; }
+    /// The way the agent asks the others to make (CrowdTuning::make_way; empty when it asks none).
+    const std::vector<std::array<double, 2>>& way() const { return way_; }
+    /// The time to go from where the choice point stands (Policy::to_go, alone), for the agent's progress.
+    double to_go() const { return to_go_; }
 
 private:
     /// What a piece's queries do at a hit: stop; go on and count them all (fallback); or, with the right
@@ -200,6 +211,8 @@ private:
 
     void order(const CrowdState& s);
     void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
+    void ways_to_make(const CrowdState& s, ChoiceSite& site);
+    void ask_way(const CrowdState& s, const ChoiceSite& site);
     bool piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded);
     void note_query(const SpaceTimeBox& box);
     void solids_near(const CrowdState& s, const SpaceTimeBox& box);
@@ -236,6 +249,9 @@ private:
     bool searched_ = false;              // order_ comes from the look-ahead (ranked_ maps it to its nodes)
     std::vector<SearchStep> intended_;
     std::vector<std::array<double, 3>> learned_;
+    std::vector<std::array<double, 2>> way_;  // make way: the way asked of the others
+    double to_go_ = 0;                         // make way: Policy::to_go at the base, neighbours aside
+    std::vector<int> asking_;                  // scratch: agents whose ways were gathered
     Placement base_;              // where and when the next clip starts
     Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed

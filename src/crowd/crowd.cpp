@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 
-#include "choice.h"
+#include "simulation.h"
 #include "mobb/core/angle.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/util/random.h"
@@ -48,203 +48,23 @@ std::vector<std::array<double, 2>> goals_of(const CrowdOptions& o) {
     return out;
 }
 
-// The simulation: frames in order; the choice points of one frame form a batch, evaluated in parallel
-// against the state at the start of the frame, then committed in agent order. A choice that a commit
-// earlier in its batch could have changed is evaluated again before its own commit, so the outcome is
-// that of running the choice points one by one in (frame, agent) order, for any number of threads.
-class Simulation {
-public:
-    Simulation(const MotionGraph& g, const NarrowPhase& narrow, const CrowdOptions& o)
-        : g_(g),
-          outlines_(outlines_of(g)),
-          narrow_(narrow),
-          o_(o),
-          escapes_(EscapeTable::build(g, o.tuning)),
-          policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
-          solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
-          solid_grid_(solid_grid(solids_, o)),
-          pool_(o.threads),
-          broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
-          chosen_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
-          moved_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
-          waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
+}  // namespace
 
-    CrowdRun run(const std::function<void(double)>& progress);
+Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const CrowdOptions& o)
+    : g_(g),
+      outlines_(outlines_of(g)),
+      narrow_(narrow),
+      o_(o),
+      escapes_(EscapeTable::build(g, o.tuning)),
+      policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
+      solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
+      solid_grid_(solid_grid(solids_, o)),
+      pool_(o.threads),
+      broad_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+      chosen_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+      moved_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
+      waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
 
-private:
-    CrowdState state() const {
-        return {g_,          outlines_, narrow_, escapes_, *policy_, o_,         solids_,
-                solid_grid_, broad_,    agents_, pieces_,  waiting_, waiting_at_};
-    }
-    double max_radius() const;
-    void place_agents();
-    void place_at_random(double gap, double margin);
-    void reserve_starts();
-    std::array<double, 2> last_position(const Agent& a) const;
-    void reach_goals(std::int64_t frame, std::vector<int>& batch);
-    void leave(int agent, std::int64_t frame);
-    void run_frames(const std::function<void(double)>& progress);
-    // Not inlined: a profile of the collision detection collects this (callgrind --toggle-collect).
-    [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
-    void note_waiting(int agent, std::int64_t end);
-    void apply_waiting();
-    void gather(std::size_t n);
-    int add_piece(const Piece& piece, bool pending);
-    void reserve(int agent, int commit, const Plan& plan);
-    void commit(Choice& c);
-    void record_plan(const Choice& c, ChoicePoint& cp) const;
-    void count(const Choice& c, const ChoicePoint& cp);
-    void flush();
-    void log_queries(const Choice& c);
-    void fill_samples();
-
-    const MotionGraph& g_;
-    const std::vector<ClipOutline> outlines_;
-    const NarrowPhase& narrow_;
-    const CrowdOptions& o_;
-    const EscapeTable escapes_;
-    const std::unique_ptr<Policy> policy_;
-    const std::vector<Polygon> solids_;  // none when the policy does not avoid
-    const BroadPhase solid_grid_;
-    util::WorkerPool pool_;
-    BroadPhase broad_;                            // pieces live now
-    std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
-    std::vector<int> released_;                   // released in this frame, still in broad_
-    BatchGrid chosen_;                            // boxes of the current batch's plans, by position
-    std::vector<char> stale_;                     // per position: a plan chosen before may change it
-    BatchGrid moved_;                             // boxes of the current batch's plans chosen again on re-evaluation
-    std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
-    std::vector<Agent> agents_;
-    std::vector<Piece> pieces_;                      // by broad-phase id
-    std::int64_t placed_ = 0;                        // pieces placed so far (the next Piece::seq)
-    std::vector<int> unused_;                        // ids out of the broad phase, to reuse
-    std::vector<int> left_;                          // ids released in this frame, unused from the next
-    std::vector<std::vector<int>> ending_;           // per frame: ids of the committed clips ending then
-    std::int64_t expired_until_ = 0;                 // ending_ below it went to unused_
-    std::vector<std::vector<int>> due_;              // per frame: agents at a choice point
-    std::vector<Choice> slots_;                      // one per choice point of a batch, reused
-    BroadPhase waiting_;                             // agents that waited give_way_after or longer: their ground, by id
-    std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
-    std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
-    std::vector<char> in_waiting_;                    // per agent: in waiting_
-    CrowdRun out_;
-};
-
-double Simulation::max_radius() const {
-    double rmax = 0;
-    for (const GraphClip& c : g_.clips)
-        for (const Sample& s : c.path.samples) rmax = std::max(rmax, s.r);
-    return rmax;
-}
-
-// Random positions `margin` inside the world, rejected when closer than `gap` to an agent placed before
-// or (with reservations) when their held ground meets an obstacle. PlacedCandidate agents are kept in a grid of
-// cells at least `gap` wide, so a test reads the 3 x 3 cells around the position.
-void Simulation::place_at_random(double gap, double margin) {
-    const World& w = o_.world;
-    if (w.width() <= 2 * margin || w.height() <= 2 * margin)
-        throw std::invalid_argument("crowd: world smaller than an agent");
-    const double cell = std::max(gap, std::sqrt(w.width() * w.height() / double(o_.agents)));
-    const int nx = int(w.width() / cell) + 1, ny = int(w.height() / cell) + 1;
-    std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));
-    auto cell_of = [&](double v, int n) { return std::clamp(int(v / cell), 0, n - 1); };
-    auto free_at = [&](const Placement& p) {
-        const int cx = cell_of(p.x - w.x0, nx), cy = cell_of(p.y - w.y0, ny);
-        for (int ix = std::max(0, cx - 1); ix <= std::min(nx - 1, cx + 1); ++ix)
-            for (int iy = std::max(0, cy - 1); iy <= std::min(ny - 1, cy + 1); ++iy)
-                for (int b : grid[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)]) {
-                    const Placement& q = agents_[std::size_t(b)].start;
-                    if (!(std::hypot(q.x - p.x, q.y - p.y) >= gap)) return false;
-                }
-        for (const Polygon& s : w.obstacles)
-            if (disk_overlaps(s, p.x, p.y, margin)) return false;
-        return true;
-    };
-    util::Random rng(o_.seed);
-    for (int a = 0; a < o_.agents; ++a) {
-        Placement p;
-        bool ok = false;
-        for (int attempt = 0; attempt < 100000 && !ok; ++attempt) {
-            p = {rng.uniform(w.x0 + margin, w.x1 - margin), rng.uniform(w.y0 + margin, w.y1 - margin),
-                 rng.uniform(-kPi, kPi), 0.0};
-            ok = free_at(p);
-        }
-        if (!ok)
-            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
-                                        std::to_string(gap) + " m apart in the world");
-        grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(
-            a);
-        agents_.emplace_back().start = p;
-    }
-}
-
-// A scenario's agents, or random ones: 2 r_max apart and r_max from the edges in random mode (the
-// paper's experiment), their held grounds apart and inside the walls otherwise.
-void Simulation::place_agents() {
-    if (o_.placed.empty()) {
-        if (!policy_->avoids()) return place_at_random(2 * max_radius(), max_radius());
-        return place_at_random(2 * escapes_.hold_radius, escapes_.wall_clearance);
-    }
-    for (const AgentSpec& s : o_.placed) {
-        Placement p = s.start;
-        p.t0 = 0;
-        const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
-        Agent& a = agents_.emplace_back();
-        a.start = p;
-        a.start_frame = a.moved_until = std::max<std::int64_t>(0, frame);
-        a.goals = s.goals;
-        a.at_goal = s.at_goal;
-    }
-}
-
-// A piece under an unused id: one that left the broad phase before this frame, else a new one.
-int Simulation::add_piece(const Piece& piece, bool pending) {
-    int id = int(pieces_.size());
-    if (unused_.empty()) {
-        pieces_.push_back(piece);
-    } else {
-        id = unused_.back();
-        unused_.pop_back();
-        pieces_[std::size_t(id)] = piece;
-    }
-    pieces_[std::size_t(id)].seq = placed_++;
-    const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
-    // A committed clip leaves by expiring (BroadPhase::expire); the plans' pieces are released.
-    if (piece.kind == Piece::Clip && piece.index == 0 && item.box.f1 < std::int64_t(ending_.size()))
-        ending_[std::size_t(item.box.f1)].push_back(id);
-    if (pending)
-        pending_.push_back(item);
-    else
-        broad_.insert(item.id, item.owner, item.box);
-    return id;
-}
-
-// Every agent's held ground where it starts: the escape of its first choice point. Scenario agents must
-// start apart, clear of the solids (checked here).
-void Simulation::reserve_starts() {
-    for (int a = 0; a < int(agents_.size()); ++a) {
-        Agent& agent = agents_[std::size_t(a)];
-        const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};
-        for (const Polygon& s : solids_)
-            if (disk_overlaps(s, h.x, h.y, escapes_.wall_clearance))
-                throw std::invalid_argument("crowd: agent " + std::to_string(a) + " starts within " +
-                                            std::to_string(escapes_.wall_clearance) + " m of a wall or an obstacle");
-        for (int b = 0; b < a && !o_.placed.empty(); ++b) {  // random starts are placed apart
-            const Placement& q = agents_[std::size_t(b)].start;
-            if (std::hypot(q.x - h.x, q.y - h.y) < 2 * h.r)
-                throw std::invalid_argument("crowd: agents " + std::to_string(b) + " and " + std::to_string(a) +
-                                            " start closer than " + std::to_string(2 * h.r) + " m");
-        }
-        Piece p;
-        p.kind = Piece::Held;
-        p.agent = a;
-        p.commit = -1;
-        p.index = -1;
-        p.hold = h;
-        agent.plan.hold = h;
-        agent.reserved.push_back(add_piece(p, false));
-    }
-}
 
 // The boxes the frame's plans put in place and the ones they release, by position in the batch.
 void Simulation::gather(std::size_t n) {
@@ -290,6 +110,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     }
     flush();
     apply_waiting();
+    apply_ways();
     unused_.insert(unused_.end(), left_.begin(), left_.end());
     left_.clear();
 }
@@ -393,6 +214,18 @@ void Simulation::note_waiting(int agent, std::int64_t end) {
     wait_changes_.push_back({agent, waits});
 }
 
+// The ways asked this frame (make_way.cpp) reach the agents after the frame's commits, as the waiting do:
+// every choice point of a frame sees the same asks.
+void Simulation::apply_ways() {
+    const auto keep = std::int64_t(std::llround(o_.tuning.make_way_keep / g_.dt()));
+    for (WayAsked& w : way_changes_) {
+        Agent& a = agents_[std::size_t(w.agent)];
+        a.way = std::move(w.way);
+        a.way_until = w.frame + keep;
+    }
+    way_changes_.clear();
+}
+
 void Simulation::apply_waiting() {
     const double reach = o_.tuning.give_way_reach;
     for (const auto& [agent, waits] : wait_changes_) {
@@ -440,6 +273,11 @@ void Simulation::commit(Choice& c) {
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
     if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     note_waiting(c.agent(), end);
+    if (!c.way().empty()) way_changes_.push_back({c.agent(), t.frame, c.way()});
+    if (c.to_go() < a.best_to_go - o_.tuning.make_way_progress) {
+        a.best_to_go = c.to_go();
+        a.progress_frame = t.frame;
+    }
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
@@ -473,6 +311,8 @@ void Simulation::reach_goals(std::int64_t frame, std::vector<int>& batch) {
             const auto [x, y] = last_position(a);
             if (std::hypot(x - (*goal)[0], y - (*goal)[1]) < o_.goal_radius) {
                 ++a.next_goal;
+                a.heading_since = a.progress_frame = frame;
+                a.best_to_go = 1e300;
                 a.learned.clear();  // times to go to the goal reached
             }
         }
@@ -584,8 +424,6 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     if (progress) progress(1.0);
     return std::move(out_);
 }
-
-}  // namespace
 
 std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& options) {
     std::vector<Tree> trees;

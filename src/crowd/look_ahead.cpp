@@ -1,4 +1,8 @@
+// The look-ahead (CrowdTuning::look_ahead; look_ahead.h): LearnedCost, the bounded best-first search of
+// clip sequences, and Choice::look_ahead, which reorders a choice point's candidates by the sequences found.
 #include "look_ahead.h"
+
+#include "choice.h"
 #include "mobb/core/assert.h"
 
 #include <algorithm>
@@ -122,6 +126,33 @@ std::vector<SearchStep> LookAhead::sequence(int k) const {
         out.push_back(nodes_[std::size_t(i)].step);
     std::reverse(out.begin(), out.end());
     return out;
+}
+
+// The policy's order (next_) reordered by the best sequence each candidate leads to (look_ahead.h); the
+// policy's order breaks ties.
+void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
+    const CrowdTuning& t = s.options.tuning;
+    const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
+    const auto free = [&](const SearchStep& step) {
+        Piece piece;
+        piece.agent = agent_;
+        piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
+        return piece_free(s, piece, nullptr);
+    };
+    const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
+    const auto to_go = [&](const Placement& end) { return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y)); };
+    const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
+    searched_ = true;
+    const double best = *std::min_element(score.begin(), score.end());
+    if (best < std::numeric_limits<double>::infinity()) {
+        search_.learned(best, learned_);
+        learned_.push_back({base_.x, base_.y, best});
+    }
+    ranked_.clear();
+    for (std::size_t k = 0; k < next_.size(); ++k) ranked_.push_back({score[k], int(k)});
+    std::stable_sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    scratch_ = next_;
+    for (std::size_t k = 0; k < next_.size(); ++k) next_[k] = scratch_[std::size_t(ranked_[k].second)];
 }
 
 }  // namespace mobb::crowd

@@ -16,6 +16,13 @@ namespace mobb::crowd {
 
 namespace {
 
+/// Metres from (x, y) to the segment (x0, y0)-(x1, y1).
+double segment_distance(double x, double y, const std::array<double, 4>& s) {
+    const double dx = s[2] - s[0], dy = s[3] - s[1], len2 = dx * dx + dy * dy;
+    const double u = len2 > 0 ? std::clamp(((x - s[0]) * dx + (y - s[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(x - s[0] - u * dx, y - s[1] - u * dy);
+}
+
 class GoalPolicy : public Policy {
 public:
     explicit GoalPolicy(const PolicyContext& c)
@@ -53,7 +60,23 @@ public:
     }
 
     double to_go(const ChoiceSite& site, const Placement& end) const override {
-        return seconds(fields_.at(*site.goal), end, site.neighbours);
+        return seconds(fields_.at(*site.goal), end, site);
+    }
+
+    // Down the navigation field from where the agent stands, in steps of a quarter of a metre.
+    std::vector<std::array<double, 2>> way(const ChoiceSite& site, double length) const override {
+        if (!site.goal) return {};
+        const NavField& field = fields_.at(*site.goal);
+        constexpr double kStep = 0.25;  // metres
+        std::vector<std::array<double, 2>> out{{site.base.x, site.base.y}};
+        double x = site.base.x, y = site.base.y;
+        for (double walked = 0; walked < length && field.distance(x, y) > kStep; walked += kStep) {
+            const double heading = field.downhill(x, y);
+            x += kStep * std::cos(heading);
+            y += kStep * std::sin(heading);
+            out.push_back({x, y});
+        }
+        return out;
     }
 
     // Agents standing at their goals are obstacles for the others' paths.
@@ -73,28 +96,38 @@ private:
     // agent stops there whichever way it faces and whoever stands near (else ending at the goal facing
     // away, or beside an agent standing at its own goal, would cost more than ending short of it, and an
     // agent could circle its goal for good).
-    double seconds(const NavField& field, const Placement& end, const std::vector<std::array<double, 2>>& near) const {
+    double seconds(const NavField& field, const Placement& end, const ChoiceSite& site) const {
         const double distance = field.distance(end.x, end.y);
         const CrowdTuning& k = tuning_;
         if (distance < stop_radius_) return distance / k.goal_walking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
         double t = distance / k.goal_walking + turn / k.goal_turning;
-        for (const auto& n : near) {  // squared first: most neighbours are farther (and hypot is slow)
+        for (const auto& n : site.neighbours) {  // squared first: most neighbours are farther (and hypot is slow)
             const double dx = end.x - n[0], dy = end.y - n[1], d2 = dx * dx + dy * dy;
             if (d2 < k.goal_personal * k.goal_personal) t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
+        }
+        return t + in_the_way(end, site);
+    }
+
+    // Seconds for ending within make_way_clearance of a way an agent that outranks this one asked for.
+    double in_the_way(const Placement& end, const ChoiceSite& site) const {
+        double t = 0;
+        for (const auto& w : site.make_way) {
+            const double d = segment_distance(end.x, end.y, w);
+            if (d < tuning_.make_way_clearance) t += tuning_.make_way_cost * (tuning_.make_way_clearance - d);
         }
         return t;
     }
 
     // Walking on: the estimated time to the goal; standing idle last. A stuck agent
     // (CrowdTuning::goal_patience) keeps the stream's random order instead, which moves it out of the way
-    // of the agents it waits for.
+    // of the agents it waits for - unless one that outranks it asked for a way (make_way.cpp): it makes
+    // that way.
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.waited >= tuning_.goal_patience) return idle;
+        if (site.waited >= tuning_.goal_patience && site.make_way.empty()) return idle;
         const Placement end = graph_.next(site.base, m, c);
-        return idle + graph_.clips[std::size_t(c)].path.duration() +
-               seconds(fields_.at(*site.goal), end, site.neighbours);
+        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);
     }
 
     // At the goal: standing idle first, then turning in place, then the clips that end nearest to it.

@@ -37,6 +37,9 @@ struct ChoiceSite {
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
     /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
     std::vector<std::array<double, 2>> neighbours;
+    /// The ways agents that outrank it asked for (CrowdTuning::make_way), as segments (x0, y0, x1, y1) in
+    /// metres: it keeps its clips' ends clear of them.
+    std::vector<std::array<double, 4>> make_way;
 };
 
 class Policy {
@@ -62,6 +65,9 @@ public:
     /// keeps order()'s order alone. The first clips are then tried in the order of the best sequence
     /// each leads to, scored by its duration plus to_go() at its end (order() breaks ties).
     virtual int horizon(const ChoiceSite&) const { return 0; }
+    /// The way the agent wants next, for the others to make (CrowdTuning::make_way): points from where it
+    /// stands down its path, about `length` metres; empty when it seeks no place.
+    virtual std::vector<std::array<double, 2>> way(const ChoiceSite&, double /*length*/) const { return {}; }
     /// The estimated seconds from `end` (where a searched sequence leaves the agent) to what it seeks.
     virtual double to_go(const ChoiceSite&, const Placement& /*end*/) const { return 0; }
     /// An agent stopped for good at (x, y), holding a disk of radius r: the others plan around it. Called
