@@ -178,6 +178,16 @@ viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::
     return ui;
 }
 
+// One line of `mobb render --bench`: what was drawn (the disk layer groups consecutive samples of crowds
+// seen from afar, level of detail k), the draw calls and vertices of the last frame, and frames per second.
+void print_bench(std::ostream& out, const std::string& what, const viewer::BenchResult& r, int w, int h) {
+    out << "bench: " << what << ", " << r.disks.disks << " disks in " << r.disks.instances << " instances at LOD k="
+        << r.disks.k_min;
+    if (r.disks.k_max != r.disks.k_min) out << ".." << r.disks.k_max;
+    out << ", " << r.draws.calls << " draw calls, " << r.draws.vertices << " vertices, " << w << "x" << h << ", "
+        << std::fixed << std::setprecision(2) << r.fps << " frames per second\n";
+}
+
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
     struct Args {
@@ -255,13 +265,7 @@ void add_render(CLI::App& app, int& exit_code) {
                     viewer::frame_all(s, aspect(w, h));
                 }
                 if (a->bench) {
-                    render::DiskStats drawn;
-                    const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
-                    out << "bench: crowd, " << drawn.disks << " disks in " << drawn.instances << " instances at LOD k="
-                        << drawn.k_min;
-                    if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
-                    out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
-                        << " frames per second\n";
+                    print_bench(out, "crowd", viewer::bench_headless(s, w, h, a->bench_frames), w, h);
                     return;
                 }
                 const viewer::Ui start = ui_start(s, a->picks, a->panels, true);
@@ -279,16 +283,8 @@ void add_render(CLI::App& app, int& exit_code) {
             apply_colouring(s, a->disk_colour, a->box_colour);
             if (a->window >= 0) s.scene.window = a->window;
             if (a->bench) {
-                std::size_t disks = 0;
-                for (const auto& c : s.clips) disks += c.tree->path().size();
-                render::DiskStats drawn;
-                const double fps = viewer::bench_headless(s, w, h, a->bench_frames, &drawn);
-                // The disk layer groups consecutive samples of crowds seen from afar (level of detail k).
-                out << "bench: " << s.clips.size() << " clips, " << disks << " disks in " << drawn.instances
-                    << " instances at LOD k=" << drawn.k_min;
-                if (drawn.k_max != drawn.k_min) out << ".." << drawn.k_max;
-                out << ", " << w << "x" << h << ", " << std::fixed << std::setprecision(2) << fps
-                    << " frames per second\n";
+                print_bench(out, std::to_string(s.clips.size()) + " clips", viewer::bench_headless(s, w, h, a->bench_frames),
+                            w, h);
                 return;
             }
             const viewer::Ui start = ui_start(s, a->picks, a->panels, files || !scene.camera);

@@ -1,4 +1,5 @@
 #include "disk_layer.h"
+#include "draw_counts.h"
 #include "mobb/core/assert.h"
 
 #include <algorithm>
@@ -239,6 +240,7 @@ GLsizei DiskLayer::draw_span(const Frame& frame, const DrawContext& ctx, std::si
     ctx.disk->set("u_mapped", mapped ? 1 : 0);
     point_at(s, g0, group > 1, mapped);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, g1 - g0);
+    count_draw(std::size_t(mesh_indices_) * std::size_t(g1 - g0));
     return g1 - g0;
 }
 
@@ -303,6 +305,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);
+    count_draw(std::size_t(mesh_indices_) * std::size_t(marked_.count));
     glBindVertexArray(0);
 }
 

@@ -69,6 +69,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
 void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& viewport) {
     const int width = std::max(viewport.width, 1), height = std::max(viewport.height, 1);
     Layers& l = *layers_;
+    reset_draw_counts();
     if (frame.revision != revision_) {
         l.disks.rebuild(frame);
         bounds_ = scene_bounds(frame);
@@ -139,6 +140,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     l.text.draw(ctx);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    counts_ = render::draw_counts();
 }
 
 }  // namespace mobb::render

@@ -6,6 +6,7 @@
 
 #include "camera.h"
 #include "disk_layer.h"
+#include "draw_counts.h"
 #include "frame.h"
 #include "space.h"
 
@@ -38,6 +39,8 @@ public:
     void draw(const Frame& frame, const Camera& camera, const Viewport& viewport);
     /// What the last draw drew of the disk stacks (instances and level of detail).
     const DiskStats& disk_stats() const;
+    /// Draw calls and vertices of the last draw (panels drawn after it not included).
+    const DrawCounts& draw_counts() const { return counts_; }
 
 private:
     struct Layers;
@@ -45,6 +48,7 @@ private:
     std::uint64_t revision_ = ~std::uint64_t(0);
     Bounds bounds_;
     std::size_t disks_ = 0;
+    DrawCounts counts_;
     static constexpr std::size_t kMultisampleUpTo = 100000;  ///< disks
 };
 

@@ -94,7 +94,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     return target.read();
 }
 
-double bench_headless(State& state, int width, int height, int frames, render::DiskStats* disks) {
+BenchResult bench_headless(State& state, int width, int height, int frames) {
     render::OsMesaContext context(width, height);
     render::Target target(width, height);
     render::Renderer renderer;
@@ -110,8 +110,7 @@ double bench_headless(State& state, int width, int height, int frames, render::D
         glFinish();
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (disks) *disks = renderer.disk_stats();
-    return double(frames) / seconds;
+    return {double(frames) / seconds, renderer.disk_stats(), renderer.draw_counts()};
 }
 
 }  // namespace mobb::viewer
