@@ -270,6 +270,19 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
         const SampleSpan window = in_window(frame, frame.clips[c]);
         ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
         bool drawn = false;
+        // Consecutive chunks drawn at the same level of detail are one draw call: a stack's instances
+        // lie in order in one buffer, so a run of chunks is one range of it.
+        SampleSpan run;
+        int run_k = 0;
+        const auto flush = [&] {
+            const GLsizei count = run.first < run.end ? draw_span(frame, ctx, c, run, run_k) : 0;
+            run = SampleSpan{};
+            if (count <= 0) return;
+            drawn = true;
+            stats_.instances += std::size_t(count);
+            stats_.k_min = stats_.k_min ? std::min(stats_.k_min, run_k) : run_k;
+            stats_.k_max = std::max(stats_.k_max, run_k);
+        };
         for (std::size_t q = 0; q < clip.chunks.size(); ++q) {
             const auto c0 = std::int64_t(q) * kDiskChunk;
             const SampleSpan span{std::max(c0, window.first), std::min(c0 + kDiskChunk, window.end)};
@@ -279,13 +292,14 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
             if (outside_view(ctx.view_proj, lo, hi)) continue;
             const int k =
                 clip_lod(clip.chunks[q], double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
-            const GLsizei count = draw_span(frame, ctx, c, span, k);
-            if (count <= 0) continue;
-            drawn = true;
-            stats_.instances += std::size_t(count);
-            stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
-            stats_.k_max = std::max(stats_.k_max, k);
+            if (run.first < run.end && (k != run_k || span.first != run.end)) flush();
+            if (run.first >= run.end) {
+                run.first = span.first;
+                run_k = k;
+            }
+            run.end = span.end;
         }
+        flush();
         if (drawn) stats_.disks += frame.clips[c].tree->path().size();
     }
     glDisable(GL_CULL_FACE);
