@@ -37,6 +37,12 @@ Bounds scene_bounds(const Frame& frame) {
     return b;
 }
 
+bool multisampled(const Frame& frame) {
+    std::size_t disks = 0;
+    for (const ClipView& clip : frame.clips) disks += clip.tree->path().size();
+    return frame.multisample && disks <= kMultisampleUpTo;
+}
+
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi) {
     const glm::vec3 a = to_gl(bounds.lo.x, bounds.lo.y, bounds.lo.z, time_scale);
     const glm::vec3 b = to_gl(bounds.hi.x, bounds.hi.y, bounds.hi.z, time_scale);
@@ -73,15 +79,14 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     if (frame.revision != revision_) {
         l.disks.rebuild(frame);
         bounds_ = scene_bounds(frame);
-        disks_ = 0;
-        for (const ClipView& clip : frame.clips) disks_ += clip.tree->path().size();
         revision_ = frame.revision;
     }
-    // Multisampling costs llvmpipe about 5x in fill: crowds are drawn single-sampled.
-    if (disks_ > kMultisampleUpTo)
-        glDisable(GL_MULTISAMPLE);
-    else
+    // On a multisampled framebuffer (the window's) this still writes every sample: headless targets
+    // are made single-sampled instead (multisampled()).
+    if (multisampled(frame))
         glEnable(GL_MULTISAMPLE);
+    else
+        glDisable(GL_MULTISAMPLE);
     DrawContext ctx;
     ctx.view_proj = camera.projection(float(width) / float(height)) * camera.view();
     ctx.width = width;

@@ -18,6 +18,13 @@ Bounds scene_bounds(const Frame& frame);
 /// GL-world corners of space-time bounds at a time scale (for Camera::frame).
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi);
 
+/// Scenes of more disks than this are drawn with one sample per pixel whatever Frame::multisample says.
+constexpr std::size_t kMultisampleUpTo = 100000;
+
+/// Whether the frame is drawn multisampled: asked for, and at most kMultisampleUpTo disks. A headless
+/// target is made with 4 samples or 1 by it (one sample: a quarter of the depth and colour writes).
+bool multisampled(const Frame& frame);
+
 /// Where in the framebuffer the scene is drawn, GL pixels from the bottom-left corner (the window's free
 /// rectangle between its panel columns).
 struct Viewport {
@@ -47,9 +54,7 @@ private:
     std::unique_ptr<Layers> layers_;
     std::uint64_t revision_ = ~std::uint64_t(0);
     Bounds bounds_;
-    std::size_t disks_ = 0;
     DrawCounts counts_;
-    static constexpr std::size_t kMultisampleUpTo = 100000;  ///< disks
 };
 
 }  // namespace mobb::render

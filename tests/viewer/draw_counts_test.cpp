@@ -72,5 +72,15 @@ TEST(DrawCounts, BenchSceneInFewCalls) {
     EXPECT_GT(counts.vertices, 24 * e.instances);  // 8-segment cylinders: 24 triangles per instance
 }
 
+TEST(DrawCounts, MultisampledUnlessOffOrACrowd) {
+    viewer::State small = viewer::load_state(viewer::load_scene(std::string(MOBB_TEST_SCENES) + "/walks.json"), 1.0f);
+    EXPECT_TRUE(render::multisampled(viewer::frame_of(small)));
+    small.scene.multisample = false;  // View > Smooth edges, --no-msaa
+    EXPECT_FALSE(render::multisampled(viewer::frame_of(small)));
+    const viewer::State crowd =
+        viewer::load_state(viewer::load_scene(std::string(MOBB_ASSET_SCENES) + "/bench.json"), 1.0f);
+    EXPECT_FALSE(render::multisampled(viewer::frame_of(crowd)));  // 360,000 disks
+}
+
 }  // namespace
 }  // namespace mobb::test
