@@ -250,6 +250,8 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     ctx.use(*ctx.disk);
     ctx.disk->set("u_time_scale", float(frame.time_scale));
     ctx.disk->set("u_grow", 1.0f);
+    // Caps inside a stack are hidden only where nothing cuts it open: no time window, opaque.
+    ctx.disk->set("u_hide_caps", !translucent_pass && frame.window <= 0 ? 1 : 0);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
     // Opaque stacks are solids seen from outside: their back faces are hidden anyway, and culling them
     // spares llvmpipe half the rasterisation. Where the time window cuts a stack open, the disk below
@@ -316,6 +318,7 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     ctx.disk->set("u_grow", grow);
     ctx.disk->set("u_color", color);
     ctx.disk->set("u_mapped", 0);
+    ctx.disk->set("u_hide_caps", 0);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);

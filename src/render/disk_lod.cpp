@@ -124,6 +124,9 @@ std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k
         out.push_back({glm::vec4(disks[i].x, disks[i].y, disks[i].z, r),
                        glm::vec4(float(c1.x - c0.x), float(c1.y - c0.y), 0.0f, float(m))});
     }
+    // A chunk's last cap is kept: the next chunk may be drawn at another level of detail, or not at all.
+    for (std::size_t g = 0; g + 1 < out.size(); ++g)
+        if ((g + 1) * step % std::size_t(kDiskChunk) != 0 && out[g + 1].base.w >= out[g].base.w) out[g].shift.z = 1.0f;
     return out;
 }
 

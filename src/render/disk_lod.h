@@ -26,8 +26,10 @@ namespace mobb::render {
 using DiskInstance = glm::vec4;
 
 /// One group's instance data: `base` as a DiskInstance (first disk's centre, start time, group
-/// radius); `shift` = (world dx, world dy) from the base centre to the top centre, 0, and the number
-/// of samples in the group (its height in units of dt).
+/// radius); `shift` = (world dx, world dy) from the base centre to the top centre, 1 when the top cap
+/// lies inside the next group of the same chunk (its radius is at least this one's: the cap is a disk
+/// of this radius on the next group's base centre, within its base disk) else 0, and the number of
+/// samples in the group (its height in units of dt).
 struct DiskGroup {
     glm::vec4 base;
     glm::vec4 shift;

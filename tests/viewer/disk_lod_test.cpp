@@ -99,6 +99,11 @@ TEST(DiskLod, GroupsHoldTheirDisks) {
                 // Consecutive groups meet centre to centre: no gaps in the stack.
                 EXPECT_NEAR(G.base.x + G.shift.x, groups[g + 1].base.x, 1e-5);
                 EXPECT_NEAR(G.base.y + G.shift.y, groups[g + 1].base.y, 1e-5);
+                // The top cap is marked hidden exactly when the next group of the same chunk holds it.
+                const bool chunk_end = (g + 1) * std::size_t(k) % std::size_t(render::kDiskChunk) == 0;
+                EXPECT_EQ(G.shift.z, !chunk_end && groups[g + 1].base.w >= G.base.w ? 1.0f : 0.0f) << k << " " << g;
+            } else {
+                EXPECT_EQ(G.shift.z, 0.0f);  // the stack's top is always closed
             }
             for (std::size_t u = 0; u < m; ++u) {
                 const render::DiskInstance& d = disks[i + u];
