@@ -53,6 +53,7 @@ void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3
 struct Renderer::Layers {
     Program color{"color.vert", "color.frag"};
     Program disk{"disk.vert", "disk.frag"};
+    Program tube{"tube.vert", "disk.frag"};
     GridLayer grid;
     DiskLayer disks;
     BoxLayer boxes;
@@ -93,6 +94,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     ctx.height = height;
     ctx.color = &l.color;
     ctx.disk = &l.disk;
+    ctx.tube = &l.tube;
     ctx.bounds = bounds_;
     ctx.whole_labels = viewport.whole_labels;
 
