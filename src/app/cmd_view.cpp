@@ -288,8 +288,8 @@ void add_render(CLI::App& app, int& exit_code) {
             if (a->window >= 0) s.scene.window = a->window;
             if (a->no_msaa) s.scene.multisample = false;
             if (a->bench) {
-                print_bench(out, std::to_string(s.clips.size()) + " clips", viewer::bench_headless(s, w, h, a->bench_frames),
-                            w, h);
+                const viewer::BenchResult r = viewer::bench_headless(s, w, h, a->bench_frames);
+                print_bench(out, std::to_string(s.clips.size()) + " clips", r, w, h);
                 return;
             }
             const viewer::Ui start = ui_start(s, a->picks, a->panels, files || !scene.camera);

@@ -17,7 +17,8 @@
 
 namespace mobb::render {
 
-/// What the last draw of the stacks drew: disks stood for, instances drawn, the range of k.
+/// What the last draw of the stacks drew: disks stood for, instances (or groups of a tube) drawn, the
+/// range of k.
 struct DiskStats {
     std::size_t disks = 0, instances = 0;
     int k_min = 0, k_max = 0;

@@ -159,7 +159,7 @@ TubeMesh tube_mesh(const std::vector<DiskGroup>& groups, double dt, int segments
             const float a = two_pi * float(k) / float(s);
             const glm::vec2 d(std::cos(a), std::sin(a)), p = centre[j] + radius[j] * d;
             // Each ring's normal is the mean of the sides above and below it: the tube is shaded smooth.
-            const float m_below = j > 0 ? slope(j - 1, d) : slope(0, d), m_above = j < n ? slope(j, d) : slope(n - 1, d);
+            const float m_below = slope(j > 0 ? j - 1 : 0, d), m_above = slope(j < n ? j : n - 1, d);
             m.vertices.push_back({glm::vec3(p, time[j]), glm::vec4(d, 0.5f * (m_below + m_above), 0.0f)});
         }
     const auto cap = [&](std::size_t ring, float up) {

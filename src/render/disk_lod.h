@@ -96,7 +96,9 @@ struct TubeMesh {
     int segments = 0;
     std::size_t cap_indices() const { return std::size_t(3 * (segments - 2)); }
     /// First index and count of groups [g0, g1), with the caps where the range reaches an end.
-    std::size_t first_index(std::size_t g0) const { return g0 == 0 ? 0 : cap_indices() + 6 * std::size_t(segments) * g0; }
+    std::size_t first_index(std::size_t g0) const {
+        return g0 == 0 ? 0 : cap_indices() + 6 * std::size_t(segments) * g0;
+    }
     std::size_t end_index(std::size_t g1) const {
         return cap_indices() + 6 * std::size_t(segments) * g1 + (g1 == groups ? cap_indices() : 0);
     }
