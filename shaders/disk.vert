@@ -18,6 +18,7 @@ uniform float u_grow;                     // radius factor (highlighted disks ar
 uniform float u_clip_lo, u_clip_hi;       // GL heights kept: the time window (renderer.cpp)
 uniform vec4 u_color;
 uniform int u_mapped;
+uniform int u_hide_caps;                  // 1: top caps inside the next group (a_group.z) are collapsed
 uniform vec3 u_map[33];                   // the colour map, evenly spaced from u_lo to u_hi (either order)
 uniform float u_lo, u_hi;
 out float gl_ClipDistance[2];
@@ -33,8 +34,11 @@ void main() {
     float r = a_sample.w * u_grow;
     float h = u_dt * a_group.w * u_time_scale;
     vec2 shift = a_group.xy * a_pos.y;
-    vec3 p = vec3(a_sample.x + shift.x + r * a_pos.x, a_sample.z * u_time_scale + h * a_pos.y,
-                  -(a_sample.y + shift.y) + r * a_pos.z);
+    // A cap inside the solid (the next group's base disk holds it) is never seen from outside: its
+    // vertices go to its centre, and llvmpipe drops the empty triangles before rasterising them.
+    float rim = (u_hide_caps != 0 && a_group.z > 0.5 && a_normal.y > 0.5) ? 0.0 : r;
+    vec3 p = vec3(a_sample.x + shift.x + rim * a_pos.x, a_sample.z * u_time_scale + h * a_pos.y,
+                  -(a_sample.y + shift.y) + rim * a_pos.z);
     // The side's normal tilts against the shear (GL shift is (dx, 0, -dy)); caps stay level.
     float tilt = (a_normal.x * a_group.x - a_normal.z * a_group.y) / max(abs(h), 1e-6);
     v_normal = vec3(a_normal.x, a_normal.y - tilt, a_normal.z);

@@ -1,5 +1,7 @@
 #include "batch.h"
 
+#include "draw_counts.h"
+
 #include <cstddef>
 
 namespace mobb::render {
@@ -52,6 +54,7 @@ void Batch::draw() {
         dirty_ = false;
     }
     glDrawArrays(mode_, 0, GLsizei(vertices_.size()));
+    count_draw(vertices_.size());
     glBindVertexArray(0);
 }
 

@@ -1,4 +1,5 @@
 #include "disk_layer.h"
+#include "draw_counts.h"
 #include "mobb/core/assert.h"
 
 #include <algorithm>
@@ -73,6 +74,13 @@ void DiskLayer::set_segments(int segments) {
     segments_ = segments;
 }
 
+void DiskLayer::release(Tube& t) {
+    if (t.vbo) glDeleteBuffers(1, &t.vbo);
+    if (t.ibo) glDeleteBuffers(1, &t.ibo);
+    if (t.vao) glDeleteVertexArrays(1, &t.vao);
+    t = Tube{};
+}
+
 void DiskLayer::release(Stack& s) {
     if (s.vbo) glDeleteBuffers(1, &s.vbo);
     if (s.values) glDeleteBuffers(1, &s.values);
@@ -81,8 +89,10 @@ void DiskLayer::release(Stack& s) {
 }
 
 DiskLayer::~DiskLayer() {
-    for (Clip& c : clips_)
+    for (Clip& c : clips_) {
         for (Stack& s : c.lods) release(s);
+        for (Tube& t : c.tubes) release(t);
+    }
     release(marked_);
     glDeleteBuffers(1, &mesh_);
     glDeleteBuffers(1, &indices_);
@@ -133,8 +143,10 @@ void DiskLayer::rebuild(const Frame& frame) {
     for (const ClipView& clip : frame.clips) total_ += clip.tree->path().size();
     const int segments = total_ > kCoarseAbove ? kSegmentsCoarse : kSegmentsFine;
     if (segments != segments_) set_segments(segments);
-    for (std::size_t c = frame.clips.size(); c < clips_.size(); ++c)
+    for (std::size_t c = frame.clips.size(); c < clips_.size(); ++c) {
         for (Stack& s : clips_[c].lods) release(s);
+        for (Tube& t : clips_[c].tubes) release(t);
+    }
     clips_.resize(frame.clips.size());
     for (std::size_t c = 0; c < frame.clips.size(); ++c) {
         const ClipView& clip = frame.clips[c];
@@ -142,6 +154,7 @@ void DiskLayer::rebuild(const Frame& frame) {
             s.built = false;  // buffers are kept and refilled when next drawn
             s.values_revision = ~std::uint64_t(0);
         }
+        for (Tube& t : clips_[c].tubes) t.built = false;
         clips_[c].chunks = chunk_bounds(clip.tree->path(), clip.place);
         clips_[c].dt = float(clip.tree->path().dt);
     }
@@ -239,16 +252,57 @@ GLsizei DiskLayer::draw_span(const Frame& frame, const DrawContext& ctx, std::si
     ctx.disk->set("u_mapped", mapped ? 1 : 0);
     point_at(s, g0, group > 1, mapped);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, g1 - g0);
+    count_draw(std::size_t(mesh_indices_) * std::size_t(g1 - g0));
     return g1 - g0;
+}
+
+// Consecutive chunks drawn at the same level of detail are one draw call: a stack's instances (or its
+// tube's groups) lie in order in one buffer, so a run of chunks is one range of it.
+std::vector<DiskLayer::Run> DiskLayer::runs_in_view(const Frame& frame, const DrawContext& ctx) {
+    std::vector<Run> runs;
+    for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
+        if (!frame.clips[c].visible) continue;
+        const Clip& clip = clips_[c];
+        const SampleSpan window = in_window(frame, frame.clips[c]);
+        bool open = false;  // the last run is this clip's and may grow
+        for (std::size_t q = 0; q < clip.chunks.size(); ++q) {
+            const auto c0 = std::int64_t(q) * kDiskChunk;
+            const SampleSpan span{std::max(c0, window.first), std::min(c0 + kDiskChunk, window.end)};
+            if (span.first >= span.end) continue;
+            glm::vec3 lo, hi;
+            chunk_gl(clip.chunks[q], frame.time_scale, lo, hi);
+            if (outside_view(ctx.view_proj, lo, hi)) {
+                open = false;
+                continue;
+            }
+            const int k =
+                clip_lod(clip.chunks[q], double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
+            if (open && runs.back().k == k && runs.back().span.end == span.first)
+                runs.back().span.end = span.end;
+            else
+                runs.push_back({c, span, k});
+            open = true;
+        }
+    }
+    return runs;
 }
 
 void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass) {
     if (!frame.layers.disks || frame.layers.disks_translucent != translucent_pass) return;
     stats_ = DiskStats{};
-    ctx.use(*ctx.disk);
-    ctx.disk->set("u_time_scale", float(frame.time_scale));
-    ctx.disk->set("u_grow", 1.0f);
-    glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
+    // Tubes stand for grouped cylinders where nothing shows a stack's inside or its groups' own values:
+    // opaque, no time window cutting it open, each clip in its colour.
+    const bool tubes = !translucent_pass && frame.window <= 0 && frame.layers.disk_colour == DiskColour::Clip;
+    const auto tube = [&](const Run& r) { return tubes && level_of(r.k) > 0; };
+    const std::vector<Run> runs = runs_in_view(frame, ctx);
+    std::vector<bool> drawn(frame.clips.size(), false);
+    const auto note = [&](const Run& r, GLsizei count) {
+        if (count <= 0) return;
+        drawn[r.clip] = true;
+        stats_.instances += std::size_t(count);
+        stats_.k_min = stats_.k_min ? std::min(stats_.k_min, r.k) : r.k;
+        stats_.k_max = std::max(stats_.k_max, r.k);
+    };
     // Opaque stacks are solids seen from outside: their back faces are hidden anyway, and culling them
     // spares llvmpipe half the rasterisation. Where the time window cuts a stack open, the disk below
     // shows its top cap instead of the stack's inside.
@@ -258,36 +312,79 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
         glFrontFace(kFrontFace);
     }
     const float alpha = translucent_pass ? 0.28f : 1.0f;
+    ctx.use(*ctx.disk);
+    ctx.disk->set("u_time_scale", float(frame.time_scale));
+    ctx.disk->set("u_grow", 1.0f);
+    // Caps inside a stack are hidden only where nothing cuts it open: no time window, opaque.
+    ctx.disk->set("u_hide_caps", !translucent_pass && frame.window <= 0 ? 1 : 0);
+    glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);  // what ungrouped stacks read at location 3
     const auto& table = colour_table(frame.disk_scale.map);
     ctx.disk->set("u_map", table.data(), kColourMapEntries);
     ctx.disk->set("u_lo", float(frame.disk_scale.lo));
     ctx.disk->set("u_hi", float(frame.disk_scale.hi));
-    for (std::size_t c = 0; c < frame.clips.size() && c < clips_.size(); ++c) {
-        if (!frame.clips[c].visible) continue;
-        Clip& clip = clips_[c];
-        const SampleSpan window = in_window(frame, frame.clips[c]);
-        ctx.disk->set("u_color", glm::vec4(frame.clips[c].color, alpha));
-        bool drawn = false;
-        for (std::size_t q = 0; q < clip.chunks.size(); ++q) {
-            const auto c0 = std::int64_t(q) * kDiskChunk;
-            const SampleSpan span{std::max(c0, window.first), std::min(c0 + kDiskChunk, window.end)};
-            if (span.first >= span.end) continue;
-            glm::vec3 lo, hi;
-            chunk_gl(clip.chunks[q], frame.time_scale, lo, hi);
-            if (outside_view(ctx.view_proj, lo, hi)) continue;
-            const int k =
-                clip_lod(clip.chunks[q], double(clip.dt), frame.time_scale, total_, ctx.view_proj, ctx.height);
-            const GLsizei count = draw_span(frame, ctx, c, span, k);
-            if (count <= 0) continue;
-            drawn = true;
-            stats_.instances += std::size_t(count);
-            stats_.k_min = stats_.k_min ? std::min(stats_.k_min, k) : k;
-            stats_.k_max = std::max(stats_.k_max, k);
+    for (const Run& r : runs)
+        if (!tube(r)) {
+            ctx.disk->set("u_color", glm::vec4(frame.clips[r.clip].color, alpha));
+            note(r, draw_span(frame, ctx, r.clip, r.span, r.k));
         }
-        if (drawn) stats_.disks += frame.clips[c].tree->path().size();
+    if (std::any_of(runs.begin(), runs.end(), tube)) {
+        ctx.use(*ctx.tube);
+        ctx.tube->set("u_time_scale", float(frame.time_scale));
+        for (const Run& r : runs)
+            if (tube(r)) {
+                ctx.tube->set("u_color", glm::vec4(frame.clips[r.clip].color, alpha));
+                note(r, draw_tube(frame, r.clip, r.span, r.k));
+            }
     }
+    for (std::size_t c = 0; c < drawn.size(); ++c)
+        if (drawn[c]) stats_.disks += frame.clips[c].tree->path().size();
     glDisable(GL_CULL_FACE);
     glBindVertexArray(0);
+}
+
+DiskLayer::Tube& DiskLayer::tube_at(const ClipView& clip, Clip& c, int k) {
+    const int level = level_of(k);
+    Tube& t = c.tubes[std::size_t(level)];
+    if (t.built) return t;
+    if (!t.vao) {
+        glGenVertexArrays(1, &t.vao);
+        glGenBuffers(1, &t.vbo);
+        glGenBuffers(1, &t.ibo);
+        glBindVertexArray(t.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, t.vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(TubeVertex), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(TubeVertex),
+                              reinterpret_cast<void*>(offsetof(TubeVertex, dir)));
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, t.ibo);
+    }
+    const Path& path = clip.tree->path();
+    t.shape = tube_mesh(group_disks(disk_instances(path, clip.place), 1 << level), path.dt, segments_);
+    glBindVertexArray(t.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, t.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(t.shape.vertices.size() * sizeof(TubeVertex)), t.shape.vertices.data(),
+                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(t.shape.indices.size() * sizeof(std::uint32_t)),
+                 t.shape.indices.data(), GL_STATIC_DRAW);
+    t.shape.vertices = {};  // the buffers hold them; the shape keeps its index ranges
+    t.shape.indices = {};
+    t.built = true;
+    return t;
+}
+
+GLsizei DiskLayer::draw_tube(const Frame& frame, std::size_t c, SampleSpan span, int k) {
+    Tube& t = tube_at(frame.clips[c], clips_[c], k);
+    const int group = 1 << level_of(k);
+    const auto g0 = std::size_t(span.first / group);
+    const std::size_t g1 = std::min(std::size_t((span.end + group - 1) / group), t.shape.groups);
+    if (g1 <= g0) return 0;
+    const std::size_t first = t.shape.first_index(g0), count = t.shape.end_index(g1) - first;
+    glBindVertexArray(t.vao);
+    glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                   reinterpret_cast<void*>(first * sizeof(std::uint32_t)));
+    count_draw(count);
+    return GLsizei(g1 - g0);
 }
 
 void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstance>& disks, double dt,
@@ -300,9 +397,11 @@ void DiskLayer::draw_marked(const DrawContext& ctx, const std::vector<DiskInstan
     ctx.disk->set("u_grow", grow);
     ctx.disk->set("u_color", color);
     ctx.disk->set("u_mapped", 0);
+    ctx.disk->set("u_hide_caps", 0);
     glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(marked_.vao);
     glDrawElementsInstanced(GL_TRIANGLES, mesh_indices_, GL_UNSIGNED_SHORT, nullptr, marked_.count);
+    count_draw(std::size_t(mesh_indices_) * std::size_t(marked_.count));
     glBindVertexArray(0);
 }
 

@@ -124,7 +124,65 @@ std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k
         out.push_back({glm::vec4(disks[i].x, disks[i].y, disks[i].z, r),
                        glm::vec4(float(c1.x - c0.x), float(c1.y - c0.y), 0.0f, float(m))});
     }
+    // A chunk's last cap is kept: the next chunk may be drawn at another level of detail, or not at all.
+    for (std::size_t g = 0; g + 1 < out.size(); ++g)
+        if ((g + 1) * step % std::size_t(kDiskChunk) != 0 && out[g + 1].base.w >= out[g].base.w) out[g].shift.z = 1.0f;
     return out;
+}
+
+TubeMesh tube_mesh(const std::vector<DiskGroup>& groups, double dt, int segments) {
+    TubeMesh m;
+    m.groups = groups.size();
+    m.segments = segments;
+    if (groups.empty() || segments < 3) return m;
+    const std::size_t n = groups.size(), s = std::size_t(segments);
+    const float two_pi = 6.28318530718f;
+    // Ring j: centre, time, radius; the slope of group j's side along each direction comes from the
+    // move of the centre and the change of radius between its rings.
+    std::vector<glm::vec2> centre(n + 1);
+    std::vector<float> time(n + 1), radius(n + 1);
+    for (std::size_t j = 0; j < n; ++j) {
+        centre[j] = glm::vec2(groups[j].base);
+        time[j] = groups[j].base.z;
+        radius[j] = std::max(groups[j].base.w, j > 0 ? groups[j - 1].base.w : 0.0f);
+    }
+    const DiskGroup& last = groups[n - 1];
+    centre[n] = glm::vec2(last.base) + glm::vec2(last.shift);
+    time[n] = last.base.z + float(dt * double(last.shift.w));
+    radius[n] = last.base.w;
+    const auto slope = [&](std::size_t g, const glm::vec2& d) {
+        const float span = std::max(time[g + 1] - time[g], 1e-9f);
+        return (glm::dot(d, centre[g + 1] - centre[g]) + radius[g + 1] - radius[g]) / span;
+    };
+    for (std::size_t j = 0; j <= n; ++j)
+        for (std::size_t k = 0; k < s; ++k) {
+            const float a = two_pi * float(k) / float(s);
+            const glm::vec2 d(std::cos(a), std::sin(a)), p = centre[j] + radius[j] * d;
+            // Each ring's normal is the mean of the sides above and below it: the tube is shaded smooth.
+            const float m_below = slope(j > 0 ? j - 1 : 0, d), m_above = slope(j < n ? j : n - 1, d);
+            m.vertices.push_back({glm::vec3(p, time[j]), glm::vec4(d, 0.5f * (m_below + m_above), 0.0f)});
+        }
+    const auto cap = [&](std::size_t ring, float up) {
+        const auto first = std::uint32_t(m.vertices.size());
+        for (std::size_t k = 0; k < s; ++k)
+            m.vertices.push_back({m.vertices[ring * s + k].pos, glm::vec4(0.0f, 0.0f, 0.0f, up)});
+        for (std::uint32_t k = 1; k + 1 < s; ++k)
+            if (up > 0)
+                m.indices.insert(m.indices.end(), {first, first + k, first + k + 1});
+            else
+                m.indices.insert(m.indices.end(), {first, first + k + 1, first + k});
+    };
+    cap(0, -1.0f);
+    for (std::size_t g = 0; g < n; ++g)
+        for (std::size_t k = 0; k < s; ++k) {
+            const auto b0 = std::uint32_t(g * s + k), b1 = std::uint32_t(g * s + (k + 1) % s);
+            const auto t0 = std::uint32_t(b0 + s), t1 = std::uint32_t(b1 + s);
+            // Outward (counter-clockwise) like the unit cylinder's sides; the last vertex of each
+            // triangle, GL's provoking one, on the group's own bottom ring.
+            m.indices.insert(m.indices.end(), {t1, b0, b1, t1, t0, b0});
+        }
+    cap(n, 1.0f);
+    return m;
 }
 
 std::vector<float> group_values(const std::vector<float>& values, int k, bool least) {

@@ -11,6 +11,7 @@
 // barely wider than the stack's. The vertical extent is exact: a group spans its samples' time slots.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -26,8 +27,10 @@ namespace mobb::render {
 using DiskInstance = glm::vec4;
 
 /// One group's instance data: `base` as a DiskInstance (first disk's centre, start time, group
-/// radius); `shift` = (world dx, world dy) from the base centre to the top centre, 0, and the number
-/// of samples in the group (its height in units of dt).
+/// radius); `shift` = (world dx, world dy) from the base centre to the top centre, 1 when the top cap
+/// lies inside the next group of the same chunk (its radius is at least this one's: the cap is a disk
+/// of this radius on the next group's base centre, within its base disk) else 0, and the number of
+/// samples in the group (its height in units of dt).
 struct DiskGroup {
     glm::vec4 base;
     glm::vec4 shift;
@@ -74,6 +77,33 @@ std::vector<DiskInstance> disk_instances(const Path& path, const Placement& plac
 
 /// Groups of k consecutive disks (the last group may hold fewer), as described above.
 std::vector<DiskGroup> group_disks(const std::vector<DiskInstance>& disks, int k);
+
+/// A stack's groups as one tube: a ring of `segments` vertices at each boundary between groups, the
+/// groups' sides joining consecutive rings, a cap at either end. Ring j lies on group j's base centre
+/// (the last ring on the last group's top centre) at the boundary's time, its radius the larger of
+/// the two groups it joins, so each segment of the tube holds its group's sheared cylinder, hence its
+/// disks. Half the vertices and two thirds of the triangles of the groups drawn as cylinders with caps.
+struct TubeVertex {
+    glm::vec3 pos;  ///< world x, world y, global time
+    /// Radial direction (x, y) and the side's outward slope m: metres per second the surface moves
+    /// along that direction (its normal in space-time is (dir, -m / time_scale)); caps: (0, 0, 0, +-1).
+    glm::vec4 dir;
+};
+struct TubeMesh {
+    std::vector<TubeVertex> vertices;  ///< rings 0..groups, then the two caps' copies of the end rings
+    std::vector<std::uint32_t> indices;  ///< bottom cap, then 6 * segments per group in order, top cap
+    std::size_t groups = 0;
+    int segments = 0;
+    std::size_t cap_indices() const { return std::size_t(3 * (segments - 2)); }
+    /// First index and count of groups [g0, g1), with the caps where the range reaches an end.
+    std::size_t first_index(std::size_t g0) const {
+        return g0 == 0 ? 0 : cap_indices() + 6 * std::size_t(segments) * g0;
+    }
+    std::size_t end_index(std::size_t g1) const {
+        return cap_indices() + 6 * std::size_t(segments) * g1 + (g1 == groups ? cap_indices() : 0);
+    }
+};
+TubeMesh tube_mesh(const std::vector<DiskGroup>& groups, double dt, int segments);
 
 /// The values of groups of k consecutive samples (as group_disks() groups them): each group's mean,
 /// or with `least` its smallest (clearance: a group holding a collision shows it).

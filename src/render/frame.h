@@ -108,6 +108,9 @@ struct Frame {
     double cursor = 0.0;          ///< seconds (global time)
     double window = 0.0;          ///< > 0: only global times within this many seconds of the cursor are drawn
     double skeleton_scale = 0.5;  ///< skeleton height factor on the cursor plane
+    /// Multisampling (4x MSAA) for smooth edges: about 3x the fill work of one sample per pixel under
+    /// llvmpipe (bench/results/render.md). Crowds of more than kMultisampleUpTo disks never get it.
+    bool multisample = true;
     TraceView trace;
     std::vector<PosedSkeleton> posed;  ///< with the skeletons layer: drawn at the cursor, over everything
     std::vector<Prism> prisms;         ///< the ones not on top count in the scene's bounds

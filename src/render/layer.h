@@ -12,6 +12,7 @@ struct DrawContext {
     int width = 1, height = 1;
     const Program* color = nullptr;  ///< color.vert/.frag: lines, triangles, text
     const Program* disk = nullptr;   ///< disk.vert/.frag: instanced cylinders
+    const Program* tube = nullptr;   ///< tube.vert, disk.frag: stacks as tubes (levels of detail)
     Bounds bounds;                   ///< the scene in space-time, for the grid and the cursor plane
     /// GL heights (t * time_scale) kept by the clip planes: the frame's time window for what lies in
     /// space-time (disks, boxes, prisms, the trace), everything for the grid, the cursor and text.

@@ -37,6 +37,12 @@ Bounds scene_bounds(const Frame& frame) {
     return b;
 }
 
+bool multisampled(const Frame& frame) {
+    std::size_t disks = 0;
+    for (const ClipView& clip : frame.clips) disks += clip.tree->path().size();
+    return frame.multisample && disks <= kMultisampleUpTo;
+}
+
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi) {
     const glm::vec3 a = to_gl(bounds.lo.x, bounds.lo.y, bounds.lo.z, time_scale);
     const glm::vec3 b = to_gl(bounds.hi.x, bounds.hi.y, bounds.hi.z, time_scale);
@@ -47,6 +53,7 @@ void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3
 struct Renderer::Layers {
     Program color{"color.vert", "color.frag"};
     Program disk{"disk.vert", "disk.frag"};
+    Program tube{"tube.vert", "disk.frag"};
     GridLayer grid;
     DiskLayer disks;
     BoxLayer boxes;
@@ -69,24 +76,25 @@ void Renderer::draw(const Frame& frame, const Camera& camera, int width, int hei
 void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& viewport) {
     const int width = std::max(viewport.width, 1), height = std::max(viewport.height, 1);
     Layers& l = *layers_;
+    reset_draw_counts();
     if (frame.revision != revision_) {
         l.disks.rebuild(frame);
         bounds_ = scene_bounds(frame);
-        disks_ = 0;
-        for (const ClipView& clip : frame.clips) disks_ += clip.tree->path().size();
         revision_ = frame.revision;
     }
-    // Multisampling costs llvmpipe about 5x in fill: crowds are drawn single-sampled.
-    if (disks_ > kMultisampleUpTo)
-        glDisable(GL_MULTISAMPLE);
-    else
+    // On a multisampled framebuffer (the window's) this still writes every sample: headless targets
+    // are made single-sampled instead (multisampled()).
+    if (multisampled(frame))
         glEnable(GL_MULTISAMPLE);
+    else
+        glDisable(GL_MULTISAMPLE);
     DrawContext ctx;
     ctx.view_proj = camera.projection(float(width) / float(height)) * camera.view();
     ctx.width = width;
     ctx.height = height;
     ctx.color = &l.color;
     ctx.disk = &l.disk;
+    ctx.tube = &l.tube;
     ctx.bounds = bounds_;
     ctx.whole_labels = viewport.whole_labels;
 
@@ -139,6 +147,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     l.text.draw(ctx);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    counts_ = render::draw_counts();
 }
 
 }  // namespace mobb::render

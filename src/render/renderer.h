@@ -6,6 +6,7 @@
 
 #include "camera.h"
 #include "disk_layer.h"
+#include "draw_counts.h"
 #include "frame.h"
 #include "space.h"
 
@@ -16,6 +17,13 @@ Bounds scene_bounds(const Frame& frame);
 
 /// GL-world corners of space-time bounds at a time scale (for Camera::frame).
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi);
+
+/// Scenes of more disks than this are drawn with one sample per pixel whatever Frame::multisample says.
+constexpr std::size_t kMultisampleUpTo = 100000;
+
+/// Whether the frame is drawn multisampled: asked for, and at most kMultisampleUpTo disks. A headless
+/// target is made with 4 samples or 1 by it (one sample: a quarter of the depth and colour writes).
+bool multisampled(const Frame& frame);
 
 /// Where in the framebuffer the scene is drawn, GL pixels from the bottom-left corner (the window's free
 /// rectangle between its panel columns).
@@ -38,14 +46,15 @@ public:
     void draw(const Frame& frame, const Camera& camera, const Viewport& viewport);
     /// What the last draw drew of the disk stacks (instances and level of detail).
     const DiskStats& disk_stats() const;
+    /// Draw calls and vertices of the last draw (panels drawn after it not included).
+    const DrawCounts& draw_counts() const { return counts_; }
 
 private:
     struct Layers;
     std::unique_ptr<Layers> layers_;
     std::uint64_t revision_ = ~std::uint64_t(0);
     Bounds bounds_;
-    std::size_t disks_ = 0;
-    static constexpr std::size_t kMultisampleUpTo = 100000;  ///< disks
+    DrawCounts counts_;
 };
 
 }  // namespace mobb::render

@@ -86,11 +86,14 @@ void draw_with_ui(State& state, render::Renderer& renderer, const HeadlessOption
     ImGui::DestroyContext();
 }
 
+/// 4 samples per pixel, or 1 when the frame is not multisampled (a quarter of the fill's memory work).
+int target_samples(const render::Frame& frame) { return render::multisampled(frame) ? 4 : 0; }
+
 }  // namespace
 
 render::Image render_headless(State& state, const HeadlessOptions& options) {
     render::OsMesaContext context(options.width, options.height);
-    render::Target target(options.width, options.height);
+    render::Target target(options.width, options.height, target_samples(frame_of(state)));
     render::Renderer renderer;
     target.bind();
     if (options.ui)
@@ -100,12 +103,12 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
     return target.read();
 }
 
-double bench_headless(State& state, int width, int height, int frames, render::DiskStats* disks) {
+BenchResult bench_headless(State& state, int width, int height, int frames) {
     render::OsMesaContext context(width, height);
-    render::Target target(width, height);
+    const render::Frame frame = frame_of(state);
+    render::Target target(width, height, target_samples(frame));
     render::Renderer renderer;
     target.bind();
-    const render::Frame frame = frame_of(state);
     render::Camera camera = state.camera;
     for (int k = 0; k < 2; ++k) renderer.draw(frame, camera, width, height);  // uploads, shader compiles
     glFinish();
@@ -116,8 +119,7 @@ double bench_headless(State& state, int width, int height, int frames, render::D
         glFinish();
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (disks) *disks = renderer.disk_stats();
-    return double(frames) / seconds;
+    return {double(frames) / seconds, renderer.disk_stats(), renderer.draw_counts()};
 }
 
 }  // namespace mobb::viewer

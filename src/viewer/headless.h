@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "disk_layer.h"
+#include "draw_counts.h"
 #include "image.h"
 #include "panels.h"
 #include "state.h"
@@ -25,7 +26,14 @@ struct HeadlessOptions {
 /// Renders the state into an image. Throws std::runtime_error when no context can be made.
 render::Image render_headless(State& state, const HeadlessOptions& options);
 
+/// What bench_headless measured: frames per second, and what the last frame drew.
+struct BenchResult {
+    double fps = 0;
+    render::DiskStats disks;
+    render::DrawCounts draws;
+};
+
 /// Frames per second of the state's scene at width x height (a few warm-up frames, then `frames`).
-double bench_headless(State& state, int width, int height, int frames, render::DiskStats* disks = nullptr);
+BenchResult bench_headless(State& state, int width, int height, int frames);
 
 }  // namespace mobb::viewer

@@ -1,4 +1,5 @@
-// The main menu bar: File (open, save) and View (every panel, the columns, the Shortcuts window). Its
+// The main menu bar: File (open, save) and View (every panel, the columns, smooth edges, the Shortcuts
+// window). Its
 // height is kept in ui.menu_height so the panels open below it.
 #include <imgui.h>
 
@@ -27,6 +28,8 @@ void main_menu(State& s, Ui& ui) {
         if (ImGui::MenuItem("Bottom strip", nullptr, !ui.columns.bottom_collapsed)) toggle_column(ui, Column::Bottom);
         if (ImGui::MenuItem("All columns", "Tab")) toggle_columns(ui);
         ImGui::Separator();
+        // One sample per pixel: under llvmpipe about 3x less fill work, at the price of jagged edges.
+        ImGui::MenuItem("Smooth edges (MSAA)", nullptr, &s.scene.multisample);
         ImGui::MenuItem("Shortcuts", "F1", &ui.show_help);
         ImGui::EndMenu();
     }

@@ -224,9 +224,10 @@ Scene parse_scene(const json& j, const std::string& file) {
     s.skeleton_scale = r.positive("skeleton_scale", s.skeleton_scale);
     if (r.has("camera")) s.camera = camera_of(j.at("camera"), r.at("camera"), s.time_scale);
     if (r.has("image")) {
-        const Reader im(j.at("image"), r.at("image"), {"width", "height"});
+        const Reader im(j.at("image"), r.at("image"), {"width", "height", "multisample"});
         s.width = im.integer("width", s.width, 16, 8192);
         s.height = im.integer("height", s.height, 16, 8192);
+        s.multisample = im.boolean("multisample", s.multisample);
     }
     const int clips = int(s.clips.size()) + s.generate.count;
     if (s.query_a >= clips || s.query_b >= clips) Reader::fail(r.at("query"), "clip index out of range");
@@ -293,6 +294,7 @@ json scene_json(const Scene& s) {
               {"time", {{"scale", s.time_scale}, {"cursor", s.cursor}, {"window", s.window}}},
               {"skeleton_scale", s.skeleton_scale},
               {"image", {{"width", s.width}, {"height", s.height}}}};
+    if (!s.multisample) j["image"]["multisample"] = false;
     if (s.generate.count > 0)
         j["generate"] = {{"random_walks", s.generate.count},
                          {"seconds", s.generate.walk.seconds},

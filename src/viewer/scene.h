@@ -50,6 +50,7 @@ struct Scene {
     double skeleton_scale = 0.5;
     std::optional<render::Camera> camera;  ///< absent: frame everything; target in space-time (x, y, t)
     int width = 960, height = 540;
+    bool multisample = true;  ///< render::Frame::multisample; saved under "image" only when off
 };
 
 /// Parses a scene. Throws ViewerError with one line "FILE: KEY.PATH: message" (or the JSON

@@ -147,6 +147,7 @@ render::Frame frame_of(const State& s) {
     f.cursor = s.scene.cursor;
     f.window = s.scene.window;
     f.skeleton_scale = s.scene.skeleton_scale;
+    f.multisample = s.scene.multisample;
     f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
     if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);

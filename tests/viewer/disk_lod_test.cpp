@@ -99,6 +99,11 @@ TEST(DiskLod, GroupsHoldTheirDisks) {
                 // Consecutive groups meet centre to centre: no gaps in the stack.
                 EXPECT_NEAR(G.base.x + G.shift.x, groups[g + 1].base.x, 1e-5);
                 EXPECT_NEAR(G.base.y + G.shift.y, groups[g + 1].base.y, 1e-5);
+                // The top cap is marked hidden exactly when the next group of the same chunk holds it.
+                const bool chunk_end = (g + 1) * std::size_t(k) % std::size_t(render::kDiskChunk) == 0;
+                EXPECT_EQ(G.shift.z, !chunk_end && groups[g + 1].base.w >= G.base.w ? 1.0f : 0.0f) << k << " " << g;
+            } else {
+                EXPECT_EQ(G.shift.z, 0.0f);  // the stack's top is always closed
             }
             for (std::size_t u = 0; u < m; ++u) {
                 const render::DiskInstance& d = disks[i + u];
@@ -110,6 +115,59 @@ TEST(DiskLod, GroupsHoldTheirDisks) {
             i += m;
         }
         EXPECT_EQ(i, disks.size());
+    }
+}
+
+/// A stack's groups as one tube: its vertex and index counts follow the formula (a ring per group
+/// boundary, two triangles per segment and group, two capped ends), each ring holds the disks of the
+/// groups it joins (so every segment holds its group's sheared cylinder), and every triangle faces out.
+TEST(DiskLod, TubeHoldsItsGroups) {
+    Path path;
+    path.dt = 1.0 / 30.0;
+    double x = 0, y = 0, heading = 0;
+    for (int i = 0; i < 700; ++i) {
+        heading += 0.04 * std::sin(0.011 * i * i);
+        x += 0.04 * std::cos(heading);
+        y += 0.04 * std::sin(heading);
+        path.samples.push_back({x, y, 0.3 + 0.1 * std::sin(0.07 * i)});
+    }
+    const std::vector<render::DiskInstance> disks = render::disk_instances(path, {2.0, 1.0, 0.3, 1.5});
+    const int s = 8;
+    for (int k : {2, 16, 64}) {
+        const std::vector<render::DiskGroup> groups = render::group_disks(disks, k);
+        const render::TubeMesh m = render::tube_mesh(groups, path.dt, s);
+        const std::size_t n = groups.size();
+        ASSERT_EQ(m.vertices.size(), (n + 1) * s + 2 * s) << k;
+        ASSERT_EQ(m.indices.size(), 6 * s * n + 2 * 3 * (s - 2)) << k;
+        EXPECT_EQ(m.first_index(0), 0u);
+        EXPECT_EQ(m.end_index(n), m.indices.size());
+        EXPECT_EQ(m.end_index(n - 1) - m.first_index(1), 6 * s * (n - 2));  // a middle range: sides only
+        const auto axis = [&](std::size_t g, double u) {  // the centre of group g's cylinder, u in [0, 1]
+            const render::DiskGroup& G = groups[g];
+            return glm::dvec2(G.base.x + u * G.shift.x, G.base.y + u * G.shift.y);
+        };
+        for (std::size_t g = 0; g < n; ++g)
+            for (int q = 0; q < s; ++q)
+                for (const auto& [ring, u] : {std::pair{g, 0.0}, std::pair{g + 1, 1.0}}) {
+                    const glm::vec3 v = m.vertices[ring * s + std::size_t(q)].pos;
+                    EXPECT_NEAR(v.z, groups[g].base.z + u * path.dt * groups[g].shift.w, 1e-4);
+                    const double d = glm::length(glm::dvec2(v.x, v.y) - axis(g, u));
+                    EXPECT_GE(d, double(groups[g].base.w) - 1e-5) << k << " " << g;
+                }
+        for (std::size_t i = 0; i < m.indices.size(); i += 3) {
+            const glm::dvec3 a(m.vertices[m.indices[i]].pos), b(m.vertices[m.indices[i + 1]].pos),
+                c(m.vertices[m.indices[i + 2]].pos);
+            const glm::dvec3 normal = glm::cross(b - a, c - a), mid = (a + b + c) / 3.0;
+            if (i < m.cap_indices()) {
+                EXPECT_LT(normal.z, 0.0);  // the bottom cap faces down in time
+            } else if (i >= m.indices.size() - m.cap_indices()) {
+                EXPECT_GT(normal.z, 0.0);
+            } else {
+                const std::size_t g = (i - m.cap_indices()) / (6 * s);
+                const double u = (mid.z - groups[g].base.z) / (path.dt * groups[g].shift.w);
+                EXPECT_GT(glm::dot(glm::dvec2(normal), glm::dvec2(mid) - axis(g, u)), 0.0) << k << " " << i;
+            }
+        }
     }
 }
 

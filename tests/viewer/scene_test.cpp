@@ -65,6 +65,7 @@ TEST(Scene, RoundTrip) {
     a.layers.level = 3;
     a.cursor = 1.25;
     a.window = 0.75;
+    a.multisample = false;
     const std::string file = std::string(MOBB_TEST_OUT) + "/round_trip.json";
     std::filesystem::create_directories(MOBB_TEST_OUT);
     viewer::save_scene(a, file);
@@ -72,6 +73,8 @@ TEST(Scene, RoundTrip) {
     EXPECT_EQ(viewer::scene_json(a).dump(), viewer::scene_json(b).dump());
     EXPECT_EQ(b.layers.level, 3);
     EXPECT_EQ(b.window, 0.75);
+    EXPECT_FALSE(b.multisample);
+    EXPECT_TRUE(viewer::load_scene(test_scene("walks.json")).multisample);  // on unless a scene says off
     EXPECT_EQ(b.clips.size(), 2u);
     EXPECT_NEAR(b.clips[1].place.t0, 0.5, 1e-12);
 }
