@@ -55,11 +55,7 @@ void run_export(const ExportArgs& a, std::ostream& out) {
     o.world = !a.no_world;
     const bool bvh = a.format == "bvh";
     const crowd::Record record = crowd::load_record(a.record);
-    std::string graph_file = a.graph.empty() ? record.graph : a.graph;
-    // Records name the committed graph relative to the repository: found from anywhere, as mobb crowd does.
-    if (a.graph.empty() && !std::filesystem::exists(graph_file) &&
-        std::filesystem::path(graph_file).lexically_normal() == "assets/graphs/cmu_locomotion.json")
-        graph_file = crowd::default_graph_file();
+    const std::string graph_file = a.graph.empty() ? crowd::record_graph_file(record) : a.graph;
     auto graph = std::make_shared<crowd::MotionGraph>(crowd::load_graph(graph_file));
     const auto t_start = std::chrono::steady_clock::now();
     crowd::PoseBlend blend;

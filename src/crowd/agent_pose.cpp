@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -52,6 +53,13 @@ std::int64_t last_frame(const Record& r, const MotionGraph& g, int agent) {
 }
 
 }  // namespace
+
+std::string record_graph_file(const Record& r) {
+    if (!std::filesystem::exists(r.graph) &&
+        std::filesystem::path(r.graph).lexically_normal() == "assets/graphs/cmu_locomotion.json")
+        return default_graph_file();
+    return r.graph;
+}
 
 Placement source_to_world(const PoseSource& s, const GraphClip& clip, const Placement& place) {
     const std::size_t i = std::size_t(clip.first);

@@ -17,6 +17,10 @@
 
 namespace mobb::crowd {
 
+/// The graph file a record names (Record::graph), or the committed graph (default_graph_file) when the
+/// record names it relative to the repository and the working directory is elsewhere.
+std::string record_graph_file(const Record& record);
+
 /// One graph source as the poses need it: the animation, per sample the root and heading the graph used
 /// to localise clips (pose_track), and the lowest joint height over the take (the skeleton's feet).
 struct PoseSource {
