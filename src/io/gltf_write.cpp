@@ -202,13 +202,19 @@ void add_skeleton(ModelBuilder& out, const ExportScene& scene, const ExportSkele
     auto local = [&](int f, std::size_t j) {
         return parents[j] < 0 ? world(f, j) : world(f, j) - world(f, std::size_t(parents[j]));
     };
+    // An armature node per skeleton (no transform) holds its joints: importers (Blender's) make one
+    // armature of each, where joints under the scene root alone would share one.
+    tinygltf::Node arma;
+    arma.name = sk.name;
+    const int arma_id = out.node(std::move(arma), true);
     const int first = int(out.model().nodes.size());
+    out.model().nodes[std::size_t(arma_id)].children.push_back(first);
     for (std::size_t j = 0; j < joints; ++j) {
         tinygltf::Node n;
         n.name = sk.name + " " + scene.rig.names[j];
         const glm::vec3 t = local(0, j);
         n.translation = {t.x, t.y, t.z};
-        out.node(std::move(n), j == 0);
+        out.node(std::move(n), false);
     }
     for (std::size_t j = 1; j < joints; ++j)
         out.model().nodes[std::size_t(first + parents[j])].children.push_back(first + int(j));

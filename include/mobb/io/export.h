@@ -51,8 +51,9 @@ struct ExportScene {
     bool bodies = false;  ///< a capsule per bone, skinned to the bone's two joints
 };
 
-/// glTF 2.0, Y up, metres: ground (x, y, h) is glTF (x, h, -y). One node hierarchy and one skin per
-/// skeleton (skin K is skeletons[K], its joint 0 the rig's joint 0), one animation ("crowd") with a LINEAR
+/// glTF 2.0, Y up, metres: ground (x, y, h) is glTF (x, h, -y). Per skeleton an armature node (its name,
+/// no transform) holding the joints' node hierarchy, and one skin (skin K is skeletons[K], its joint 0 the
+/// rig's joint 0), one animation ("crowd") with a LINEAR
 /// translation channel per joint, frame f at time start + f dt; shapes as meshes; with `bodies` one skinned
 /// mesh per skeleton. Binary (.glb) or text with the buffer embedded (.gltf), by extension. Written to a
 /// temporary file renamed into place. Returns the file's size in bytes. Throws ExportError.
