@@ -1,5 +1,5 @@
 // Skeletons of a recorded crowd at the time cursor: the agents' poses come from the library's one home
-// for them (mobb/crowd/agent_pose.h: sources, localisation, placement); this draws the frame at the cursor.
+// for them (mobb/crowd/agent_pose.h: sources, placement, blending at clip starts), as the export's and Python's.
 #pragma once
 #include <memory>
 #include <string>
@@ -15,9 +15,12 @@ namespace mobb::viewer {
 using crowd::PoseSource;
 using crowd::PoseSources;
 
-/// The skeleton of every agent at time t (agents whose source failed are left out), coloured per agent.
-std::vector<render::PosedSkeleton> crowd_skeletons(const crowd::Record& record, const crowd::MotionGraph& graph,
-                                                   PoseSources& sources, double t,
+/// The bones drawn: the rig's, less those to joint 0 (the root's ground point, not a point of the body).
+std::vector<int> drawn_bones(const crowd::Rig& rig);
+
+/// The skeleton of every agent at time t: its blended pose at the record frame the cursor is in (the
+/// disk drawn there) with `bones` (drawn_bones, kept by the caller), coloured per agent.
+std::vector<render::PosedSkeleton> crowd_skeletons(crowd::CrowdPoser& poser, const std::vector<int>& bones, double t,
                                                    const std::vector<glm::vec3>& agent_colors);
 
 }  // namespace mobb::viewer
