@@ -1,4 +1,5 @@
 // BVH writer of one animated skeleton (mobb/io/export.h): position channels on every joint.
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,9 +19,9 @@ std::string bvh_name(std::string name) {
 }
 
 void append(std::string& out, double v) {
-    char buf[32];
-    const int n = std::snprintf(buf, sizeof buf, "%.6f", v);
-    out.append(buf, std::size_t(n));
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 6);  // micrometres
+    out.append(buf, r.ptr);
 }
 
 }  // namespace
