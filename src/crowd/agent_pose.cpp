@@ -153,8 +153,7 @@ CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> source
     rig_ = crowd_rig(*sources_, joints);
 }
 
-bool CrowdPoser::raw(int agent, std::int64_t frame, const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out) {
-    (void)agent, (void)frame;
+bool CrowdPoser::raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out) {
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const PoseSource& src = loaded(*sources_, gc.source);
     if (sample < 0 || sample >= src.clip->animation.frames()) return false;
@@ -176,7 +175,7 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) {
     if (last < 0) return false;
     k = std::min(k, last);
     AgentClipAt at;
-    if (!agent_clip_at(record_, g, agent, k, at) || !raw(agent, k, at, at.sample, out)) return false;
+    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, out)) return false;
     const AgentTrack& track = record_.tracks[std::size_t(agent)];
     if (!(blend_.window > 0)) return true;
     const double window = blend_.window / record_.dt;  // frames
@@ -187,8 +186,8 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) {
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const AgentClipAt from{&prev, at.index - 1, gp.exit};
         // Only clips played back to back blend (the previous one ran to its exit).
-        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(agent, k, from, gp.exit, a_) &&
-            raw(agent, k, at, gc.first, b_)) {
+        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, a_) &&
+            raw(at, gc.first, b_)) {
             const double s = i / window, w = 1.0 - s * s * (3.0 - 2.0 * s);
             // Offsets in the ground relative to the root, heights as they are (the root is on the floor).
             for (std::size_t j = 1; j < out.size(); ++j) out[j] += w * ((a_[j] - a_[0]) - (b_[j] - b_[0]));

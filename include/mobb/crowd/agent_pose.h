@@ -112,7 +112,8 @@ public:
     bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
 
 private:
-    bool raw(int agent, std::int64_t frame, const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
+    /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor).
+    bool raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
     void keep_inside(const AgentTrack& track, std::int64_t frame, std::vector<glm::dvec3>& out) const;
 
     const Record& record_;
