@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     add_crowd_commands(app, exit_code);
     add_scenario_commands(app, exit_code);
     add_bench_commands(app, exit_code);
+    add_export_commands(app, exit_code);
 #ifdef MOBB_WITH_VIEWER
     add_view_commands(app, exit_code);
 #endif

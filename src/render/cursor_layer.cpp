@@ -38,7 +38,9 @@ void CursorLayer::draw_posed(const Frame& frame, const DrawContext& ctx) {
     if (!frame.layers.skeletons || frame.posed.empty()) return;
     posed_.clear();
     for (const PosedSkeleton& p : frame.posed)
-        if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
+        if (!p.joints.empty() && p.parents && p.parents->size() == p.joints.size())
+            joints(posed_, p, frame);
+        else if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
             skeleton(posed_, *p.animation, p.up, p.frame, Rigid2::of(p.place), p.floor, frame, p.color);
     ctx.use(*ctx.color);
     glLineWidth(2.0f);
@@ -58,6 +60,17 @@ void CursorLayer::skeleton(Batch& out, const io::Animation& anim, io::UpAxis up,
     };
     for (int j = 0; j < skel.size(); ++j)
         if (skel.parents[std::size_t(j)] >= 0) out.line(joint(skel.parents[std::size_t(j)]), joint(j), rgba);
+}
+
+void CursorLayer::joints(Batch& out, const PosedSkeleton& p, const Frame& frame) {
+    const double base = frame.cursor * frame.time_scale;
+    const glm::vec4 rgba(p.color * 0.55f, 1.0f);
+    auto at = [&](std::size_t j) {
+        const glm::dvec3& g = p.joints[j];
+        return glm::vec3(float(g.x), float(base + g.z * frame.skeleton_scale), float(-g.y));
+    };
+    for (std::size_t j = 0; j < p.joints.size(); ++j)
+        if ((*p.parents)[j] >= 0) out.line(at(std::size_t((*p.parents)[j])), at(j), rgba);
 }
 
 void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucent_pass, TextLayer& text) {

@@ -25,6 +25,7 @@ public:
 private:
     void skeletons(const Frame& frame);
     /// Lines of frame f of `anim`: ground coordinates moved by m, height above `floor` on the plane.
+    void joints(Batch& out, const PosedSkeleton& pose, const Frame& frame);
     void skeleton(Batch& out, const io::Animation& anim, io::UpAxis up, int f, const Rigid2& m, double floor,
                   const Frame& frame, const glm::vec3& color);
 

@@ -74,8 +74,12 @@ struct Layers {
 /// A skeleton posed by the caller rather than played from a clip (a crowd agent: the viewer picks the
 /// source and frame at the cursor): frame `frame` of `animation`, its ground coordinates moved by
 /// `place` (x, y, theta; t0 unused), standing on the cursor plane on height `floor` (its lowest joint).
+/// Or, with `joints` set, a pose given joint by joint (a crowd agent's blended pose: ground x, y and the
+/// height above its floor, metres, already placed; drawn with bones to `parents`, -1 for none).
 struct PosedSkeleton {
     const io::Animation* animation = nullptr;
+    std::vector<glm::dvec3> joints;
+    const std::vector<int>* parents = nullptr;
     io::UpAxis up = io::UpAxis::Y;
     int frame = 0;
     Placement place;

@@ -217,12 +217,21 @@ bool same_rate(const CrowdView& v) { return v.graph && std::abs(v.record.dt - v.
 std::string skeleton_problem(const CrowdView& v) {
     if (!v.graph) return "no graph: " + v.graph_error;
     if (!same_rate(v)) return "the record's dt differs from its graph's (" + v.record.graph + ")";
+    if (!v.pose_error.empty()) return v.pose_error;
     return v.poses ? v.poses->error() : std::string();
 }
 
 std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const std::vector<glm::vec3>& colors) {
     if (!v.graph || !v.poses || !same_rate(v)) return {};
-    return crowd_skeletons(v.record, *v.graph, *v.poses, t, colors);
+    if (!v.poser && v.pose_error.empty()) {
+        try {
+            v.poser = std::make_shared<crowd::CrowdPoser>(v.record, v.poses);
+            v.bones = drawn_bones(v.poser->rig());
+        } catch (const std::exception& e) {
+            v.pose_error = e.what();
+        }
+    }
+    return v.poser ? crowd_skeletons(*v.poser, v.bones, t, colors) : std::vector<render::PosedSkeleton>{};
 }
 
 void update_crowd_playback(State& s, double seconds) {

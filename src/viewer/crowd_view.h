@@ -27,6 +27,9 @@ struct CrowdView {
     std::shared_ptr<crowd::MotionGraph> graph;  ///< null when the record's graph cannot be read
     std::string graph_error;
     std::shared_ptr<PoseSources> poses;            ///< the graph's mocap sources for the skeletons (null without graph)
+    std::shared_ptr<crowd::CrowdPoser> poser;      ///< the agents' poses, made on the first skeleton drawn
+    std::string pose_error;                        ///< why the poser could not be made (a source failed)
+    std::vector<int> bones;                        ///< drawn_bones of the poser's rig
     int agents = 0;                                ///< clips 0..agents-1 of the state are the agents
     int agent = 0;                                 ///< agent whose choice points the panel lists
     int choice = -1;                               ///< index into record.choices, -1 for none
@@ -62,10 +65,11 @@ void select_choice(State& state, int agent, int choice);
 /// gives the answer and the recorded one.
 bool open_candidate_query(State& state, int k, int j, std::string* message = nullptr);
 
-/// Why skeletons are missing ("" when every source needed so far loaded): no graph, or a source failed.
+/// Why skeletons are missing ("" when none is): no graph, or a source failed.
 std::string skeleton_problem(const CrowdView& view);
 
-/// Every agent's skeleton at time t (loads the sources it needs on first use), coloured like its disks.
+/// Every agent's skeleton at time t (loads every source of the graph on first use: the poses' joints are
+/// those all sources share), coloured like its disks.
 std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& view, double t, const std::vector<glm::vec3>& colors);
 
 /// What the 3D view draws besides the agents: the world's walls, the obstacles (filled), each goal as a
