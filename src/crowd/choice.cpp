@@ -27,7 +27,7 @@ SpaceTimeBox solid_box(const CrowdState& s, const Piece& p) {
 // A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
 // f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap. Blocks
 // of samples whose circle stays a millimetre clear of the disk are skipped (the exact test decides).
-bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const PlannedClip& c, const Hold& h,
+bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const BoxedClip& c, const Hold& h,
                      QueryStats* stats) {
     const Path& path = g.clips[std::size_t(c.clip)].path;
     const Rigid2& m = c.m;
@@ -194,7 +194,7 @@ PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t fr
 
 bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats) {
     if (mine.kind == Piece::Clip && other.kind == Piece::Clip) {
-        const PlannedClip &a = mine.clip, &b = other.clip;
+        const BoxedClip &a = mine.clip, &b = other.clip;
         return s.narrow(a.clip, a.place, a.m, b.clip, b.place, b.m, stats);
     }
     if (mine.kind == Piece::Clip)
@@ -215,7 +215,7 @@ bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
     const Polygon& solid = s.solids[std::size_t(k)];
     // Held ground keeps room to turn on the spot from the walls, so a stop is never a trap.
     if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.escapes.wall_clearance);
-    const PlannedClip& c = mine.clip;
+    const BoxedClip& c = mine.clip;
     return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.m, solid);
 }
 
@@ -247,7 +247,7 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.waited, false, {}, {}};
+    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, {}, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
@@ -290,7 +290,7 @@ const PlacedCandidate& Choice::place(const CrowdState& s, int k) {
     return placed_[std::size_t(k)];
 }
 
-PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame) {
+BoxedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame) {
     const std::int64_t frames = std::int64_t(s.graph.clips[std::size_t(clip)].path.size());
     return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box, m};
 }
@@ -387,7 +387,7 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
     return free;
 }
 
-Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route) {
+Plan plan_along(const CrowdState& s, const BoxedClip& c, const std::vector<int>& route) {
     Plan plan;
     build_plan(s, c, route, plan, [](const Piece&) { return true; });
     return plan;
@@ -396,7 +396,7 @@ Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int
 // Whether candidate k's plan along `route` is free of the others (its clip was tested already), tested
 // piece by piece as it is built. When an escape clip is not, `refused` is the route's prefix that
 // placed it (its length; 0 otherwise).
-bool Choice::route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
+bool Choice::route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
                         std::size_t& refused) {
     refused = 0;
     return build_plan(s, c, route, plan, [&](const Piece& piece) {
@@ -549,7 +549,7 @@ bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vect
 void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
     out.push_back(taken_.box);
     const auto add = [&](const Plan& p) {
-        for (const PlannedClip& c : p.escape) out.push_back(c.box);
+        for (const BoxedClip& c : p.escape) out.push_back(c.box);
         if (p.hold) out.push_back(hold_box(*p.hold));
     };
     add(plan_);

@@ -64,7 +64,7 @@ struct Hold {
 
 /// A graph clip at its place in the world, from global frame `frame` on, with its box (place_clip) and
 /// its rotation m = Rigid2::of(place), computed once for every query it takes part in.
-struct PlannedClip {
+struct BoxedClip {
     int clip = 0;
     Placement place;
     std::int64_t frame = 0;
@@ -74,7 +74,7 @@ struct PlannedClip {
 
 /// What an agent reserves beyond the clip it plays: the clips that would stop it, then the held ground.
 struct Plan {
-    std::vector<PlannedClip> escape;
+    std::vector<BoxedClip> escape;
     std::optional<Hold> hold;
 };
 
@@ -86,7 +86,7 @@ struct Piece {
     int commit = 0;        ///< the choice point (record order) whose plan holds it
     int index = 0;         ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
     std::int64_t seq = 0;  ///< pieces placed before it have smaller ones (broad-phase ids are reused)
-    PlannedClip clip;      ///< Clip
+    BoxedClip clip;      ///< Clip
     Hold hold;             ///< Held
 };
 
@@ -106,7 +106,7 @@ struct Agent {
     Plan plan;                      ///< reserved beyond its last clip
     std::vector<int> reserved;      ///< broad-phase ids of the plan's pieces
     bool arrived = false;           ///< reached its goal: stays for good
-    int waited = 0;                 ///< choice points in a row it followed its escape
+    int stalled = 0;                ///< choice points in a row it followed its escape or stayed in place
     std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
     LearnedCost learned;            ///< what its look-aheads learned of the time to go (look_ahead.h)
     std::int64_t heading_since = 0;  ///< the frame it set off for the goal it heads for (its priority)
@@ -178,7 +178,7 @@ public:
     int agent() const { return agent_; }
     Outcome outcome() const { return outcome_; }
     /// The clip taken and what is reserved beyond it.
-    const PlannedClip& taken() const { return taken_; }
+    const BoxedClip& taken() const { return taken_; }
     const Plan& plan() const { return plan_; }
     /// The other agents' plans that gave way (Outcome::RightOfWay).
     const std::vector<Reroute>& reroutes() const { return reroutes_; }
@@ -223,13 +223,13 @@ private:
     bool free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits);
     std::uint32_t crowded_routes(const CrowdState& s, int k);
     bool may_yield(const CrowdState& s, const Piece& other) const;
-    bool route_free(const CrowdState& s, int k, const PlannedClip& c, const std::vector<int>& route, Plan& plan,
+    bool route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
     bool has_right_of_way(const CrowdState& s) const;
     bool passes_waiting(const CrowdState& s, int k);
     void take_deferred();
     bool take_right_of_way(const CrowdState& s, int end);
-    bool reroute_yielding(const CrowdState& s, const PlannedClip& c);
+    bool reroute_yielding(const CrowdState& s, const BoxedClip& c);
     bool reroute(const CrowdState& s, int owner);
     bool free_for_reroute(const CrowdState& s, const Piece& piece);
     void evaluate_random(const CrowdState& s);
@@ -268,7 +268,7 @@ private:
     std::uint64_t near_total_ = 0, root_rejected_ = 0;
     int last_hit_ = -1;  // broad-phase id of the other agent's piece that refused the last piece
     Outcome outcome_ = Outcome::Candidate;
-    PlannedClip taken_;
+    BoxedClip taken_;
     Plan plan_;
     std::vector<int> yielding_;  // right of way: owners of the reservations the plan being tried meets
     std::vector<int> excluded_;  // right of way: broad-phase ids released if it is taken (theirs and its own)
@@ -279,17 +279,17 @@ private:
 };
 
 /// Graph clip `clip` placed at `p` (rotation m) from frame `frame` on, with its box.
-PlannedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame);
+BoxedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame);
 
 /// The plan of clip `c` along an escape route (EscapeTable::routes): its stopping clips chained after it
 /// on the frame grid, and the held ground where the route's clip in place starts.
-Plan plan_along(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route);
+Plan plan_along(const CrowdState& s, const BoxedClip& c, const std::vector<int>& route);
 
 // The plan of clip `c` along an escape route, built piece by piece: its stopping clips chained after it
 // on the frame grid, then the held ground where the route's idle clip starts. Each piece goes to
 // `accept` as it is placed, and the plan stops at the first it refuses; returns whether none was.
 template <class Accept>
-bool build_plan(const CrowdState& s, const PlannedClip& c, const std::vector<int>& route, Plan& plan, Accept&& accept) {
+bool build_plan(const CrowdState& s, const BoxedClip& c, const std::vector<int>& route, Plan& plan, Accept&& accept) {
     // (The route's first i + 1 clips place its i-th piece: a refused escape clip refuses every route
     // sharing that prefix, which the caller skips.)
     const MotionGraph& g = s.graph;

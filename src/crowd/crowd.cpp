@@ -136,7 +136,7 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
     static const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback", "right of way"};
     cp.outcome = kOutcomes[int(c.outcome())];
     cp.escape.clear();
-    for (const PlannedClip& e : c.plan().escape) cp.escape.push_back({e.clip, e.frame, e.place});
+    for (const BoxedClip& e : c.plan().escape) cp.escape.push_back({e.clip, e.frame, e.place});
     cp.intended.clear();
     for (const SearchStep& e : c.intended()) cp.intended.push_back({e.clip, e.frame, e.place});
     cp.holds = c.plan().hold.has_value();
@@ -150,7 +150,7 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
         MOBB_ASSERT(r.plan.hold);  // a reroute is a way to stop: it ends on held ground
         ReroutedPlan& out = cp.reroutes.emplace_back();
         out.agent = r.agent;
-        for (const PlannedClip& e : r.plan.escape) out.escape.push_back({e.clip, e.frame, e.place});
+        for (const BoxedClip& e : r.plan.escape) out.escape.push_back({e.clip, e.frame, e.place});
         out.hold = {r.plan.hold->x, r.plan.hold->y, r.plan.hold->r};
         out.hold_frame = r.plan.hold->frame;
     }
@@ -252,7 +252,7 @@ void Simulation::commit(Choice& c) {
     if (o_.log_queries) log_queries(c);
     const int commit = int(out_.record.choices.size());
     Agent& a = agents_[std::size_t(c.agent())];
-    const PlannedClip& t = c.taken();
+    const BoxedClip& t = c.taken();
     a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, commit});
     Piece clip;
     clip.agent = c.agent();
@@ -269,7 +269,7 @@ void Simulation::commit(Choice& c) {
     // Waiting: following its escape, or choosing to stay in place (the random mode has no escapes).
     const bool avoids = policy_->avoids();
     const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
-    a.waited = c.outcome() == Outcome::Escape || stays ? a.waited + 1 : 0;
+    a.stalled = c.outcome() == Outcome::Escape || stays ? a.stalled + 1 : 0;
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
     if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     note_waiting(c.agent(), end);

@@ -56,7 +56,7 @@ public:
 
     // A stuck agent (CrowdTuning::goal_patience) and one at its goal order their candidates alone.
     int horizon(const ChoiceSite& site) const override {
-        return site.goal && !site.arrived && site.waited < tuning_.goal_patience ? tuning_.goal_horizon : 0;
+        return site.goal && !site.arrived && site.stalled < tuning_.goal_patience ? tuning_.goal_horizon : 0;
     }
 
     double to_go(const ChoiceSite& site, const Placement& end) const override {
@@ -125,7 +125,7 @@ private:
     // that way.
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.waited >= tuning_.goal_patience && site.make_way.empty()) return idle;
+        if (site.stalled >= tuning_.goal_patience && site.make_way.empty()) return idle;
         const Placement end = graph_.next(site.base, m, c);
         return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);
     }

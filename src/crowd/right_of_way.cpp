@@ -60,7 +60,7 @@ bool Choice::take_right_of_way(const CrowdState& s, int end) {
 
 // Another way to stop for every owner in yielding_, each free of the new plan (clip c and plan_), of the
 // reroutes found before it and of everything else but what the taking would release.
-bool Choice::reroute_yielding(const CrowdState& s, const PlannedClip& c) {
+bool Choice::reroute_yielding(const CrowdState& s, const BoxedClip& c) {
     excluded_.clear();
     excluded_.insert(excluded_.end(), s.agents[std::size_t(agent_)].reserved.begin(),
                      s.agents[std::size_t(agent_)].reserved.end());
@@ -73,7 +73,7 @@ bool Choice::reroute_yielding(const CrowdState& s, const PlannedClip& c) {
     p.agent = agent_;
     p.clip = c;
     extra_.push_back(p);
-    for (const PlannedClip& e : plan_.escape) {
+    for (const BoxedClip& e : plan_.escape) {
         p.clip = e;
         extra_.push_back(p);
     }
@@ -93,7 +93,7 @@ bool Choice::reroute_yielding(const CrowdState& s, const PlannedClip& c) {
 bool Choice::reroute(const CrowdState& s, int owner) {
     const Agent& a = s.agents[std::size_t(owner)];
     const PlacedClip& playing = a.clips.back();
-    const PlannedClip c = frame_clip(s, playing.clip, playing.place, Rigid2::of(playing.place), playing.start);
+    const BoxedClip c = frame_clip(s, playing.clip, playing.place, Rigid2::of(playing.place), playing.start);
     Plan plan;
     for (const std::vector<int>& route : s.escapes.routes[std::size_t(playing.clip)]) {
         const bool free = build_plan(s, c, route, plan, [&](Piece piece) {
@@ -106,7 +106,7 @@ bool Choice::reroute(const CrowdState& s, int owner) {
             const Piece& old = s.pieces[std::size_t(id)];
             r.released.push_back(box_of(old));
         }
-        for (const PlannedClip& e : plan.escape) {
+        for (const BoxedClip& e : plan.escape) {
             Piece p;
             p.agent = owner;
             p.clip = e;

@@ -32,7 +32,7 @@ struct ChoiceSite {
     Placement base;                             ///< where the next clip starts (t0: its start time)
     std::optional<std::array<double, 2>> goal;  ///< metres: the goal it heads for now
     bool stops = false;                         ///< it stands at that goal for good (its last; it stays)
-    int waited = 0;                             ///< choice points in a row it could not move on (escapes)
+    int stalled = 0;                            ///< choice points in a row it could not move on (escapes)
     bool arrived = false;                       ///< Policy::arrived(): order() puts the ways to stop first
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
     /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
