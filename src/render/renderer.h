@@ -3,10 +3,12 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "camera.h"
 #include "disk_layer.h"
 #include "frame.h"
+#include "label_layout.h"
 #include "space.h"
 
 namespace mobb::render {
@@ -18,12 +20,9 @@ Bounds scene_bounds(const Frame& frame);
 void gl_bounds(const Bounds& bounds, double time_scale, glm::vec3& lo, glm::vec3& hi);
 
 /// Where in the framebuffer the scene is drawn, GL pixels from the bottom-left corner (the window's free
-/// rectangle between its panel columns).
+/// rectangle between its panel columns). Its labels lie wholly inside it (label_layout.h).
 struct Viewport {
     int x = 0, y = 0, width = 0, height = 0;
-    /// Labels the viewport's edge would cut are left out (panels stand beside it: a cut label would
-    /// read as if it ran on under them).
-    bool whole_labels = false;
 };
 
 class Renderer {
@@ -38,6 +37,8 @@ public:
     void draw(const Frame& frame, const Camera& camera, const Viewport& viewport);
     /// What the last draw drew of the disk stacks (instances and level of detail).
     const DiskStats& disk_stats() const;
+    /// The labels the last draw drew (text, box in the viewport's pixels from its top-left corner).
+    const std::vector<DrawnLabel>& labels() const;
 
 private:
     struct Layers;
