@@ -44,7 +44,8 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
     for (double t = std::ceil(t0 / step) * step; t <= t1 + 1e-9; t += step) {
         lines_.line(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), ink);
         if (frame.layers.labels)
-            text.add(to_gl(x0 - tick, y0, t, ts), format(t, step, "s"), ink, Anchor::Right, LabelRole::Tick);
+            text.add_tick(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), format(t, step, "s"), ink,
+                          Anchor::Right);
     }
     // Metre labels along the front edge.
     if (frame.layers.labels) {

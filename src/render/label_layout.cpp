@@ -53,17 +53,31 @@ std::vector<bool> lay_out_labels(std::vector<LabelSpot>& labels, const std::vect
                                  float height, float gap) {
     std::vector<bool> drawn(labels.size(), false);
     std::vector<TextBox> kept;
-    const std::vector<TextBox> none;
-    for (const LabelRole role : {LabelRole::Overlay, LabelRole::Title, LabelRole::Tick})
-        for (std::size_t k = 0; k < labels.size(); ++k) {
-            LabelSpot& l = labels[k];
-            if (l.role != role || (role == LabelRole::Title && !l.anchor_inside)) continue;
-            if (role == LabelRole::Title)
-                drawn[k] = place_title(l.box, kept, reserved, width, height, gap);
-            else  // overlays are the colour bars' own text: beside their bars by construction
-                drawn[k] = free_at(l.box, kept, role == LabelRole::Overlay ? none : reserved, width, height, gap);
-            if (drawn[k]) kept.push_back(l.box);
-        }
+    const auto keep = [&](std::size_t k, const TextBox& box) {
+        labels[k].box = box;
+        kept.push_back(box);
+        drawn[k] = true;
+    };
+    // Overlays are the colour bars' own text, beside their bars by construction.
+    for (std::size_t k = 0; k < labels.size(); ++k)
+        if (labels[k].role == LabelRole::Overlay && free_at(labels[k].box, kept, {}, width, height, gap))
+            keep(k, labels[k].box);
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+        TextBox box = labels[k].box;
+        if (labels[k].role == LabelRole::Title && labels[k].anchor_inside &&
+            place_title(box, kept, reserved, width, height, gap))
+            keep(k, box);
+    }
+    // Ticks on their own side first; then those left over across their axis, where there is room.
+    for (std::size_t k = 0; k < labels.size(); ++k)
+        if (labels[k].role == LabelRole::Tick && free_at(labels[k].box, kept, reserved, width, height, gap))
+            keep(k, labels[k].box);
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+        const std::optional<TextBox>& other = labels[k].other_side;
+        if (labels[k].role == LabelRole::Tick && !drawn[k] && other &&
+            free_at(*other, kept, reserved, width, height, gap))
+            keep(k, *other);
+    }
     return drawn;
 }
 

@@ -3,6 +3,7 @@
 // that rule; plain data, no GL, so tests can check it alone and check what the renderer reports it drew.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,20 +23,23 @@ struct TextBox {
 /// What a label is to the layout, also the order in which it is placed. An overlay (a colour bar's text)
 /// stays where its layer put it; a title (the time axis's, the cursor's time) is left out when the point it
 /// labels lies outside the viewport, else moved into the viewport when its edge cuts it, and by whole lines up
-/// or down to a free place when a label placed before it is there; a tick label is left out when the edge cuts it or a label placed before it is near.
+/// or down to a free place when a label placed before it is there; a tick label goes to its other side (when
+/// it has one) if the edge cuts it or a label placed before it is near, and is left out when neither side is
+/// free.
 enum class LabelRole : std::uint8_t { Overlay, Title, Tick };
 
 struct LabelSpot {
     TextBox box;         ///< where the label's anchor puts it (moved by the layout)
     LabelRole role = LabelRole::Tick;
     bool anchor_inside = true;  ///< the point it labels lies in the viewport (read for titles)
+    std::optional<TextBox> other_side{};  ///< a tick label's box across its axis (read for ticks)
 };
 
 /// Pixels between two labels at a text scale (text_scale()): one pixel of the font.
 inline float label_gap(float scale) { return scale; }
 
-/// Lays out the labels of one viewport `width` x `height`: overlays, then titles, then ticks, each role in
-/// the order given. Returns for each label whether it is drawn; the boxes of drawn ones are where they
+/// Lays out the labels of one viewport `width` x `height`: overlays, then titles, then ticks on their own
+/// side, then the ticks left over on their other side, each in the order given. Returns for each label whether it is drawn; the boxes of drawn ones are where they
 /// go: `gap` apart at least, twice that from the viewport's edges and clear of the `reserved` boxes (the
 /// colour bars).
 std::vector<bool> lay_out_labels(std::vector<LabelSpot>& labels, const std::vector<TextBox>& reserved, float width,

@@ -37,6 +37,11 @@ void TextLayer::add(const glm::vec3& world, std::string text, const glm::vec4& c
     labels_.push_back({world, std::move(text), color, anchor, role, offset});
 }
 
+void TextLayer::add_tick(const glm::vec3& world, const glm::vec3& across, std::string text, const glm::vec4& color,
+                         Anchor anchor) {
+    labels_.push_back({world, std::move(text), color, anchor, LabelRole::Tick, {}, false, across});
+}
+
 void TextLayer::add_screen(const glm::vec2& pixel, std::string text, const glm::vec4& color, Anchor anchor) {
     labels_.push_back({glm::vec3(pixel, 0.0f), std::move(text), color, anchor, LabelRole::Overlay, {}, true});
 }
@@ -48,20 +53,31 @@ void TextLayer::draw(const DrawContext& ctx) {
     std::vector<std::vector<glm::vec2>> glyphs;
     std::vector<TextBox> inks;
     std::vector<const Label*> shown;
+    const auto pixel = [&](const glm::vec3& world, glm::vec2& at) {
+        const glm::vec4 clip = ctx.view_proj * glm::vec4(world, 1.0f);
+        at = {(clip.x / clip.w * 0.5f + 0.5f) * width, (0.5f - clip.y / clip.w * 0.5f) * height};
+        return clip.w > 0.0f;  // in front of the camera
+    };
     for (const Label& label : labels_) {
-        const glm::vec4 clip = label.screen ? glm::vec4(0, 0, 0, 1) : ctx.view_proj * glm::vec4(label.world, 1.0f);
-        if (clip.w <= 0.0f) continue;  // behind the camera
-        const float sx = label.screen ? label.world.x : (clip.x / clip.w * 0.5f + 0.5f) * width;
-        const float sy = label.screen ? label.world.y : (0.5f - clip.y / clip.w * 0.5f) * height;
+        glm::vec2 at(label.world);
+        if (!label.screen && !pixel(label.world, at)) continue;
         TextBox ink;
-        glyphs.push_back(glyph_corners(label.text, ink));
+        std::vector<glm::vec2> corners = glyph_corners(label.text, ink);
         const float w = float(stb_easy_font_width(const_cast<char*>(label.text.c_str()))) * scale;
-        const float x = label.anchor == Anchor::Left    ? sx + 3.0f * scale
-                        : label.anchor == Anchor::Right ? sx - w - 3.0f * scale
-                                                        : sx - 0.5f * w;
-        const float ox = std::round(x + label.offset.x * scale), oy = std::round(sy + (label.offset.y - 3.5f) * scale);
-        const TextBox box{ox + ink.x0 * scale, oy + ink.y0 * scale, ox + ink.x1 * scale, oy + ink.y1 * scale};
-        spots.push_back({box, label.role, sx >= 0 && sx <= width && sy >= 0 && sy <= height});
+        const auto box_at = [&](const glm::vec2& p, Anchor anchor) {
+            const float x = anchor == Anchor::Left    ? p.x + 3.0f * scale
+                            : anchor == Anchor::Right ? p.x - w - 3.0f * scale
+                                                      : p.x - 0.5f * w;
+            const float ox = std::round(x + label.offset.x * scale);
+            const float oy = std::round(p.y + (label.offset.y - 3.5f) * scale);
+            return TextBox{ox + ink.x0 * scale, oy + ink.y0 * scale, ox + ink.x1 * scale, oy + ink.y1 * scale};
+        };
+        LabelSpot spot{box_at(at, label.anchor), label.role, at.x >= 0 && at.x <= width && at.y >= 0 && at.y <= height};
+        glm::vec2 across;
+        if (label.across && label.anchor != Anchor::Center && pixel(*label.across, across))
+            spot.other_side = box_at(across, label.anchor == Anchor::Left ? Anchor::Right : Anchor::Left);
+        spots.push_back(spot);
+        glyphs.push_back(std::move(corners));
         inks.push_back(ink);
         shown.push_back(&label);
     }

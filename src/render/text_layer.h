@@ -2,6 +2,7 @@
 // drawn with the stb_easy_font bitmap font so headless images need no font files. Where each goes, and which
 // are left out, is lay_out_labels()'s rule (label_layout.h).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ public:
     /// y down).
     void add(const glm::vec3& world, std::string text, const glm::vec4& color, Anchor anchor, LabelRole role,
              const glm::vec2& offset = {0.0f, 0.0f});
+    /// A tick label left (or right) of the point `world`, which goes right (or left) of `across` instead when
+    /// there is no room on its own side: the two ends of a tick mark across its axis.
+    void add_tick(const glm::vec3& world, const glm::vec3& across, std::string text, const glm::vec4& color,
+                  Anchor anchor);
     /// An overlay's label at a pixel position (x right, y down from the top left), vertically centred on it.
     void add_screen(const glm::vec2& pixel, std::string text, const glm::vec4& color, Anchor anchor = Anchor::Left);
     /// Keeps labels off a box drawn this frame (a colour bar); pixels as for add_screen.
@@ -47,6 +52,7 @@ private:
         LabelRole role;
         glm::vec2 offset{0.0f};
         bool screen = false;  ///< world.x, world.y are pixels
+        std::optional<glm::vec3> across{};  ///< add_tick's other side
     };
     std::vector<Label> labels_;
     std::vector<TextBox> reserved_;

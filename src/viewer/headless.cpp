@@ -50,7 +50,8 @@ std::vector<ImageRect> drawn_windows() {
     for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
         const ImGuiWindowFlags skip = ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup | ImGuiWindowFlags_MenuBar |
                                       ImGuiWindowFlags_ChildWindow;
-        if (w->WasActive && !w->Hidden && !(w->Flags & skip)) out.push_back({w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}});
+        if (w->WasActive && !w->Hidden && !(w->Flags & skip))
+            out.push_back({w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}});
     }
     return out;
 }

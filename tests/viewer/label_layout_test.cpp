@@ -63,5 +63,19 @@ TEST(LabelLayout, ATitleMovesALineOffAnOverlayAndTicksKeepOffTheBars) {
     EXPECT_FALSE(l[1].box.near(l[2].box, kGap));
 }
 
+/// A time tick cut by the viewport's left edge goes across its axis; one with no free side is left out.
+TEST(LabelLayout, ATickWithoutRoomGoesToItsOtherSide) {
+    std::vector<LabelSpot> l = {{{-20, 40, 10, 54}}, {{30, 40, 60, 54}}, {{-20, 70, 10, 84}}};
+    l[0].other_side = TextBox{20, 40, 50, 54};  // right of the axis, where the second label already stands
+    l[1].other_side = TextBox{-20, 40, 10, 54};
+    l[2].other_side = TextBox{20, 70, 50, 84};
+    const std::vector<bool> drawn = render::lay_out_labels(l, {}, 200, 100, kGap);
+    EXPECT_FALSE(drawn[0]);
+    EXPECT_TRUE(drawn[1]);
+    EXPECT_EQ(l[1].box.x0, 30.0f);  // its own side was free
+    ASSERT_TRUE(drawn[2]);
+    EXPECT_EQ(l[2].box.x0, 20.0f);
+}
+
 }  // namespace
 }  // namespace mobb::test
