@@ -55,8 +55,9 @@ void TextLayer::draw(const DrawContext& ctx) {
     std::vector<const Label*> shown;
     const auto pixel = [&](const glm::vec3& world, glm::vec2& at) {
         const glm::vec4 clip = ctx.view_proj * glm::vec4(world, 1.0f);
+        if (clip.w <= 0.0f) return false;  // behind the camera
         at = {(clip.x / clip.w * 0.5f + 0.5f) * width, (0.5f - clip.y / clip.w * 0.5f) * height};
-        return clip.w > 0.0f;  // in front of the camera
+        return true;
     };
     for (const Label& label : labels_) {
         glm::vec2 at(label.world);
