@@ -6,6 +6,7 @@
 // aside before the asking agent comes. Two agents meeting in a door both stand: neither walks, so neither
 // can take the right of way (right_of_way.cpp), and each waits for the other; this lets one through.
 #include <algorithm>
+#include <cmath>
 
 #include "choice.h"
 
@@ -30,7 +31,8 @@ void Choice::ways_to_make(const CrowdState& s, ChoiceSite& site) {
     // Only an agent stuck itself: one making progress is not waiting for anyone (a deadlock is two agents
     // each waiting for the other).
     if (!t.make_way || !site.goal || double(frame_ - me.progress_frame) * s.graph.dt() < t.make_way_after) return;
-    // Only ways against this agent's own: one behind it in a queue going its way waits its turn.
+    // Only ways head-on against this agent's own (over 120 degrees apart): one behind it in a queue going
+    // its way, or crossing it, waits its turn.
     const std::vector<std::array<double, 2>> mine = s.policy.way(site, 1.0);
     const double mx = mine.size() > 1 ? mine.back()[0] - mine.front()[0] : 0.0;
     const double my = mine.size() > 1 ? mine.back()[1] - mine.front()[1] : 0.0;
@@ -42,7 +44,10 @@ void Choice::ways_to_make(const CrowdState& s, ChoiceSite& site) {
         const Agent& other = s.agents[std::size_t(o)];
         if (other.way_until < frame_ || !outranks(other, o, me, agent_)) continue;
         const auto& w = other.way;
-        if (w.size() < 2 || (w.back()[0] - w.front()[0]) * mx + (w.back()[1] - w.front()[1]) * my > 0) continue;
+        if (w.size() < 2) continue;
+        const double ox = w.back()[0] - w.front()[0], oy = w.back()[1] - w.front()[1];
+        const double norms = std::hypot(ox, oy) * std::hypot(mx, my);
+        if (!(norms > 0) || ox * mx + oy * my > -0.5 * norms) continue;  // not head-on: within 120 degrees
         for (std::size_t k = 0; k + 1 < other.way.size(); ++k)
             site.make_way.push_back({other.way[k][0], other.way[k][1], other.way[k + 1][0], other.way[k + 1][1]});
     }

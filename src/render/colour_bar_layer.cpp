@@ -32,6 +32,7 @@ float ColourBarLayer::add_bar(const ColourScale& scale, const DrawContext& ctx, 
         const glm::vec4 c(scale.colour(value), 1.0f);
         quads_.quad({x0, a, 0}, {x1, a, 0}, {x1, b, 0}, {x0, b, 0}, c);
     }
+    text.reserve({x0, y0, x1, y1});
     lines_.line({x0, y0, 0}, {x1, y0, 0}, ink);
     lines_.line({x1, y0, 0}, {x1, y1, 0}, ink);
     lines_.line({x1, y1, 0}, {x0, y1, 0}, ink);

@@ -97,7 +97,7 @@ void CursorLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluc
         if (frame.layers.labels) {
             char label[32];
             std::snprintf(label, sizeof label, "t = %.2f s", t);
-            text.add(to_gl(x1, y1, t, ts), label, edge, Anchor::Left);
+            text.add(to_gl(x1, y1, t, ts), label, edge, Anchor::Left, LabelRole::Title);
         }
     }
     if (frame.layers.skeletons) skeletons(frame);

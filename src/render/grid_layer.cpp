@@ -45,17 +45,20 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
     if (frame.layers.labels) {
         char caption[48];
         std::snprintf(caption, sizeof caption, "time (%.2g m per s)", ts);
-        text.add(to_gl(x0, y0, t1, ts) + glm::vec3(0, 0.25f, 0), caption, ink, Anchor::Right);
+        // A line above the axis's top, where its top tick label does not reach.
+        text.add(to_gl(x0, y0, t1, ts), caption, ink, Anchor::Right, LabelRole::Title, {0.0f, -11.0f});
     }
     for (double t = std::ceil(t0 / step) * step; t <= t1 + 1e-9; t += step) {
         lines_.line(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), ink);
-        if (frame.layers.labels) text.add(to_gl(x0 - tick, y0, t, ts), format(t, step, "s"), ink, Anchor::Right);
+        if (frame.layers.labels)
+            text.add_tick(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), format(t, step, "s"), ink,
+                          Anchor::Right);
     }
     // Metre labels along the front edge.
     if (frame.layers.labels) {
         const double mstep = tick_step(x1 - x0, 8) < 1 ? 1 : tick_step(x1 - x0, 8);
         for (double x = std::ceil((x0 + 0.5) / mstep) * mstep; x <= x1; x += mstep)
-            text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center);
+            text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center, LabelRole::Tick);
     }
     ctx.use(*ctx.color);
     lines_.draw();

@@ -17,7 +17,6 @@ struct DrawContext {
     /// GL heights (t * time_scale) kept by the clip planes: the frame's time window for what lies in
     /// space-time (disks, boxes, prisms, the trace), everything for the grid, the cursor and text.
     float clip_lo = -1e30f, clip_hi = 1e30f;
-    bool whole_labels = false;  ///< Viewport::whole_labels
 
     /// Makes `p` current with this context's matrix and clip planes (text then sets its own matrix).
     void use(const Program& p) const {

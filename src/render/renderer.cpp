@@ -69,6 +69,8 @@ Renderer::~Renderer() = default;
 
 const DiskStats& Renderer::disk_stats() const { return layers_->disks.stats(); }
 
+const std::vector<DrawnLabel>& Renderer::labels() const { return layers_->text.drawn(); }
+
 void Renderer::draw(const Frame& frame, const Camera& camera, int width, int height) {
     draw(frame, camera, Viewport{0, 0, width, height});
 }
@@ -96,7 +98,6 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     ctx.disk = &l.disk;
     ctx.tube = &l.tube;
     ctx.bounds = bounds_;
-    ctx.whole_labels = viewport.whole_labels;
 
     glViewport(viewport.x, viewport.y, width, height);
     glClearColor(0.965f, 0.965f, 0.972f, 1.0f);

@@ -3,11 +3,13 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "camera.h"
 #include "disk_layer.h"
 #include "draw_counts.h"
 #include "frame.h"
+#include "label_layout.h"
 #include "space.h"
 
 namespace mobb::render {
@@ -26,12 +28,9 @@ constexpr std::size_t kMultisampleUpTo = 100000;
 bool multisampled(const Frame& frame);
 
 /// Where in the framebuffer the scene is drawn, GL pixels from the bottom-left corner (the window's free
-/// rectangle between its panel columns).
+/// rectangle between its panel columns). Its labels lie wholly inside it (label_layout.h).
 struct Viewport {
     int x = 0, y = 0, width = 0, height = 0;
-    /// Labels the viewport's edge would cut are left out (panels stand beside it: a cut label would
-    /// read as if it ran on under them).
-    bool whole_labels = false;
 };
 
 class Renderer {
@@ -48,6 +47,8 @@ public:
     const DiskStats& disk_stats() const;
     /// Draw calls and vertices of the last draw (panels drawn after it not included).
     const DrawCounts& draw_counts() const { return counts_; }
+    /// The labels the last draw drew (text, box in the viewport's pixels from its top-left corner).
+    const std::vector<DrawnLabel>& labels() const;
 
 private:
     struct Layers;

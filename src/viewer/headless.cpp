@@ -44,6 +44,27 @@ std::vector<std::string> cut_windows(const ImVec2& display) {
     return out;
 }
 
+/// The windows drawn: panels and other windows, the menu bar, tooltips and popups left out.
+std::vector<ImageRect> drawn_windows() {
+    std::vector<ImageRect> out;
+    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+        const ImGuiWindowFlags skip = ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup | ImGuiWindowFlags_MenuBar |
+                                      ImGuiWindowFlags_ChildWindow;
+        if (w->WasActive && !w->Hidden && !(w->Flags & skip))
+            out.push_back({w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}});
+    }
+    return out;
+}
+
+/// The renderer's labels in image pixels: its boxes are in the viewport's, from its top-left corner.
+std::vector<ImageRect> image_labels(const render::Renderer& renderer, const render::Viewport& v, int image_height) {
+    std::vector<ImageRect> out;
+    const float left = float(v.x), top = float(image_height - v.y - v.height);
+    for (const render::DrawnLabel& l : renderer.labels())
+        out.push_back({l.text, {left + l.box.x0, top + l.box.y0, l.box.x1 - l.box.x0, l.box.y1 - l.box.y0}});
+    return out;
+}
+
 /// The panels laid out, the scene drawn in the viewport they leave (camera requests applied, as in the
 /// window), then the panels over it, without any window: ImGui's OpenGL3 backend works in any context
 /// once the display size is set by hand.
@@ -67,20 +88,23 @@ void draw_with_ui(State& state, render::Renderer& renderer, const HeadlessOption
     // panels in their columns by it, the next settle scroll limits, the last draws. Camera requests wait
     // for the last, when the viewport has its final size.
     const bool frame_all = ui.request_frame_all;
-    const ViewPreset view = ui.request_view;
+    const ViewPreset preset = ui.request_view;
     ui.request_frame_all = false;
     ui.request_view = ViewPreset::None;
     for (int pass = 0; pass < 4; ++pass) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
         draw_panels(state, ui);
-        if (pass == 3) ui.request_frame_all = frame_all, ui.request_view = view;
+        if (pass == 3) ui.request_frame_all = frame_all, ui.request_view = preset;
         apply_requests(state, ui);
         ImGui::Render();
     }
     if (o.cut) *o.cut = cut_windows(io.DisplaySize);
+    if (o.windows) *o.windows = drawn_windows();
     const glm::ivec2 size(o.width, o.height);
-    renderer.draw(frame_of(state), state.camera, gl_viewport(viewport(state, ui), size, size));
+    const render::Viewport view = gl_viewport(viewport(state, ui), size, size);
+    renderer.draw(frame_of(state), state.camera, view);
+    if (o.labels) *o.labels = image_labels(renderer, view, o.height);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
@@ -100,6 +124,8 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
         draw_with_ui(state, renderer, options);
     else
         renderer.draw(frame_of(state), state.camera, options.width, options.height);
+    if (options.labels && !options.ui)
+        *options.labels = image_labels(renderer, {0, 0, options.width, options.height}, options.height);
     return target.read();
 }
 

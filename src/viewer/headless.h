@@ -11,6 +11,13 @@
 
 namespace mobb::viewer {
 
+/// A rectangle of the image (pixels from its top-left corner) and what stands there: a label's text, a
+/// window's name.
+struct ImageRect {
+    std::string name;
+    Rect rect;
+};
+
 struct HeadlessOptions {
     int width = 960, height = 540;
     bool ui = false;    ///< also draw the ImGui panels
@@ -21,6 +28,10 @@ struct HeadlessOptions {
     /// With ui: receives one line per window whose text does not fit ("Trace: 12 px too narrow") or
     /// that reaches past the image.
     std::vector<std::string>* cut = nullptr;
+    /// Receives the 3D view's labels as drawn, their text and box.
+    std::vector<ImageRect>* labels = nullptr;
+    /// With ui: receives the panels' windows as drawn (menu bar, tooltips and popups left out).
+    std::vector<ImageRect>* windows = nullptr;
 };
 
 /// Renders the state into an image. Throws std::runtime_error when no context can be made.

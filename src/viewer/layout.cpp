@@ -156,7 +156,7 @@ render::Viewport gl_viewport(const Rect& r, const glm::ivec2& window, const glm:
     const int x0 = int(std::lround(r.x * sx)), x1 = int(std::lround((r.x + r.width) * sx));
     const int y0 = int(std::lround((float(window.y) - r.y - r.height) * sy)),
               y1 = int(std::lround((float(window.y) - r.y) * sy));
-    return {x0, y0, x1 - x0, y1 - y0, true};
+    return {x0, y0, x1 - x0, y1 - y0};
 }
 
 void place_panels(const State& s, Ui& ui) {

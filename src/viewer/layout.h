@@ -26,7 +26,7 @@ float strip_height(const State& state, const Ui& ui);
 Rect viewport(const State& state, const Ui& ui);
 
 /// A window rectangle in GL framebuffer pixels (origin bottom-left; a HiDPI framebuffer has more pixels
-/// than the window), its labels whole or left out.
+/// than the window).
 render::Viewport gl_viewport(const Rect& rect, const glm::ivec2& window, const glm::ivec2& framebuffer);
 
 /// Places this frame's column panels in ui.panel_rects (after the menu bar, before the panels).

@@ -48,8 +48,8 @@ struct CrowdTuning {
     // time to go (Policy::to_go) has not shrunk by `make_way_progress` seconds for `make_way_after`
     // seconds asks the agents near it for the way it wants -
     // `make_way_length` metres down its path (Policy::way) - for `make_way_keep` seconds; those it outranks
-    // (it set off for its goal earlier; the lower agent id on a tie), stuck themselves and heading against
-    // it, count `make_way_cost` seconds per metre their clips' ends come nearer than `make_way_clearance`
+    // (it set off for its goal earlier; the lower agent id on a tie), stuck themselves and heading head-on
+    // against it (over 120 degrees apart), count `make_way_cost` seconds per metre their clips' ends come nearer than `make_way_clearance`
     // to that way, so they step aside before it comes. Breaks the standoff of two agents meeting in a
     // door, where neither walks and so neither has the right of way. 4 m and 10 s/m: bench/results/README.md
     // "making way" (judge: 78 -> 80 of 93 runs; 8 m or 4 s/m, or asking agents that progress: worse).
