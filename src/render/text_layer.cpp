@@ -19,7 +19,7 @@ void TextLayer::add_screen(const glm::vec2& pixel, std::string text, const glm::
 void TextLayer::draw(const DrawContext& ctx) {
     const float scale = text_scale(ctx.height);
     tris_.clear();
-    std::vector<char> quads(64 * 1024);
+    std::vector<char> quads(std::size_t{64} * 1024);
     for (Label& label : labels_) {
         const glm::vec4 clip = label.screen ? glm::vec4(0, 0, 0, 1) : ctx.view_proj * glm::vec4(label.world, 1.0f);
         if (clip.w <= 0.0f) continue;  // behind the camera
