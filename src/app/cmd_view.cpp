@@ -1,11 +1,12 @@
 // mobb view, mobb render, mobb export-gltf: the viewer layer's subcommands (src/viewer).
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <system_error>
 
 #include "cli.h"
 #include "context_glfw.h"
@@ -29,7 +30,7 @@ float aspect(int w, int h) { return float(w) / float(std::max(h, 1)); }
 
 /// The default scene: assets/scenes/default.json from the working folder, else from the source tree.
 std::string default_scene() {
-    const std::string local = "assets/scenes/default.json";
+    std::string local = "assets/scenes/default.json";
     if (std::filesystem::exists(local)) return local;
     return std::string(MOBB_ASSETS_DIR) + "/scenes/default.json";
 }
@@ -71,6 +72,7 @@ bool names_clip_files(const std::vector<std::string>& inputs) {
 /// The scene of clip files named on the command line, each loaded with `load`.
 Scene scene_of_inputs(const std::vector<std::string>& files, const io::LoadOptionText& load) {
     std::vector<std::string> abs;
+    abs.reserve(files.size());
     for (const std::string& f : files) abs.push_back(std::filesystem::absolute(f).string());
     Scene scene = viewer::scene_of_files(abs);
     for (auto& c : scene.clips) c.load = load;
@@ -151,6 +153,15 @@ void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_
                          std::to_string(std::max(query, 0)) + ": " + message);
 }
 
+/// "CLIP:SAMPLE" -> pick: two integers in range of int around a colon, nothing else (not even spaces).
+bool parse_pick(const std::string& text, viewer::Pick& pick) {
+    const char* const last = text.data() + text.size();
+    const auto [colon, clip_error] = std::from_chars(text.data(), last, pick.clip);
+    if (clip_error != std::errc() || colon == last || *colon != ':') return false;
+    const auto [end, sample_error] = std::from_chars(colon + 1, last, pick.sample);
+    return sample_error == std::errc() && end == last;
+}
+
 /// `render --ui --pick CLIP:SAMPLE [--pick ..] --panel NAME ..`: the panels' state the image starts
 /// from, as clicks and the View menu would leave it: the panels the state opens by default and those
 /// named; `frame`: everything framed in the viewport the panels leave. Throws InputError naming a bad
@@ -162,9 +173,7 @@ viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::
     ui.request_frame_all = frame;
     for (const std::string& p : picks) {
         viewer::Pick pick;
-        char end = 0;
-        if (std::sscanf(p.c_str(), "%d:%d%c", &pick.clip, &pick.sample, &end) != 2 || pick.clip < 0 ||
-            pick.clip >= int(s.clips.size()) || pick.sample < 0 ||
+        if (!parse_pick(p, pick) || pick.clip < 0 || pick.clip >= int(s.clips.size()) || pick.sample < 0 ||
             pick.sample >= int(s.clips[std::size_t(pick.clip)].tree->path().size()))
             throw InputError("render: --pick " + p + ": expected CLIP:SAMPLE naming a disk of the scene");
         viewer::click_disk(s, ui, pick);

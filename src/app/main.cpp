@@ -1,9 +1,12 @@
 // mobb: exact space-time collision queries between motion-capture clips (MOBB / UMOBB trees).
+#include <exception>
 #include <iostream>
 
 #include "cli.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
     using namespace mobb::app;
     CLI::App app{"mobb: exact space-time collision detection between motion-capture characters"};
     app.require_subcommand(1);
@@ -27,4 +30,17 @@ int main(int argc, char** argv) {
         return code == 0 ? kOk : kUsage;
     }
     return exit_code;
+}
+
+}  // namespace
+
+// Each subcommand reports its own errors (guarded() in cli.cpp); what escapes them (out of memory, an
+// error in building the command line) gets the same one line, not std::terminate's abort.
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return mobb::app::kBadInput;
+    }
 }

@@ -1,6 +1,7 @@
 #include "bar_chart.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <stdexcept>
@@ -47,7 +48,7 @@ struct Image {
         for (int q = 0; q < quads; ++q) {
             const float* v = reinterpret_cast<const float*>(buf.data() + std::size_t(q) * 64);
             float x0 = v[0], y0 = v[1], x1 = v[0], y1 = v[1];
-            for (int k = 1; k < 4; ++k) {
+            for (std::size_t k = 1; k < 4; ++k) {
                 x0 = std::min(x0, v[k * 4]), x1 = std::max(x1, v[k * 4]);
                 y0 = std::min(y0, v[k * 4 + 1]), y1 = std::max(y1, v[k * 4 + 1]);
             }
@@ -84,7 +85,7 @@ void write_bar_chart(const std::string& file, const std::string& title, const st
     for (std::size_t k = 0; k < bars.size(); ++k) {
         const int y = top + row * int(k);
         img.text(16, y + 6, bars[k].label, scale, 0x202020);
-        const int len = vmax > 0 ? int(double(span) * bars[k].value / vmax + 0.5) : 0;
+        const int len = vmax > 0 ? int(std::lround(double(span) * bars[k].value / vmax)) : 0;
         img.fill(left, y + 2, left + std::max(1, len), y + row - 8, k % 2 ? 0x4a7fb5 : 0x2f5f8f);
         img.text(left + len + 8, y + 6, value_text(bars[k].value), scale, 0x202020);
     }

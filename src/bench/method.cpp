@@ -122,6 +122,7 @@ std::unique_ptr<QueryMethod> make_method(Method m, int n_min) {
 
 std::vector<std::unique_ptr<QueryMethod>> make_methods(const std::vector<Method>& methods, int n_min) {
     std::vector<std::unique_ptr<QueryMethod>> out;
+    out.reserve(methods.size());
     for (Method m : methods) out.push_back(make_method(m, n_min));
     return out;
 }

@@ -69,6 +69,7 @@ std::vector<NamedPath> longest_clips(int count, double fps) {
     io::LoadOptions lo;
     lo.fps = fps;
     std::vector<NamedPath> out;
+    out.reserve(files.size());
     for (const std::string& f : files)
         out.push_back({"cmu/" + std::filesystem::path(f).filename().string(), io::load_clip(f, lo).path});
     std::stable_sort(out.begin(), out.end(),
@@ -125,15 +126,16 @@ std::vector<ClipQuery> random_tests(const std::vector<Path>& clips, double radiu
 
 std::vector<Tree> mobb_trees(const std::vector<Path>& clips, int n_min) {
     std::vector<Tree> out;
+    out.reserve(clips.size());
     for (const Path& p : clips) out.push_back(Tree::build(p, {TreeType::Mobb, n_min}));
     return out;
 }
 
-double root_share(const std::vector<Tree>& trees, const std::vector<ClipQuery>& qs) {
+double root_share(const std::vector<Tree>& trees, const std::vector<ClipQuery>& queries) {
     std::uint64_t roots = 0;
-    for (const ClipQuery& q : qs)
+    for (const ClipQuery& q : queries)
         if (root_boxes_overlap(trees[std::size_t(q.a)], q.pa, trees[std::size_t(q.b)], q.pb)) ++roots;
-    return qs.empty() ? 0.0 : double(roots) / double(qs.size());
+    return queries.empty() ? 0.0 : double(roots) / double(queries.size());
 }
 
 double radius_for_root_share(const std::vector<Path>& clips, const std::vector<Tree>& trees, double target,

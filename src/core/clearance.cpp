@@ -50,6 +50,7 @@ std::vector<std::vector<double>> nearest_clearance(const std::vector<const Path*
                                                    const std::vector<Placement>& places) {
     const double inf = std::numeric_limits<double>::infinity();
     std::vector<std::vector<double>> out;
+    out.reserve(paths.size());
     for (const Path* p : paths) out.emplace_back(p->size(), inf);
     for (std::size_t c = 0; c < paths.size(); ++c) {
         const Path& a = *paths[c];

@@ -13,7 +13,7 @@
 
 namespace mobb::crowd {
 
-BroadPhase::BroadPhase(double cell) : cell_(cell), inv_cell_(1 / cell) {
+BroadPhase::BroadPhase(double cell) : inv_cell_(1 / cell) {
     if (!(cell > 0)) throw std::invalid_argument("broad phase: cell size must be positive");
 }
 
@@ -106,7 +106,7 @@ void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPoo
     }
     // Bands of columns: a cell belongs to one band, so each cell still receives its items in order (one
     // band for one thread: each band visits every item).
-    const std::int64_t bands = pool.size() > 1 ? std::min<std::int64_t>(nx_, 4 * pool.size()) : 1;
+    const std::int64_t bands = pool.size() > 1 ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
         for (const Placing& p : placing_) {

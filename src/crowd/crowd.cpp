@@ -285,7 +285,8 @@ void Simulation::commit(Choice& c) {
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
     std::vector<Candidate> candidates = std::move(cp.candidates);
     out_.record.choices.push_back(std::move(cp));
-    cp.candidates = std::move(candidates);
+    // Assigning a member of the moved-from slot is defined; Choice::prepare resets the rest.
+    cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }
 
 // Where the agent's disk is at the frame before its choice point: the last sample of its last clip (as

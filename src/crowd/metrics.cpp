@@ -108,6 +108,7 @@ std::vector<int> episodes(const Record& r, const std::vector<Contact>& contacts,
 std::vector<std::vector<std::int64_t>> solid_contacts(const Record& r) {
     const std::vector<Polygon> solids = r.world.solids();
     std::vector<std::array<double, 4>> boxes;
+    boxes.reserve(solids.size());
     for (const Polygon& p : solids) boxes.push_back(bounds(p));
     std::vector<std::vector<std::int64_t>> out(r.tracks.size());
     for (std::size_t a = 0; a < r.tracks.size(); ++a)

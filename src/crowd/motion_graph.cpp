@@ -59,7 +59,7 @@ io::Clip load_graph_source(const MotionGraph& g, int source) {
 }
 
 std::string default_graph_file() {
-    const std::string local = "assets/graphs/cmu_locomotion.json";
+    std::string local = "assets/graphs/cmu_locomotion.json";
     if (std::filesystem::exists(local)) return local;
     return std::string(MOBB_SOURCE_DIR) + "/" + local;
 }

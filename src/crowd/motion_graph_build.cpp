@@ -87,7 +87,8 @@ AllPairs all_pairs(const std::vector<PoseTrack>& tracks, int window) {
             const int na = tracks[a].frames, nb = tracks[b].frames;
             for (int i = 0; i < na; ++i)
                 for (int j = 0; j < nb; ++j) {
-                    const std::size_t gi = std::size_t(m.offset[a] + i), gj = std::size_t(m.offset[b] + j);
+                    const std::size_t gi = std::size_t(m.offset[a]) + std::size_t(i);
+                    const std::size_t gj = std::size_t(m.offset[b]) + std::size_t(j);
                     m.d[gi * n + gj] = m.d[gj * n + gi] = block[std::size_t(i) * std::size_t(nb) + std::size_t(j)];
                 }
         }
@@ -130,8 +131,8 @@ std::vector<bool> hub_candidates(const AllPairs& m, int hubs, const GraphBuildOp
         for (int g : hub_matches(m, best, o.threshold)) {
             ++transitions;
             cand[std::size_t(g)] = true;
-            for (int d = -spread; d <= spread; ++d)
-                if (g + d >= 0 && g + d < m.total()) near[std::size_t(g + d)] = true;
+            for (int f = g - spread; f <= g + spread; ++f)
+                if (f >= 0 && f < m.total()) near[std::size_t(f)] = true;
         }
     }
     return cand;
@@ -274,6 +275,7 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
         *log << "graph: " << n << " files, " << m.total() << " frames, " << g.transitions << " transition points under "
              << o.threshold << " m to " << o.hubs << " hub poses\n";
     std::vector<std::vector<bool>> candidate;
+    candidate.reserve(std::size_t(n));
     for (int s = 0; s < n; ++s)
         candidate.emplace_back(cand.begin() + m.offset[std::size_t(s)], cand.begin() + m.offset[std::size_t(s) + 1]);
     std::vector<GraphClip> all;

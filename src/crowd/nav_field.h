@@ -17,7 +17,7 @@ namespace mobb::crowd {
 /// of every solid (World::solids()) and of the disks blocked since.
 class NavGrid {
 public:
-    NavGrid(const World& world, double clearance, double cell = 0.25);
+    NavGrid(const World& world, double clear, double size = 0.25);  ///< clearance = clear, cell = size (metres)
 
     /// Blocks the cells whose centre lies within r + clearance of (x, y): an agent standing there for good.
     void block_disk(double x, double y, double r);

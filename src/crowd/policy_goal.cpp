@@ -47,6 +47,7 @@ public:
         if (!site.goal) return;
         const Rigid2 m = Rigid2::of(site.base);
         std::vector<std::pair<double, int>> scored;
+        scored.reserve(candidates.size());
         for (int c : candidates) scored.emplace_back(site.arrived ? stop_cost(site, m, c) : cost(site, m, c), c);
         std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (std::size_t k = 0; k < scored.size(); ++k) candidates[k] = scored[k].second;

@@ -165,6 +165,7 @@ PoseTrack pose_track(const io::Clip& clip, const PoseJoints& joints) {
         ground.reserve(anim.positions.size());
         for (const glm::dvec3& p : anim.positions) ground.push_back(io::to_ground(p, clip.up));
         std::vector<double> raw;
+        raw.reserve(std::size_t(t.frames));
         for (int f = 0; f < t.frames; ++f) raw.push_back(facing_at(ground, anim.skeleton.size(), lr, f));
         for (int f = 0; f < t.frames; ++f) {
             glm::dvec2 sum(0.0);
@@ -212,9 +213,10 @@ std::vector<float> distance_matrix(const PoseTrack& a, const PoseTrack& b, int w
             FrameSums x, y;
             PairSums xy;
             for (int k = 0; k < w; ++k) {
-                add(x, sa[std::size_t(si + k)]);
-                add(y, sb[std::size_t(sj + k)]);
-                add(xy, pairs[std::size_t(si + k) * std::size_t(b.frames) + std::size_t(sj + k)]);
+                const std::size_t ak = std::size_t(si) + std::size_t(k), bk = std::size_t(sj) + std::size_t(k);
+                add(x, sa[ak]);
+                add(y, sb[bk]);
+                add(xy, pairs[ak * std::size_t(b.frames) + bk]);
             }
             out[std::size_t(i) * std::size_t(b.frames) + std::size_t(j)] = float(solve(x, y, xy).distance);
         }

@@ -192,7 +192,7 @@ CrowdOptions scenario_options(const Scenario& scenario) {
 }
 
 std::string default_scenario_folder() {
-    const std::string local = "assets/scenarios";
+    std::string local = "assets/scenarios";
     if (std::filesystem::is_directory(local)) return local;
     return std::string(MOBB_SOURCE_DIR) + "/" + local;
 }

@@ -34,8 +34,8 @@ struct Track {
     glm::dmat4 at(double time, const aiMatrix4x4& rest) const;
 };
 
-/// Reads a channel, key times divided by `ticks_per_second`. Throws LoadError "WHERE: message" for
+/// Reads a channel, key times divided by `tps` (ticks per second). Throws LoadError "WHERE: message" for
 /// non-finite values or times, times that decrease and zero quaternions.
-Track read_track(const aiNodeAnim& channel, double ticks_per_second, const std::string& where);
+Track read_track(const aiNodeAnim& channel, double tps, const std::string& where);
 
 }  // namespace mobb::io::assimp

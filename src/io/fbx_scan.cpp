@@ -106,9 +106,7 @@ void ascii_scan(const std::string& s, std::vector<Edge>& edges) {
     };
     const auto token = [&](char kind, std::string text) {
         if (kind == 'k' || kind == '{' || kind == '}') flush();
-        if (kind == 'k' && text == "C")
-            pending.push_back({kind, std::move(text)});
-        else if (!pending.empty() && pending.size() < 4)
+        if ((kind == 'k' && text == "C") || (!pending.empty() && pending.size() < 4))
             pending.push_back({kind, std::move(text)});
     };
     std::string word;

@@ -101,7 +101,7 @@ DiskLayer::~DiskLayer() {
 /// A vertex array over the shared unit cylinder and a fresh instance buffer: DiskInstance (location 2)
 /// alone, or DiskGroup (locations 2 and 3). Without location 3 the shader sees (0, 0, 0, 1): no
 /// shear, one sample tall.
-DiskLayer::Stack DiskLayer::make_stack(bool grouped) {
+DiskLayer::Stack DiskLayer::make_stack(bool grouped) const {
     Stack s;
     glGenVertexArrays(1, &s.vao);
     glGenBuffers(1, &s.vbo);

@@ -84,7 +84,7 @@ private:
     /// colours; returns whether it does.
     bool map_values(const Frame& frame, const ClipView& clip, Stack& s, int group);
     static int level_of(int k);  ///< log2 of the group size that stands for k samples
-    Stack make_stack(bool grouped);
+    Stack make_stack(bool grouped) const;
     void upload(Stack& stack, const std::vector<DiskInstance>& disks);
     void upload(Stack& stack, const std::vector<DiskGroup>& groups);
     Stack& stack_at(const ClipView& clip, Clip& c, int k);

@@ -32,10 +32,15 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
     const double x0 = grid.lo.x, x1 = grid.hi.x, y0 = grid.lo.y, y1 = grid.hi.y;
     const glm::vec4 minor(0.78f, 0.79f, 0.82f, 1.0f), major(0.55f, 0.56f, 0.60f, 1.0f), ink(0.15f, 0.15f, 0.2f, 1.0f);
     lines_.clear();
-    for (double x = x0; x <= x1; x += 1.0)
+    // Integer counters: a float one drifts from the values it should take (here whole metres, x0 and y0 whole).
+    for (int i = 0; x0 + i <= x1; ++i) {
+        const double x = x0 + i;
         lines_.line(to_gl(x, y0, 0, ts), to_gl(x, y1, 0, ts), std::fmod(std::fabs(x), 5.0) < 0.5 ? major : minor);
-    for (double y = y0; y <= y1; y += 1.0)
+    }
+    for (int i = 0; y0 + i <= y1; ++i) {
+        const double y = y0 + i;
         lines_.line(to_gl(x0, y, 0, ts), to_gl(x1, y, 0, ts), std::fmod(std::fabs(y), 5.0) < 0.5 ? major : minor);
+    }
 
     // Time axis at the grid's (x0, y0) corner, from t = 0 (or earlier) to the last sample.
     const double t0 = grid.lo.z, t1 = grid.hi.z;
@@ -48,7 +53,8 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
         // A line above the axis's top, where its top tick label does not reach.
         text.add(to_gl(x0, y0, t1, ts), caption, ink, Anchor::Right, LabelRole::Title, {0.0f, -11.0f});
     }
-    for (double t = std::ceil(t0 / step) * step; t <= t1 + 1e-9; t += step) {
+    for (int k = int(std::ceil(t0 / step)); k * step <= t1 + 1e-9; ++k) {
+        const double t = k * step;
         lines_.line(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), ink);
         if (frame.layers.labels)
             text.add_tick(to_gl(x0 - tick, y0, t, ts), to_gl(x0 + tick, y0, t, ts), format(t, step, "s"), ink,
@@ -57,8 +63,8 @@ void GridLayer::draw(const Frame& frame, const DrawContext& ctx, TextLayer& text
     // Metre labels along the front edge.
     if (frame.layers.labels) {
         const double mstep = tick_step(x1 - x0, 8) < 1 ? 1 : tick_step(x1 - x0, 8);
-        for (double x = std::ceil((x0 + 0.5) / mstep) * mstep; x <= x1; x += mstep)
-            text.add(to_gl(x, y0, 0, ts), format(x, 1, "m"), major, Anchor::Center, LabelRole::Tick);
+        for (int k = int(std::ceil((x0 + 0.5) / mstep)); k * mstep <= x1; ++k)
+            text.add(to_gl(k * mstep, y0, 0, ts), format(k * mstep, 1, "m"), major, Anchor::Center, LabelRole::Tick);
     }
     ctx.use(*ctx.color);
     lines_.draw();

@@ -42,7 +42,7 @@ void Target::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
-Image Target::read() {
+Image Target::read() const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);

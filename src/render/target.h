@@ -12,8 +12,8 @@ public:
     Target(const Target&) = delete;
     Target& operator=(const Target&) = delete;
 
-    void bind() const;  ///< draw into the multisampled buffer
-    Image read();       ///< resolve and read back, top row first
+    void bind() const;   ///< draw into the multisampled buffer
+    Image read() const;  ///< resolve and read back, top row first
 
 private:
     int width_, height_;

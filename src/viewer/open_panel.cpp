@@ -75,7 +75,7 @@ void open_panel(State& s, Ui& ui) {
     ImGui::BeginChild("files", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() - 2), true);
     for (const std::string& f : ui.data_files) {
         if (!ui.open_filter.empty() && f.find(ui.open_filter) == std::string::npos) continue;
-        if (ImGui::Selectable(f.c_str())) open_file(s, ui, dir + "/" + f);
+        if (ImGui::Selectable(f.c_str())) open_file(s, ui, (dir + '/').append(f));
     }
     ImGui::EndChild();
     if (!ui.open_status.empty()) ImGui::TextWrapped("%s", ui.open_status.c_str());

@@ -19,7 +19,8 @@ using nlohmann::json;
 /// Typed access to one JSON object with the place named in every error, and unknown keys rejected.
 class Reader {
 public:
-    Reader(const json& object, std::string where, std::set<std::string> keys) : j_(object), where_(std::move(where)) {
+    Reader(const json& object, std::string where, const std::set<std::string>& keys)
+        : j_(object), where_(std::move(where)) {
         if (!j_.is_object()) fail(where_, "expected an object");
         for (const auto& item : j_.items())
             if (!keys.count(item.key())) fail(at(item.key()), "unknown key");

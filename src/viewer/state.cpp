@@ -46,8 +46,8 @@ State load_state(const Scene& scene, float aspect) {
         LoadedClip c;
         c.name = "walk " + std::to_string(scene.generate.walk.seed + unsigned(k));
         s.clips.push_back(std::move(c));
-        s.places.push_back(
-            {double(k % side) * scene.generate.spacing, double(k / side) * scene.generate.spacing, 0, 0});
+        const int column = k % side, row = k / side;
+        s.places.push_back({double(column) * scene.generate.spacing, double(row) * scene.generate.spacing, 0, 0});
     }
     rebuild_trees(s);
     if (scene.camera)

@@ -1,6 +1,7 @@
 // The Tree fit panel: how tightly MOBB, UMOBB and PCA-fitted boxes cover one clip, level by level (a
 // table and a plot); clicking the plot shows that level's boxes.
 #include <algorithm>
+#include <cmath>
 
 #include <imgui.h>
 
@@ -91,7 +92,7 @@ void tightness_plot(State& s, const FitTable& fit) {
     plot_overlay(u, 1.0f, high * 1.05f, IM_COL32(100, 150, 255, 255));
     plot_overlay(p, 1.0f, high * 1.05f, IM_COL32(255, 150, 50, 255));
     if (ImGui::IsItemClicked())
-        s.scene.layers.level = std::min(int(rows) - 1, int(plot_fraction() * float(rows - 1) + 0.5f));
+        s.scene.layers.level = std::min(int(rows) - 1, int(std::lround(plot_fraction() * float(rows - 1))));
 }
 
 }  // namespace

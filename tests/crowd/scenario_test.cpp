@@ -127,6 +127,8 @@ TEST(Scenario, EveryNumericFieldIsChecked) {
     EXPECT_EQ(error_after([](nlohmann::json&) {}), "");
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     using Edit = std::function<void(nlohmann::json&)>;
+    // One case a line: clang-format 14 breaks up a short lambda that holds a braced list.
+    // clang-format off
     const std::vector<std::pair<Edit, std::string>> cases = {
         {[](nlohmann::json& j) { j["world"] = {5, 0, 5, 10}; }, "s.json.world: "},
         {[](nlohmann::json& j) { j["world"] = {6, 0, 5, 10}; }, "s.json.world: "},
@@ -159,6 +161,7 @@ TEST(Scenario, EveryNumericFieldIsChecked) {
         {[](nlohmann::json& j) { j["obstacles"][1]["polygon"][0] = {-3, 8}; },
          "s.json.obstacles[1]: vertex 0 lies outside the world"},
     };
+    // clang-format on
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const std::string e = error_after(cases[k].first);
         EXPECT_EQ(e.rfind(cases[k].second, 0), 0u) << "case " << k << ": " << e;

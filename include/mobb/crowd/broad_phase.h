@@ -121,7 +121,7 @@ private:
         return (std::uint64_t(ix) << 32) ^ (std::uint64_t(iy) & 0xffffffffull);
     }
 
-    double cell_, inv_cell_;
+    double inv_cell_;
     double x0_ = 0, y0_ = 0;  // origin of the cells
     // Emptied cells keep their (empty) arrays: agents walk back and forth over the same ground, and
     // reusing the arrays saves an allocation per cell per clip.
