@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     add_query(app, exit_code);
     add_batch(app, exit_code);
     add_crowd_commands(app, exit_code);
+    add_record_commands(app, exit_code);
     add_scenario_commands(app, exit_code);
     add_bench_commands(app, exit_code);
 #ifdef MOBB_WITH_VIEWER
