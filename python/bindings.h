@@ -27,5 +27,6 @@ Placement placement_from(const py::handle& object, const std::string& what);
 void add_clip(py::module_& m);   // clip.cpp: Clip, load
 void add_query(py::module_& m);  // query.cpp: Tree, ClipIndex, collide, collide_batch, clearance
 void add_crowd(py::module_& m);  // crowd.cpp: crowd
+void add_record(py::module_& m);  // record.cpp: read_record
 
 }  // namespace mobb::python

@@ -17,4 +17,5 @@ graph), ValueError (bad options or input), TypeError (wrong kinds of object).)do
     mobb::python::add_clip(m);
     mobb::python::add_query(m);
     mobb::python::add_crowd(m);
+    mobb::python::add_record(m);
 }

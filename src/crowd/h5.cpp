@@ -173,6 +173,34 @@ std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, con
     return out;
 }
 
+template <class T>
+std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
+                           hsize_t count) {
+    if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) throw Error(path + ": missing");
+    const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
+    const Id space(H5Dget_space(set.get()), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+    if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
+        !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
+        throw Error(path + ": unexpected shape");
+    if (first + count > dims[0])
+        throw Error(path + ": rows " + std::to_string(first) + " to " + std::to_string(first + count) + ", it has " +
+                    std::to_string(dims[0]));
+    std::vector<hsize_t> start(dims.size(), 0), counts = dims;
+    start[0] = first, counts[0] = count;
+    std::vector<T> out(std::size_t(count * row_size(Layout{inner})));
+    if (count == 0) return out;
+    H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
+    const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
+    if (H5Dread(set.get(), native<T>(), mem.get(), space.get(), H5P_DEFAULT, out.data()) < 0)
+        throw Error(path + " rows " + std::to_string(first) + " to " + std::to_string(first + count) +
+                    ": cannot read (truncated or corrupt)");
+    return out;
+}
+
+template std::vector<double> read_window(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t, hsize_t);
 template void write_numbers(hid_t, const char*, const std::vector<std::int64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<std::uint64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<double>&);

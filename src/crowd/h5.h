@@ -76,4 +76,9 @@ void write_rows(hid_t file, const std::string& path, const std::vector<T>& data,
 template <class T>
 std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner);
 
+/// Rows first .. first + count - 1 of dataset `path` (shape checked as read_rows does), read alone.
+template <class T>
+std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
+                           hsize_t count);
+
 }  // namespace mobb::crowd::h5

@@ -1,6 +1,7 @@
 // Reading a crowd record from HDF5 (the layout in docs/formats.md): the file's datasets are read block by
 // block into the JSON layout, which the JSON reader then checks field by field, so both kinds of file
 // hold a record to the same rules and name a bad field the same way.
+#include <algorithm>
 #include <cmath>
 
 #include "h5.h"
@@ -242,6 +243,37 @@ RecordFile read_h5_record(const std::string& file) {
     out.summary_json = j["summary"].dump();
     if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
     return out;
+}
+
+}  // namespace mobb::crowd
+
+namespace mobb::crowd {
+
+SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::int64_t last) {
+    h5::quiet();
+    if (H5Fis_hdf5(file.c_str()) <= 0) throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
+    SampleWindow w;
+    try {
+        const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+        if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
+        const J j = header(f.get());
+        w.dt = j["dt"].get<double>();
+        w.frames = j["frames"].get<std::int64_t>();
+        const std::int64_t agents = j["agents"].get<std::int64_t>();
+        if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
+        w.agents = std::size_t(agents);
+        w.first = std::clamp<std::int64_t>(first, 0, w.frames);
+        w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
+        const D v = h5::read_window<double>(f.get(), "/tracks/samples", {hsize_t(agents), 4}, hsize_t(w.first),
+                                            hsize_t(w.last - w.first));
+        w.samples.resize(v.size() / 4);
+        for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
+        w.summary_json = j["summary"].dump();
+        if (j.contains("metrics")) w.metrics_json = j["metrics"].dump();
+    } catch (const h5::Error& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+    return w;
 }
 
 }  // namespace mobb::crowd

@@ -22,6 +22,7 @@ RecordFile read_json_record(const std::string& file);
 
 /// Reads an HDF5 record file (record_h5_read.cpp); writes one (record_h5_write.cpp).
 RecordFile read_h5_record(const std::string& file);
+SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::int64_t last);
 void write_h5_record(const std::string& file, const Record& r, const std::string& summary_json,
                      const std::string& metrics_json);
 

@@ -3,7 +3,10 @@
 // block by block and flushed after each, read by h5py. Both hold the same fields: a record converts
 // either way (`mobb record convert`) and back to the same bytes.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "mobb/crowd/record.h"
 
@@ -28,5 +31,23 @@ RecordFile read_record_file(const std::string& file);
 /// "FILE: cannot write ..." when the file cannot be written (a disk full, a missing folder).
 void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,
                        const std::string& metrics_json = "");
+
+/// Frames first .. last - 1 of a record: every agent's disk then, and what the file says of the run.
+struct SampleWindow {
+    double dt = 0;                   ///< seconds per frame
+    std::int64_t frames = 0;         ///< the run's frames
+    std::size_t agents = 0;          ///< the run's agents
+    std::int64_t first = 0, last = 0;
+    /// (last - first) x agents disks [t, x, y, r] (seconds, metres): agent a at frame f is
+    /// samples[(f - first) * agents + a]; NaN from the frame it left the run on.
+    std::vector<std::array<double, 4>> samples;
+    std::string summary_json, metrics_json;
+};
+
+/// Reads frames first .. last - 1 (clamped to the run) of a record file: of an HDF5 file only those
+/// frames' blocks and the header (a long run's window in the time it takes to read the window); of a JSON
+/// file, the whole record (checked as read_record_file does). Throws std::runtime_error as
+/// read_record_file does.
+SampleWindow read_sample_window(const std::string& file, std::int64_t first, std::int64_t last);
 
 }  // namespace mobb::crowd
