@@ -98,35 +98,49 @@ hsize_t row_size(const Layout& l) {
     return n;
 }
 
-template <class T>
-void write_rows(hid_t file, const std::string& path, hsize_t rows, const Layout& layout,
-                const std::function<void(hsize_t, hsize_t, T*)>& fill) {
-    std::vector<hsize_t> dims{rows}, max{H5S_UNLIMITED}, chunk{std::max<hsize_t>(1, layout.block)};
-    for (hsize_t d : layout.inner) dims.push_back(d), max.push_back(d), chunk.push_back(std::max<hsize_t>(1, d));
+Appender::Appender(hid_t file, const std::string& path, hid_t type, const Layout& layout)
+    : file_(file), type_(type), path_(path), layout_(layout) {
+    layout_.block = std::max<hsize_t>(1, layout_.block);
+    std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{layout_.block};
+    for (hsize_t d : layout_.inner) dims.push_back(d), max.push_back(d), chunk.push_back(std::max<hsize_t>(1, d));
     const int rank = int(dims.size());
     const Id space(H5Screate_simple(rank, dims.data(), max.data()), H5Sclose);
     const Id dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
     H5Pset_chunk(dcpl.get(), rank, chunk.data());
     H5Pset_fletcher32(dcpl.get());  // a block damaged on disk is refused, not read as numbers
-    if (layout.compress) H5Pset_shuffle(dcpl.get()), H5Pset_deflate(dcpl.get(), 1);
+    if (layout_.compress) H5Pset_shuffle(dcpl.get()), H5Pset_deflate(dcpl.get(), 1);
     const Id lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
     H5Pset_create_intermediate_group(lcpl.get(), 1);
-    const Id set(H5Dcreate2(file, path.c_str(), native<T>(), space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT),
-                 H5Dclose);
-    if (!set.valid()) throw Error(path + ": cannot create");
-    const hsize_t size = row_size(layout);
-    std::vector<T> block(std::size_t(chunk[0] * size));
-    for (hsize_t first = 0, k = 0; first < rows; first += chunk[0], ++k) {
-        const hsize_t count = std::min(chunk[0], rows - first);
-        fill(first, count, block.data());
-        std::vector<hsize_t> start(std::size_t(rank), 0), counts = dims;
-        start[0] = first, counts[0] = count;
-        const Id file_space(H5Dget_space(set.get()), H5Sclose);
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
-        const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
-        if (H5Dwrite(set.get(), native<T>(), mem.get(), file_space.get(), H5P_DEFAULT, block.data()) < 0 ||
-            H5Fflush(file, H5F_SCOPE_GLOBAL) < 0)
-            throw Error(path + " block " + std::to_string(k) + ": cannot write");
+    set_ = Id(H5Dcreate2(file, path.c_str(), type, space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT), H5Dclose);
+    if (!set_.valid()) throw Error(path + ": cannot create");
+}
+
+void Appender::append(const void* data, hsize_t rows) {
+    if (rows == 0) return;
+    std::vector<hsize_t> dims{rows_ + rows}, start{rows_}, counts{rows};
+    for (hsize_t d : layout_.inner) dims.push_back(d), start.push_back(0), counts.push_back(d);
+    const int rank = int(dims.size());
+    const std::string block = path_ + " block " + std::to_string(rows_ / layout_.block);
+    if (H5Dset_extent(set_.get(), dims.data()) < 0) throw Error(block + ": cannot write");
+    const Id file_space(H5Dget_space(set_.get()), H5Sclose);
+    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
+    const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
+    if (H5Dwrite(set_.get(), type_, mem.get(), file_space.get(), H5P_DEFAULT, data) < 0 ||
+        H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0)
+        throw Error(block + ": cannot write");
+    rows_ += rows;
+}
+
+template <class T>
+void write_rows(hid_t file, const std::string& path, hsize_t rows, const Layout& layout,
+                const std::function<void(hsize_t, hsize_t, T*)>& fill) {
+    Appender out(file, path, native<T>(), layout);
+    const hsize_t block = std::max<hsize_t>(1, layout.block);
+    std::vector<T> buffer(std::size_t(block * row_size(layout)));
+    for (hsize_t first = 0; first < rows; first += block) {
+        const hsize_t count = std::min(block, rows - first);
+        fill(first, count, buffer.data());
+        out.append(buffer.data(), count);
     }
 }
 

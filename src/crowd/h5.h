@@ -61,6 +61,24 @@ struct Layout {
 };
 hsize_t row_size(const Layout& l);
 
+/// A new dataset `path` of rows (Layout) that grows as rows are appended: each append writes its rows,
+/// whole blocks at a time but for the last, and flushes the file.
+class Appender {
+public:
+    Appender(hid_t file, const std::string& path, hid_t type, const Layout& layout);
+    /// Appends `rows` rows (rows * row_size values of the dataset's type at `data`).
+    void append(const void* data, hsize_t rows);
+    hsize_t rows() const { return rows_; }
+    const Layout& layout() const { return layout_; }
+
+private:
+    hid_t file_ = -1, type_ = -1;
+    std::string path_;
+    Layout layout_;
+    Id set_;
+    hsize_t rows_ = 0;
+};
+
 /// Writes `rows` rows as a new dataset `path`, block by block - `fill(first, count, out)` puts rows
 /// first .. first + count - 1 in `out` - flushing the file after each block, so that what is on disk stays
 /// readable up to the last complete block.

@@ -2,10 +2,13 @@
 // the samples by frame blocks, and one group of columns per table, rows in the record's order and tables
 // nested by their owner's row (a candidate's "choice", a query's "candidate").
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <cmath>
 #include <limits>
 
 #include "h5.h"
+#include "mobb/crowd/record_file.h"
 #include "record_json.h"
 
 namespace mobb::crowd {
@@ -85,22 +88,29 @@ void write_samples(hid_t f, const Record& r) {
     });
 }
 
-// Clips placed from a frame on (a plan's escape, its intended clips, a reroute's escape), by owner row.
-struct FramedTable {
-    I owner, clip, frame;
-    D place;
-    void add(std::size_t row, const std::vector<FramedClip>& clips) {
-        for (const FramedClip& c : clips) {
-            owner.push_back(std::int64_t(row)), clip.push_back(c.clip), frame.push_back(c.frame);
-            place.insert(place.end(), {c.place.x, c.place.y, c.place.theta});
-        }
+// A table written as it grows: named columns of int64 (one value a row) and float64 (`width` a row),
+// appended a block of rows at a time.
+class Table {
+public:
+    Table(hid_t f, const std::string& group, std::initializer_list<const char*> ints,
+          std::initializer_list<std::pair<const char*, hsize_t>> reals) {
+        for (const char* name : ints) ints_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_INT64, kColumn), I{});
+        for (const auto& [name, width] : reals)
+            reals_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_DOUBLE, h5::Layout{{width}}), D{});
     }
-    void write(hid_t f, const std::string& group, const char* owner_name) const {
-        h5::write_rows(f, group + "/" + owner_name, owner, kColumn);
-        h5::write_rows(f, group + "/clip", clip, kColumn);
-        h5::write_rows(f, group + "/frame", frame, kColumn);
-        h5::write_rows(f, group + "/place", place, kTriple);
+    I& i(std::size_t k) { return ints_[k].second; }
+    D& d(std::size_t k) { return reals_[k].second; }
+    std::size_t rows() const { return std::size_t(ints_[0].first.rows()) + ints_[0].second.size(); }
+    /// Writes the rows gathered when a block is full (`all`: whatever there is).
+    void flush(bool all) {
+        if (!all && ints_[0].second.size() < kColumn.block) return;
+        for (auto& [out, rows] : ints_) out.append(rows.data(), rows.size()), rows.clear();
+        for (auto& [out, rows] : reals_) out.append(rows.data(), rows.size() / h5::row_size(out.layout())), rows.clear();
     }
+
+private:
+    std::vector<std::pair<h5::Appender, I>> ints_;
+    std::vector<std::pair<h5::Appender, D>> reals_;
 };
 
 std::int64_t outcome_index(const std::string& outcome) {
@@ -110,78 +120,116 @@ std::int64_t outcome_index(const std::string& outcome) {
     return -1;
 }
 
-void write_choices(hid_t f, const Record& r) {
-    I agent, frame, taken, outcome, fallback, queries, tests2d, tests3d, samples, pruned, hold_frame;
-    D hold, reroute_hold;
-    I reroute_choice, reroute_agent, reroute_frame;
-    I cand_choice, cand_clip, outside, cand_queries, hits, crowded;
-    I query_cand, q_agent, q_commit, q_piece, q_mine, q_hit;
-    FramedTable escapes, intended, reroute_escapes;
-    for (std::size_t c = 0; c < r.choices.size(); ++c) {
-        const ChoicePoint& cp = r.choices[c];
-        agent.push_back(cp.agent), frame.push_back(cp.frame), taken.push_back(cp.taken);
-        outcome.push_back(outcome_index(cp.outcome)), fallback.push_back(cp.fallback);
-        queries.push_back(std::int64_t(cp.queries)), tests2d.push_back(std::int64_t(cp.tests2d));
-        tests3d.push_back(std::int64_t(cp.tests3d)), samples.push_back(std::int64_t(cp.samples));
-        pruned.push_back(std::int64_t(cp.pruned));
-        hold_frame.push_back(cp.holds ? cp.hold_frame : -1);
-        hold.insert(hold.end(), {cp.holds ? cp.hold[0] : kNone, cp.holds ? cp.hold[1] : kNone, cp.holds ? cp.hold[2] : kNone});
-        escapes.add(c, cp.escape);
-        intended.add(c, cp.intended);
+// The choice points' tables (docs/formats.md): rows appended as choice points come.
+struct Tables {
+    explicit Tables(hid_t f)
+        : choices(f, "/choices",
+                  {"agent", "frame", "taken", "outcome", "fallback", "queries", "tests2d", "tests3d", "samples", "pruned",
+                   "hold_frame"},
+                  {{"hold", 3}}),
+          escapes(f, "/escapes", {"choice", "clip", "frame"}, {{"place", 3}}),
+          intended(f, "/intended", {"choice", "clip", "frame"}, {{"place", 3}}),
+          reroutes(f, "/reroutes", {"choice", "agent", "hold_frame"}, {{"hold", 3}}),
+          reroute_escapes(f, "/reroute_escapes", {"reroute", "clip", "frame"}, {{"place", 3}}),
+          candidates(f, "/candidates", {"choice", "clip", "outside", "queries", "hits", "crowded"}, {}),
+          queries(f, "/queries", {"candidate", "agent", "commit", "piece", "mine", "hit"}, {}) {}
+
+    static void framed(Table& t, std::size_t owner, const std::vector<FramedClip>& clips) {
+        for (const FramedClip& c : clips) {
+            t.i(0).push_back(std::int64_t(owner)), t.i(1).push_back(c.clip), t.i(2).push_back(c.frame);
+            t.d(0).insert(t.d(0).end(), {c.place.x, c.place.y, c.place.theta});
+        }
+    }
+
+    void add(std::size_t c, const ChoicePoint& cp) {
+        const std::int64_t row[] = {cp.agent, cp.frame, cp.taken, outcome_index(cp.outcome), cp.fallback,
+                                    std::int64_t(cp.queries), std::int64_t(cp.tests2d), std::int64_t(cp.tests3d),
+                                    std::int64_t(cp.samples), std::int64_t(cp.pruned), cp.holds ? cp.hold_frame : -1};
+        for (std::size_t k = 0; k < std::size(row); ++k) choices.i(k).push_back(row[k]);
+        for (std::size_t k = 0; k < 3; ++k) choices.d(0).push_back(cp.holds ? cp.hold[k] : kNone);
+        framed(escapes, c, cp.escape);
+        framed(intended, c, cp.intended);
         for (const ReroutedPlan& p : cp.reroutes) {
-            reroute_escapes.add(reroute_choice.size(), p.escape);
-            reroute_choice.push_back(std::int64_t(c)), reroute_agent.push_back(p.agent), reroute_frame.push_back(p.hold_frame);
-            reroute_hold.insert(reroute_hold.end(), p.hold.begin(), p.hold.end());
+            framed(reroute_escapes, reroutes.rows(), p.escape);
+            reroutes.i(0).push_back(std::int64_t(c)), reroutes.i(1).push_back(p.agent), reroutes.i(2).push_back(p.hold_frame);
+            reroutes.d(0).insert(reroutes.d(0).end(), p.hold.begin(), p.hold.end());
         }
         for (const Candidate& k : cp.candidates) {
             for (const CandidateQuery& q : k.against) {
-                query_cand.push_back(std::int64_t(cand_choice.size())), q_agent.push_back(q.agent);
-                q_commit.push_back(q.commit), q_piece.push_back(q.piece), q_mine.push_back(q.mine), q_hit.push_back(q.hit);
+                const std::int64_t r[] = {std::int64_t(candidates.rows()), q.agent, q.commit, q.piece, q.mine, q.hit};
+                for (std::size_t j = 0; j < 6; ++j) queries.i(j).push_back(r[j]);
             }
-            cand_choice.push_back(std::int64_t(c)), cand_clip.push_back(k.clip), outside.push_back(k.outside);
-            cand_queries.push_back(k.queries), hits.push_back(k.hits), crowded.push_back(k.crowded);
+            const std::int64_t r[] = {std::int64_t(c), k.clip, k.outside, k.queries, k.hits, k.crowded};
+            for (std::size_t j = 0; j < 6; ++j) candidates.i(j).push_back(r[j]);
         }
+        for (Table* t : all()) t->flush(false);
     }
-    const auto columns = [&](const std::string& group, std::initializer_list<std::pair<const char*, const I*>> list) {
-        for (const auto& [name, column] : list) h5::write_rows(f, group + "/" + name, *column, kColumn);
-    };
-    columns("/choices", {{"agent", &agent}, {"frame", &frame}, {"taken", &taken}, {"outcome", &outcome},
-                         {"fallback", &fallback}, {"queries", &queries}, {"tests2d", &tests2d}, {"tests3d", &tests3d},
-                         {"samples", &samples}, {"pruned", &pruned}, {"hold_frame", &hold_frame}});
-    h5::write_rows(f, "/choices/hold", hold, kTriple);
-    escapes.write(f, "/escapes", "choice");
-    intended.write(f, "/intended", "choice");
-    columns("/reroutes", {{"choice", &reroute_choice}, {"agent", &reroute_agent}, {"hold_frame", &reroute_frame}});
-    h5::write_rows(f, "/reroutes/hold", reroute_hold, kTriple);
-    reroute_escapes.write(f, "/reroute_escapes", "reroute");
-    columns("/candidates", {{"choice", &cand_choice}, {"clip", &cand_clip}, {"outside", &outside},
-                            {"queries", &cand_queries}, {"hits", &hits}, {"crowded", &crowded}});
-    columns("/queries", {{"candidate", &query_cand}, {"agent", &q_agent}, {"commit", &q_commit},
-                         {"piece", &q_piece}, {"mine", &q_mine}, {"hit", &q_hit}});
-}
+
+    std::array<Table*, 7> all() { return {&choices, &escapes, &intended, &reroutes, &reroute_escapes, &candidates, &queries}; }
+
+    Table choices, escapes, intended, reroutes, reroute_escapes, candidates, queries;
+};
 
 }  // namespace
 
-void write_h5_record(const std::string& file, const Record& r, const std::string& summary_json,
-                     const std::string& metrics_json) {
+struct H5RecordWriter::Impl {
+    std::string file;
+    h5::Id f;
+    std::unique_ptr<Tables> tables;
+    std::size_t choices = 0;
+};
+
+H5RecordWriter::H5RecordWriter(const std::string& file) : impl_(std::make_unique<Impl>()) {
     h5::quiet();
+    impl_->file = file;
     try {
-        const h5::Id f(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-        if (!f.valid()) throw h5::Error("cannot create");
-        write_header(f.get(), r, summary_json, metrics_json);
-        h5::write_numbers<std::int64_t>(f.get(), "complete", {0});
-        write_obstacles(f.get(), r.world);
-        write_tracks(f.get(), r);
-        write_choices(f.get(), r);
-        write_samples(f.get(), r);
-        // Last: a reader tells a finished file from one whose writing stopped (killed, disk full).
-        const h5::Id done(H5Aopen(f.get(), "complete", H5P_DEFAULT), H5Aclose);
-        const std::int64_t one = 1;
-        if (H5Awrite(done.get(), H5T_NATIVE_INT64, &one) < 0 || H5Fflush(f.get(), H5F_SCOPE_GLOBAL) < 0)
-            throw h5::Error("cannot write");
+        impl_->f = h5::Id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        if (!impl_->f.valid()) throw h5::Error("cannot create");
+        h5::write_numbers<std::int64_t>(impl_->f.get(), "complete", {0});
+        impl_->tables = std::make_unique<Tables>(impl_->f.get());
     } catch (const h5::Error& e) {
         throw std::runtime_error(file + ": " + e.what());
     }
+}
+
+H5RecordWriter::~H5RecordWriter() = default;
+
+void H5RecordWriter::choice(std::size_t index, const ChoicePoint& choice) {
+    try {
+        if (index != impl_->choices) throw h5::Error("choice point " + std::to_string(index) + " sent out of order");
+        impl_->tables->add(index, choice);
+        ++impl_->choices;
+    } catch (const h5::Error& e) {
+        throw std::runtime_error(impl_->file + ": " + e.what());
+    }
+}
+
+void H5RecordWriter::finish(const Record& r, const std::string& summary_json, const std::string& metrics_json) {
+    try {
+        if (impl_->choices != r.choices.size())
+            throw h5::Error(std::to_string(impl_->choices) + " choice points sent, the record has " +
+                            std::to_string(r.choices.size()));
+        for (Table* t : impl_->tables->all()) t->flush(true);
+        const hid_t f = impl_->f.get();
+        write_header(f, r, summary_json, metrics_json);
+        write_obstacles(f, r.world);
+        write_tracks(f, r);
+        write_samples(f, r);
+        // Last: a reader tells a finished file from one whose writing stopped (killed, disk full).
+        const h5::Id done(H5Aopen(f, "complete", H5P_DEFAULT), H5Aclose);
+        const std::int64_t one = 1;
+        if (H5Awrite(done.get(), H5T_NATIVE_INT64, &one) < 0 || H5Fflush(f, H5F_SCOPE_GLOBAL) < 0)
+            throw h5::Error("cannot write");
+    } catch (const h5::Error& e) {
+        throw std::runtime_error(impl_->file + ": " + e.what());
+    }
+}
+
+void write_h5_record(const std::string& file, const Record& r, const std::string& summary_json,
+                     const std::string& metrics_json) {
+    H5RecordWriter out(file);
+    for (std::size_t c = 0; c < r.choices.size(); ++c) out.choice(c, r.choices[c]);
+    out.finish(r, summary_json, metrics_json);
 }
 
 }  // namespace mobb::crowd

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,24 @@ RecordFile read_record_file(const std::string& file);
 /// "FILE: cannot write ..." when the file cannot be written (a disk full, a missing folder).
 void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,
                        const std::string& metrics_json = "");
+
+/// An HDF5 record written as the run goes (CrowdOptions::sink): each choice point - candidates and queries
+/// included - appended to the file's tables, a block (4,096 rows) at a time, flushed after each; the rest
+/// (header, tracks, samples, summary, metrics) by finish() when the run ends. A writer stopped before
+/// finish() (killed, a full disk) leaves a file HDF5 opens, its tables as at the last block, marked
+/// incomplete (read_record_file refuses it in one line). Errors: std::runtime_error "FILE: PLACE: ...".
+class H5RecordWriter : public RecordSink {
+public:
+    explicit H5RecordWriter(const std::string& file);  ///< creates (replaces) the file
+    ~H5RecordWriter() override;
+    void choice(std::size_t index, const ChoicePoint& choice) override;
+    /// Writes the rest of `record`, whose choice points are those sent (their count is checked).
+    void finish(const Record& record, const std::string& summary_json, const std::string& metrics_json);
+
+private:
+    struct Impl;  // the file and its tables (src/crowd/record_h5_write.cpp)
+    std::unique_ptr<Impl> impl_;
+};
 
 /// Frames first .. last - 1 of a record: every agent's disk then, and what the file says of the run.
 struct SampleWindow {
