@@ -12,6 +12,7 @@
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/record_file.h"
 #include "mobb/crowd/scenario.h"
 #include "mobb/util/worker_pool.h"
 
@@ -150,11 +151,7 @@ py::dict run(const CrowdArgs& args) {
         metrics = crowd::crowd_metrics(result.record, graph, options.goal_radius);
     }
     const std::string summary = crowd::summary_json(result.summary), metrics_text = crowd::metrics_json(metrics);
-    if (args.record) {
-        std::ofstream f(*args.record);
-        f << crowd::record_to_text(result.record, summary, metrics_text);
-        if (!f) throw std::runtime_error(*args.record + ": cannot write");
-    }
+    if (args.record) crowd::write_record_file(*args.record, result.record, summary, metrics_text);
     py::dict s = loads(summary);
     s["threads"] = result.summary.threads;
     s["seconds"] = result.summary.seconds;
@@ -208,7 +205,8 @@ seconds   simulated seconds (default 120); select "avoid" (default), "random" or
 seed      random seed; cell broad-phase grid cell (metres); threads (0: every core; the result is the
           same for any count; the GIL is released while it runs);
 tree      None: the circle sweep; else a tree type ("mobb", "umobb", ...) whose counters fill the summary;
-scenario  a scenario JSON (it sets agents, world, select and seconds); record: write the record there.
+scenario  a scenario JSON (it sets agents, world, select and seconds); record: write the record there
+          (JSON, or HDF5 for .h5; mobb.read_record reads it).
 Returns a dict: summary (the record's counts, plus threads, seconds and cd_seconds of wall time),
 metrics (as `mobb crowd` prints them), tracks ((agents, frames, 4) float64 array of every agent's disk
 (t, x, y, r) per frame, seconds and metres; NaN from the frame an agent left the run on), clips (per

@@ -18,4 +18,5 @@ graph), ValueError (bad options or input), TypeError (wrong kinds of object).)do
     mobb::python::add_query(m);
     mobb::python::add_crowd(m);
     mobb::python::add_poses(m);
+    mobb::python::add_record(m);
 }

@@ -5,6 +5,8 @@ find_package(assimp CONFIG REQUIRED)           # libassimp-dev (FBX, Collada, ..
 find_package(nlohmann_json CONFIG REQUIRED)    # nlohmann-json3-dev
 find_package(CLI11 CONFIG REQUIRED)            # libcli11-dev
 find_package(tinyxml2 CONFIG REQUIRED)         # libtinyxml2-dev (SteerSuite test cases)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(HDF5 REQUIRED IMPORTED_TARGET hdf5)  # libhdf5-dev: crowd records in HDF5 (its C API)
 if(MOBB_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)          # libgtest-dev
 endif()

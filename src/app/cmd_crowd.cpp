@@ -9,6 +9,7 @@
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/record_file.h"
 #include "mobb/crowd/scenario.h"
 #include "mobb/util/worker_pool.h"
 
@@ -94,7 +95,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
                     "Worker threads for the choice points (the record is the same for any count)")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
-    cmd->add_option("--record", *record, "Write the record (JSON) to this file");
+    cmd->add_option("--record", *record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
     cmd->add_option("--scenario", *scenario,
                     "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
     // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
@@ -151,11 +152,9 @@ void add_crowd(CLI::App& app, int& exit_code) {
             run.record.graph = file;
             run.record.scenario = s.name;
             const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);
-            if (!record->empty()) {
-                std::ofstream f(*record);
-                f << crowd::record_to_text(run.record, crowd::summary_json(run.summary), crowd::metrics_json(metrics));
-                if (!f) throw InputError(*record + ": cannot write");
-            }
+            if (!record->empty())
+                crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary),
+                                         crowd::metrics_json(metrics));
             if (!s.name.empty()) out << "scenario " << s.name << ": ";
             out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, "
                 << opt.seconds << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase "

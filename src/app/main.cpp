@@ -17,6 +17,7 @@ int run(int argc, char** argv) {
     add_query(app, exit_code);
     add_batch(app, exit_code);
     add_crowd_commands(app, exit_code);
+    add_record_commands(app, exit_code);
     add_scenario_commands(app, exit_code);
     add_bench_commands(app, exit_code);
     add_export_commands(app, exit_code);

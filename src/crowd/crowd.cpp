@@ -281,7 +281,8 @@ void Simulation::commit(Choice& c) {
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
-    if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
+    if (o_.sink) o_.sink->choice(out_.record.choices.size(), cp);
+    if (o_.record_queries && !o_.sink) return out_.record.choices.push_back(std::move(cp));
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
     std::vector<Candidate> candidates = std::move(cp.candidates);
     out_.record.choices.push_back(std::move(cp));

@@ -97,6 +97,31 @@ TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
     EXPECT_TRUE(text[2] == text[0]);
 }
 
+// --record by extension: the HDF5 record of a run converts to its JSON record byte for byte, and back; a
+// file cut short is refused in one line naming it, exit 1, nothing on stdout and no file written.
+TEST(CrowdCli, RecordConvertBothWays) {
+    const std::string args = "crowd --quiet --graph " + kGraph + " --agents 12 --seconds 6 --world 12x14 --record ";
+    const std::string json = temp_file("conv.json"), h5 = temp_file("conv.h5"), back = temp_file("back.json"),
+                      again = temp_file("again.h5"), cut = temp_file("cut.h5"), none = temp_file("none.json");
+    ASSERT_EQ(run(args + json).code, 0);
+    ASSERT_EQ(run(args + h5).code, 0);
+    const Result r = run("record convert " + h5 + " " + back);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("12 agents, 180 frames"), std::string::npos) << r.out;
+    EXPECT_TRUE(test::slurp(back) == test::slurp(json));
+    ASSERT_EQ(run("record convert " + json + " " + again).code, 0);
+    ASSERT_EQ(run("record convert " + again + " " + back).code, 0);
+    EXPECT_TRUE(test::slurp(back) == test::slurp(json));
+    std::ofstream(cut, std::ios::binary) << test::slurp(h5).substr(0, 20000);
+    const Result bad = run("record convert " + cut + " " + none);
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(bad.err.rfind("error: " + cut + ": ", 0), 0u) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_FALSE(std::ifstream(none).good());
+    for (const std::string& f : {json, h5, back, again, cut}) std::remove(f.c_str());
+}
+
 TEST(CrowdCli, ScenarioRunsToItsGoals) {
     const std::string rec = temp_file("scenario.json");
     const Result r = run("crowd --quiet --graph " + kGraph + " --scenario " + std::string(MOBB_SOURCE_DIR) +

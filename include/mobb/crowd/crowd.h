@@ -39,6 +39,10 @@ struct CrowdOptions {
     /// digests; off, the record's choice points keep only their counts, not their candidates (the runs are
     /// otherwise the same).
     bool record_queries = true;
+    /// When set, each choice point goes there as it is committed, its candidates (with record_queries)
+    /// included, and the record's choice points keep only their counts, plan and outcome - a long run's
+    /// candidates and queries are not held in memory.
+    RecordSink* sink = nullptr;
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;

@@ -145,6 +145,15 @@ struct Record {
     std::vector<ChoicePoint> choices;
 };
 
+/// Where a run sends its choice points as it commits them (CrowdOptions::sink): a record file written as
+/// the run goes (record_file.h). Called from the simulation's thread, in commit order, the index being the
+/// choice point's in Record::choices.
+class RecordSink {
+public:
+    virtual ~RecordSink() = default;
+    virtual void choice(std::size_t index, const ChoicePoint& choice) = 0;
+};
+
 /// Two agents' disks overlapping at one global frame: |p_a - p_b| < r_a + r_b (the core's sample test).
 struct Contact {
     std::int64_t frame = 0;

@@ -1,0 +1,72 @@
+// Crowd record files, by extension: JSON (".json" and anything else; the layout in record.h) for small
+// runs and tests, HDF5 (".h5", ".hdf5"; the layout in docs/formats.md) for large ones - chunked, written
+// block by block and flushed after each, read by h5py. Both hold the same fields: a record converts
+// either way (`mobb record convert`) and back to the same bytes.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mobb/crowd/record.h"
+
+namespace mobb::crowd {
+
+/// A record file's contents: the record, and its "summary" and "metrics" objects as JSON text (empty
+/// when the file has none).
+struct RecordFile {
+    Record record;
+    std::string summary_json, metrics_json;
+};
+
+/// Whether `file` names an HDF5 record (extension .h5 or .hdf5).
+bool is_h5_record(const std::string& file);
+
+/// Reads a record file of either kind, every field checked as load_record says. Throws
+/// std::runtime_error, one line naming the file and the place: "FILE: PLACE: message" (a JSON place like
+/// tracks[2].samples[7][3], an HDF5 one like /choices/agent block 3).
+RecordFile read_record_file(const std::string& file);
+
+/// Writes the record to `file` (its kind by extension), replacing it. Throws std::runtime_error
+/// "FILE: cannot write ..." when the file cannot be written (a disk full, a missing folder).
+void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,
+                       const std::string& metrics_json = "");
+
+/// An HDF5 record written as the run goes (CrowdOptions::sink): each choice point - candidates and queries
+/// included - appended to the file's tables, a block (4,096 rows) at a time, flushed after each; the rest
+/// (header, tracks, samples, summary, metrics) by finish() when the run ends. A writer stopped before
+/// finish() (killed, a full disk) leaves a file HDF5 opens, its tables as at the last block, marked
+/// incomplete (read_record_file refuses it in one line). Errors: std::runtime_error "FILE: PLACE: ...".
+class H5RecordWriter : public RecordSink {
+public:
+    explicit H5RecordWriter(const std::string& file);  ///< creates (replaces) the file
+    ~H5RecordWriter() override;
+    void choice(std::size_t index, const ChoicePoint& choice) override;
+    /// Writes the rest of `record`, whose choice points are those sent (their count is checked).
+    void finish(const Record& record, const std::string& summary_json, const std::string& metrics_json);
+
+private:
+    struct Impl;  // the file and its tables (src/crowd/record_h5_write.cpp)
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Frames first .. last - 1 of a record: every agent's disk then, and what the file says of the run.
+struct SampleWindow {
+    double dt = 0;                   ///< seconds per frame
+    std::int64_t frames = 0;         ///< the run's frames
+    std::size_t agents = 0;          ///< the run's agents
+    std::int64_t first = 0, last = 0;
+    /// (last - first) x agents disks [t, x, y, r] (seconds, metres): agent a at frame f is
+    /// samples[(f - first) * agents + a]; NaN from the frame it left the run on.
+    std::vector<std::array<double, 4>> samples;
+    std::string summary_json, metrics_json;
+};
+
+/// Reads frames first .. last - 1 (clamped to the run) of a record file: of an HDF5 file only those
+/// frames' blocks and the header (a long run's window in the time it takes to read the window); of a JSON
+/// file, the whole record (checked as read_record_file does). Throws std::runtime_error as
+/// read_record_file does.
+SampleWindow read_sample_window(const std::string& file, std::int64_t first, std::int64_t last);
+
+}  // namespace mobb::crowd

@@ -1,0 +1,233 @@
+#include "h5.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace mobb::crowd::h5 {
+
+Id& Id::operator=(Id&& o) noexcept {
+    std::swap(id_, o.id_);
+    std::swap(close_, o.close_);
+    return *this;
+}
+
+Id::~Id() {
+    if (id_ >= 0 && close_) close_(id_);
+}
+
+void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+template <>
+hid_t native<std::int64_t>() { return H5T_NATIVE_INT64; }
+template <>
+hid_t native<std::uint64_t>() { return H5T_NATIVE_UINT64; }
+template <>
+hid_t native<double>() { return H5T_NATIVE_DOUBLE; }
+
+namespace {
+
+Id text_type() {
+    Id t(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(t.get(), H5T_VARIABLE);
+    H5Tset_cset(t.get(), H5T_CSET_UTF8);
+    return t;
+}
+
+void check(herr_t status, const std::string& place, const char* what) {
+    if (status < 0) throw Error(place + ": cannot " + what);
+}
+
+Id open_attribute(hid_t object, const char* name) {
+    if (H5Aexists(object, name) <= 0) return {};
+    return Id(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+}
+
+}  // namespace
+
+void write_text(hid_t object, const char* name, const std::string& text) {
+    const Id type = text_type();
+    const Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    const Id a(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    const char* p = text.c_str();
+    check(a.valid() ? H5Awrite(a.get(), type.get(), &p) : -1, std::string("attribute ") + name, "write");
+}
+
+template <class T>
+void write_numbers(hid_t object, const char* name, const std::vector<T>& values) {
+    const hsize_t n = values.size();
+    const Id space(values.size() == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose);
+    const Id a(H5Acreate2(object, name, native<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    check(a.valid() ? H5Awrite(a.get(), native<T>(), values.data()) : -1, std::string("attribute ") + name, "write");
+}
+
+std::optional<std::string> read_text(hid_t object, const char* name) {
+    const Id a = open_attribute(object, name);
+    if (!a.valid()) return std::nullopt;
+    const Id type(H5Aget_type(a.get()), H5Tclose);
+    const Id space(H5Aget_space(a.get()), H5Sclose);
+    const std::string place = std::string("attribute ") + name;
+    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) <= 0 ||
+        H5Sget_simple_extent_npoints(space.get()) != 1)
+        throw Error(place + ": expected one text");
+    const Id mem = text_type();
+    char* p = nullptr;
+    check(H5Aread(a.get(), mem.get(), &p), place, "read");
+    std::string out = p ? p : "";
+    H5free_memory(p);
+    return out;
+}
+
+template <class T>
+std::optional<std::vector<T>> read_numbers(hid_t object, const char* name) {
+    const Id a = open_attribute(object, name);
+    if (!a.valid()) return std::nullopt;
+    const Id type(H5Aget_type(a.get()), H5Tclose);
+    const Id space(H5Aget_space(a.get()), H5Sclose);
+    const std::string place = std::string("attribute ") + name;
+    const H5T_class_t c = H5Tget_class(type.get());
+    const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+    if ((c != H5T_INTEGER && c != H5T_FLOAT) || n < 1 || n > 1024) throw Error(place + ": expected numbers");
+    std::vector<T> out(static_cast<std::size_t>(n));
+    check(H5Aread(a.get(), native<T>(), out.data()), place, "read");
+    return out;
+}
+
+hsize_t row_size(const Layout& l) {
+    hsize_t n = 1;
+    for (hsize_t d : l.inner) n *= d;
+    return n;
+}
+
+Appender::Appender(hid_t file, const std::string& path, hid_t type, const Layout& layout)
+    : file_(file), type_(type), path_(path), layout_(layout) {
+    layout_.block = std::max<hsize_t>(1, layout_.block);
+    std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{layout_.block};
+    for (hsize_t d : layout_.inner) dims.push_back(d), max.push_back(d), chunk.push_back(std::max<hsize_t>(1, d));
+    const int rank = int(dims.size());
+    const Id space(H5Screate_simple(rank, dims.data(), max.data()), H5Sclose);
+    const Id dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    H5Pset_chunk(dcpl.get(), rank, chunk.data());
+    H5Pset_fletcher32(dcpl.get());  // a block damaged on disk is refused, not read as numbers
+    if (layout_.compress) H5Pset_shuffle(dcpl.get()), H5Pset_deflate(dcpl.get(), 1);
+    const Id lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+    H5Pset_create_intermediate_group(lcpl.get(), 1);
+    set_ = Id(H5Dcreate2(file, path.c_str(), type, space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT), H5Dclose);
+    if (!set_.valid()) throw Error(path + ": cannot create");
+}
+
+void Appender::append(const void* data, hsize_t rows) {
+    if (rows == 0) return;
+    std::vector<hsize_t> dims{rows_ + rows}, start{rows_}, counts{rows};
+    for (hsize_t d : layout_.inner) dims.push_back(d), start.push_back(0), counts.push_back(d);
+    const int rank = int(dims.size());
+    const std::string block = path_ + " block " + std::to_string(rows_ / layout_.block);
+    if (H5Dset_extent(set_.get(), dims.data()) < 0) throw Error(block + ": cannot write");
+    const Id file_space(H5Dget_space(set_.get()), H5Sclose);
+    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
+    const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
+    if (H5Dwrite(set_.get(), type_, mem.get(), file_space.get(), H5P_DEFAULT, data) < 0 ||
+        H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0)
+        throw Error(block + ": cannot write");
+    rows_ += rows;
+}
+
+template <class T>
+void write_rows(hid_t file, const std::string& path, hsize_t rows, const Layout& layout,
+                const std::function<void(hsize_t, hsize_t, T*)>& fill) {
+    Appender out(file, path, native<T>(), layout);
+    const hsize_t block = std::max<hsize_t>(1, layout.block);
+    std::vector<T> buffer(std::size_t(block * row_size(layout)));
+    for (hsize_t first = 0; first < rows; first += block) {
+        const hsize_t count = std::min(block, rows - first);
+        fill(first, count, buffer.data());
+        out.append(buffer.data(), count);
+    }
+}
+
+template <class T>
+void write_rows(hid_t file, const std::string& path, const std::vector<T>& data, const Layout& layout) {
+    const hsize_t size = row_size(layout);
+    write_rows<T>(file, path, data.size() / size, layout, [&](hsize_t first, hsize_t count, T* out) {
+        std::copy_n(data.data() + first * size, count * size, out);
+    });
+}
+
+template <class T>
+std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner) {
+    if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+    const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
+    const Id space(H5Dget_space(set.get()), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+    if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
+        !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
+        throw Error(path + ": unexpected shape");
+    const Id type(H5Dget_type(set.get()), H5Tclose);
+    const H5T_class_t c = H5Tget_class(type.get());
+    if (c != H5T_INTEGER && c != H5T_FLOAT) throw Error(path + ": expected numbers");
+    const Id dcpl(H5Dget_create_plist(set.get()), H5Pclose);
+    std::vector<hsize_t> chunk(dims.size(), 0);
+    hsize_t block = dims[0];
+    if (H5Pget_layout(dcpl.get()) == H5D_CHUNKED && H5Pget_chunk(dcpl.get(), rank, chunk.data()) == rank)
+        block = std::max<hsize_t>(1, chunk[0]);
+    hsize_t size = 1;
+    for (hsize_t d : inner) size *= d;
+    if (dims[0] > (hsize_t(1) << 40) / std::max<hsize_t>(1, size)) throw Error(path + ": too large");
+    std::vector<T> out(std::size_t(dims[0] * size));
+    for (hsize_t first = 0, k = 0; first < dims[0]; first += block, ++k) {
+        std::vector<hsize_t> start(dims.size(), 0), counts = dims;
+        start[0] = first, counts[0] = std::min(block, dims[0] - first);
+        const Id file_space(H5Dget_space(set.get()), H5Sclose);
+        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
+        const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
+        if (H5Dread(set.get(), native<T>(), mem.get(), file_space.get(), H5P_DEFAULT, out.data() + first * size) < 0)
+            throw Error(path + " block " + std::to_string(k) + ": cannot read (truncated or corrupt)");
+    }
+    return out;
+}
+
+template <class T>
+std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
+                           hsize_t count) {
+    if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) throw Error(path + ": missing");
+    const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
+    const Id space(H5Dget_space(set.get()), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+    if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
+        !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
+        throw Error(path + ": unexpected shape");
+    if (first + count > dims[0])
+        throw Error(path + ": rows " + std::to_string(first) + " to " + std::to_string(first + count) + ", it has " +
+                    std::to_string(dims[0]));
+    std::vector<hsize_t> start(dims.size(), 0), counts = dims;
+    start[0] = first, counts[0] = count;
+    std::vector<T> out(std::size_t(count * row_size(Layout{inner})));
+    if (count == 0) return out;
+    H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
+    const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
+    if (H5Dread(set.get(), native<T>(), mem.get(), space.get(), H5P_DEFAULT, out.data()) < 0)
+        throw Error(path + " rows " + std::to_string(first) + " to " + std::to_string(first + count) +
+                    ": cannot read (truncated or corrupt)");
+    return out;
+}
+
+template std::vector<double> read_window(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t, hsize_t);
+template void write_numbers(hid_t, const char*, const std::vector<std::int64_t>&);
+template void write_numbers(hid_t, const char*, const std::vector<std::uint64_t>&);
+template void write_numbers(hid_t, const char*, const std::vector<double>&);
+template std::optional<std::vector<std::int64_t>> read_numbers(hid_t, const char*);
+template std::optional<std::vector<std::uint64_t>> read_numbers(hid_t, const char*);
+template std::optional<std::vector<double>> read_numbers(hid_t, const char*);
+template void write_rows(hid_t, const std::string&, hsize_t, const Layout&,
+                         const std::function<void(hsize_t, hsize_t, std::int64_t*)>&);
+template void write_rows(hid_t, const std::string&, hsize_t, const Layout&,
+                         const std::function<void(hsize_t, hsize_t, double*)>&);
+template void write_rows(hid_t, const std::string&, const std::vector<std::int64_t>&, const Layout&);
+template void write_rows(hid_t, const std::string&, const std::vector<double>&, const Layout&);
+template std::optional<std::vector<std::int64_t>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
+template std::optional<std::vector<double>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
+
+}  // namespace mobb::crowd::h5

@@ -1,0 +1,279 @@
+// Reading a crowd record from HDF5 (the layout in docs/formats.md): the file's datasets are read block by
+// block into the JSON layout, which the JSON reader then checks field by field, so both kinds of file
+// hold a record to the same rules and name a bad field the same way.
+#include <algorithm>
+#include <cmath>
+
+#include "h5.h"
+#include "mobb/util/json_text.h"
+#include "record_json.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+using J = nlohmann::ordered_json;
+using I = std::vector<std::int64_t>;
+using D = std::vector<double>;
+
+template <class T>
+T one(hid_t f, const char* name) {
+    const auto v = h5::read_numbers<T>(f, name);
+    if (!v || v->size() != 1) throw h5::Error(std::string("attribute ") + name + ": expected one number");
+    return v->front();
+}
+
+std::string text(hid_t f, const char* name) {
+    const auto v = h5::read_text(f, name);
+    if (!v) throw h5::Error(std::string("attribute ") + name + ": missing");
+    return *v;
+}
+
+J object(hid_t f, const char* name) {
+    const auto v = h5::read_text(f, name);
+    if (!v) return nullptr;
+    J j = J::parse(*v, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) throw h5::Error(std::string("attribute ") + name + ": expected a JSON object");
+    return j;
+}
+
+template <class T>
+std::vector<T> rows(hid_t f, const std::string& path, std::vector<hsize_t> inner = {}) {
+    auto v = h5::read_rows<T>(f, path, inner);
+    if (!v) throw h5::Error(path + ": missing");
+    return std::move(*v);
+}
+
+// A table's columns, all of one length `n` (the first column's): the rows of the table.
+std::size_t same_rows(const std::string& group, std::initializer_list<std::pair<const char*, std::size_t>> sizes) {
+    const std::size_t n = sizes.begin()->second;
+    for (const auto& [name, size] : sizes)
+        if (size != n)
+            throw h5::Error(group + "/" + name + ": " + std::to_string(size) + " rows, " + group + " has " + std::to_string(n));
+    return n;
+}
+
+// The owner row of row k of a nested table, checked to be one of `owners`.
+std::size_t owner(const I& column, std::size_t k, std::size_t owners, const std::string& path) {
+    if (column[k] < 0 || std::size_t(column[k]) >= owners)
+        throw h5::Error(path + " row " + std::to_string(k) + ": " + std::to_string(column[k]) + ", there are " +
+                        std::to_string(owners));
+    return std::size_t(column[k]);
+}
+
+J header(hid_t f) {
+    if (h5::read_text(f, "format") != "mobb crowd record") throw h5::Error("attribute format: expected \"mobb crowd record\"");
+    if (one<std::int64_t>(f, "complete") != 1)
+        throw h5::Error("incomplete: the writing stopped before the end (the run was killed, or the disk was full)");
+    J j;
+    j["format"] = "mobb crowd record";
+    j["version"] = one<std::int64_t>(f, "version");
+    j["graph"] = text(f, "graph");
+    j["dt"] = one<double>(f, "dt");
+    j["frames"] = one<std::int64_t>(f, "frames");
+    j["agents"] = one<std::int64_t>(f, "agents");
+    j["seed"] = one<std::uint64_t>(f, "seed");
+    j["tree"] = text(f, "tree");
+    j["select"] = text(f, "select");
+    if (const auto s = h5::read_text(f, "scenario")) j["scenario"] = *s;
+    const auto w = h5::read_numbers<double>(f, "world");
+    if (!w || w->size() != 4) throw h5::Error("attribute world: expected [x0, y0, x1, y1]");
+    j["world"] = (*w)[0] == 0 && (*w)[1] == 0 ? J{(*w)[2], (*w)[3]} : J{(*w)[0], (*w)[1], (*w)[2], (*w)[3]};
+    j["walls"] = one<std::int64_t>(f, "walls") != 0;
+    j["summary"] = object(f, "summary");
+    if (J m = object(f, "metrics"); !m.is_null()) j["metrics"] = m;
+    return j;
+}
+
+J obstacles(hid_t f) {
+    const I polygon = rows<std::int64_t>(f, "/obstacles/polygon");
+    const D vertex = rows<double>(f, "/obstacles/vertex", {2});
+    const std::size_t n = same_rows("/obstacles", {{"polygon", polygon.size()}, {"vertex", vertex.size() / 2}});
+    J out = J::array();
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t p = owner(polygon, k, out.size() + 1, "/obstacles/polygon");  // in order, from 0
+        if (p == out.size()) out.push_back(J::array());
+        out[p].push_back({vertex[2 * k], vertex[2 * k + 1]});
+    }
+    return out;
+}
+
+J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
+    const I left = rows<std::int64_t>(f, "/tracks/left_frame"), at_goal = rows<std::int64_t>(f, "/tracks/at_goal");
+    same_rows("/tracks", {{"left_frame", left.size()}, {"at_goal", at_goal.size()}, {"(agents)", agents}});
+    J out = J::array();
+    for (std::size_t a = 0; a < agents; ++a) {
+        J t = J::object();
+        if (at_goal[a]) t["at_goal"] = "leave";
+        if (left[a] >= 0) t["left_frame"] = left[a];
+        t["clips"] = J::array();
+        t["samples"] = J::array();
+        out.push_back(std::move(t));
+    }
+    const I goal_agent = rows<std::int64_t>(f, "/goals/agent");
+    const D goal = rows<double>(f, "/goals/xy", {2});
+    for (std::size_t k = 0; k < same_rows("/goals", {{"agent", goal_agent.size()}, {"xy", goal.size() / 2}}); ++k)
+        out[owner(goal_agent, k, agents, "/goals/agent")]["goals"].push_back({goal[2 * k], goal[2 * k + 1]});
+    for (J& t : out)
+        if (t.contains("goals") && t["goals"].size() == 1) t["goal"] = t["goals"][0], t.erase("goals");
+    const I agent = rows<std::int64_t>(f, "/clips/agent"), clip = rows<std::int64_t>(f, "/clips/clip"),
+            start = rows<std::int64_t>(f, "/clips/start"), fallback = rows<std::int64_t>(f, "/clips/fallback"),
+            commit = rows<std::int64_t>(f, "/clips/commit");
+    const D place = rows<double>(f, "/clips/place", {4});
+    const std::size_t n = same_rows("/clips", {{"agent", agent.size()}, {"clip", clip.size()}, {"start", start.size()},
+                                               {"fallback", fallback.size()}, {"commit", commit.size()},
+                                               {"place", place.size() / 4}});
+    for (std::size_t k = 0; k < n; ++k)
+        out[owner(agent, k, agents, "/clips/agent")]["clips"].push_back(
+            {{"clip", clip[k]}, {"start", start[k]}, {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
+             {"fallback", fallback[k] != 0}, {"commit", commit[k]}});
+    const D samples = rows<double>(f, "/tracks/samples", {hsize_t(agents), 4});
+    if (std::int64_t(samples.size() / (4 * std::max<std::size_t>(1, agents))) != frames)
+        throw h5::Error("/tracks/samples: " + std::to_string(samples.size() / (4 * agents)) + " frames, the record has " +
+                        std::to_string(frames));
+    for (std::size_t a = 0; a < agents; ++a) {
+        const std::int64_t until = left[a] >= 0 ? std::min(left[a], frames) : frames;
+        for (std::int64_t k = 0; k < until; ++k) {
+            const double* s = &samples[(std::size_t(k) * agents + a) * 4];
+            out[a]["samples"].push_back({s[0], s[1], s[2], s[3]});
+        }
+    }
+    return out;
+}
+
+// Clips placed from a frame on, nested by owner: [clip, frame, x, y, theta] rows added to `into(owner)`.
+template <class Into>
+void framed(hid_t f, const std::string& group, const char* owner_name, std::size_t owners, Into into) {
+    const I own = rows<std::int64_t>(f, group + "/" + owner_name), clip = rows<std::int64_t>(f, group + "/clip"),
+            frame = rows<std::int64_t>(f, group + "/frame");
+    const D place = rows<double>(f, group + "/place", {3});
+    const std::size_t n = same_rows(group, {{owner_name, own.size()}, {"clip", clip.size()}, {"frame", frame.size()},
+                                            {"place", place.size() / 3}});
+    for (std::size_t k = 0; k < n; ++k)
+        into(owner(own, k, owners, group + "/" + owner_name))
+            .push_back({clip[k], frame[k], place[3 * k], place[3 * k + 1], place[3 * k + 2]});
+}
+
+// A counter as the JSON reader has it (unsigned when not negative; a negative one it refuses).
+J count(std::int64_t v) { return v >= 0 ? J(std::uint64_t(v)) : J(v); }
+
+const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback", "right of way"};
+
+J choices(hid_t f, double dt) {
+    static const char* const kNames[] = {"agent",   "frame",   "taken",   "outcome", "fallback",  "queries",
+                                         "tests2d", "tests3d", "samples", "pruned",  "hold_frame"};
+    std::vector<I> c;
+    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/choices/") + name));
+    const D hold = rows<double>(f, "/choices/hold", {3});
+    std::size_t n = c[0].size();
+    for (std::size_t k = 0; k < c.size(); ++k) same_rows("/choices", {{"agent", n}, {kNames[k], c[k].size()}});
+    same_rows("/choices", {{"agent", n}, {"hold", hold.size() / 3}});
+    J out = J::array();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (c[3][k] < 0 || c[3][k] > 4) throw h5::Error("/choices/outcome row " + std::to_string(k) + ": expected 0 to 4");
+        J plan = {{"escape", J::array()}};
+        if (c[10][k] >= 0) plan["hold"] = {hold[3 * k], hold[3 * k + 1], hold[3 * k + 2], c[10][k]};
+        out.push_back({{"agent", c[0][k]}, {"frame", c[1][k]}, {"t", util::rounded(double(c[1][k]) * dt, 9)},
+                       {"taken", c[2][k]}, {"outcome", kOutcomes[c[3][k]]}, {"fallback", c[4][k] != 0},
+                       {"queries", count(c[5][k])}, {"tests2d", count(c[6][k])}, {"tests3d", count(c[7][k])},
+                       {"samples", count(c[8][k])}, {"pruned", count(c[9][k])}, {"plan", plan}, {"candidates", J::array()}});
+    }
+    framed(f, "/escapes", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["escape"]; });
+    framed(f, "/intended", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["intended"]; });
+    const I rc = rows<std::int64_t>(f, "/reroutes/choice"), ra = rows<std::int64_t>(f, "/reroutes/agent"),
+            rf = rows<std::int64_t>(f, "/reroutes/hold_frame");
+    const D rh = rows<double>(f, "/reroutes/hold", {3});
+    const std::size_t nr = same_rows("/reroutes", {{"choice", rc.size()}, {"agent", ra.size()}, {"hold_frame", rf.size()},
+                                                   {"hold", rh.size() / 3}});
+    std::vector<std::pair<std::size_t, std::size_t>> reroute_at;  // (choice, index in its reroutes)
+    for (std::size_t k = 0; k < nr; ++k) {
+        J& list = out[owner(rc, k, n, "/reroutes/choice")]["plan"]["reroutes"];
+        list.push_back({{"agent", ra[k]}, {"escape", J::array()}, {"hold", {rh[3 * k], rh[3 * k + 1], rh[3 * k + 2], rf[k]}}});
+        reroute_at.emplace_back(std::size_t(rc[k]), list.size() - 1);
+    }
+    framed(f, "/reroute_escapes", "reroute", nr, [&](std::size_t k) -> J& {
+        return out[reroute_at[k].first]["plan"]["reroutes"][reroute_at[k].second]["escape"];
+    });
+    return out;
+}
+
+// The candidates of each choice point, with their queries ("against").
+void candidates(hid_t f, J& choices) {
+    static const char* const kNames[] = {"choice", "clip", "outside", "queries", "hits", "crowded"};
+    std::vector<I> c;
+    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name));
+    for (std::size_t k = 0; k < c.size(); ++k) same_rows("/candidates", {{"choice", c[0].size()}, {kNames[k], c[k].size()}});
+    static const char* const kQuery[] = {"candidate", "agent", "commit", "piece", "mine", "hit"};
+    std::vector<I> q;
+    for (const char* name : kQuery) q.push_back(rows<std::int64_t>(f, std::string("/queries/") + name));
+    for (std::size_t k = 0; k < q.size(); ++k) same_rows("/queries", {{"candidate", q[0].size()}, {kQuery[k], q[k].size()}});
+    std::vector<J> against(c[0].size(), J::array());
+    for (std::size_t k = 0; k < q[0].size(); ++k)
+        against[owner(q[0], k, against.size(), "/queries/candidate")].push_back({q[1][k], q[2][k], q[3][k], q[4][k], q[5][k]});
+    for (std::size_t k = 0; k < c[0].size(); ++k) {
+        J& list = choices[owner(c[0], k, choices.size(), "/candidates/choice")]["candidates"];
+        list.push_back({{"clip", c[1][k]}, {"outside", c[2][k] != 0}, {"queries", c[3][k]}, {"hits", c[4][k]},
+                        {"against", std::move(against[k])}});
+        if (c[5][k]) list.back()["crowded"] = true;
+    }
+}
+
+}  // namespace
+
+RecordFile read_h5_record(const std::string& file) {
+    h5::quiet();
+    if (H5Fis_hdf5(file.c_str()) <= 0) throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
+    J j;
+    try {
+        const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+        if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
+        j = header(f.get());
+        j["obstacles"] = obstacles(f.get());
+        const std::int64_t agents = j["agents"].get<std::int64_t>(), frames = j["frames"].get<std::int64_t>();
+        if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
+        if (frames < 1 || frames > 100'000'000) throw h5::Error("attribute frames: expected 1 to 100,000,000");
+        j["tracks"] = tracks(f.get(), frames, std::size_t(agents));
+        j["choices"] = choices(f.get(), j["dt"].get<double>());
+        candidates(f.get(), j["choices"]);
+    } catch (const h5::Error& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+    RecordFile out;
+    out.record = record_from_json(j, file);
+    out.summary_json = j["summary"].dump();
+    if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
+    return out;
+}
+
+}  // namespace mobb::crowd
+
+namespace mobb::crowd {
+
+SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::int64_t last) {
+    h5::quiet();
+    if (H5Fis_hdf5(file.c_str()) <= 0) throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
+    SampleWindow w;
+    try {
+        const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+        if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
+        const J j = header(f.get());
+        w.dt = j["dt"].get<double>();
+        w.frames = j["frames"].get<std::int64_t>();
+        const std::int64_t agents = j["agents"].get<std::int64_t>();
+        if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
+        w.agents = std::size_t(agents);
+        w.first = std::clamp<std::int64_t>(first, 0, w.frames);
+        w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
+        const D v = h5::read_window<double>(f.get(), "/tracks/samples", {hsize_t(agents), 4}, hsize_t(w.first),
+                                            hsize_t(w.last - w.first));
+        w.samples.resize(v.size() / 4);
+        for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
+        w.summary_json = j["summary"].dump();
+        if (j.contains("metrics")) w.metrics_json = j["metrics"].dump();
+    } catch (const h5::Error& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+    return w;
+}
+
+}  // namespace mobb::crowd

@@ -1,0 +1,150 @@
+// Record files: a run written as JSON and as HDF5 holds the same record, every field (the HDF5 file read
+// back writes the JSON text byte for byte), either way round; a truncated or damaged HDF5 file is
+// refused with one line naming the file (and the block, where one is damaged), never a crash.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/metrics.h"
+#include "mobb/crowd/record_file.h"
+#include "mobb/crowd/scenario.h"
+
+namespace mobb::crowd {
+namespace {
+
+const std::string kAssets = std::string(MOBB_SOURCE_DIR) + "/assets";
+
+const MotionGraph& graph() {
+    static const MotionGraph g = load_graph(kAssets + "/graphs/cmu_locomotion.json");
+    return g;
+}
+
+struct Written {
+    Record record;
+    std::string summary, metrics;
+};
+
+// A wandering crowd in a room with an obstacle (queries against agents, ground, walls, the obstacle).
+const Written& wandering() {
+    static const Written w = [] {
+        CrowdOptions o;
+        o.agents = 8;
+        o.seconds = 6;
+        o.seed = 9;
+        o.world.x1 = 9;
+        o.world.y1 = 11;
+        o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
+        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
+        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
+        return Written{std::move(run.record), summary_json(run.summary), metrics};
+    }();
+    return w;
+}
+
+// Goal agents that leave at their goal (goals, left_frame, at_goal, intended clips).
+const Written& leaving() {
+    static const Written w = [] {
+        const Scenario s = load_scenario(kAssets + "/scenarios/fan_in_exit.json");
+        CrowdOptions o = scenario_options(s);
+        o.seconds = 20;
+        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
+        run.record.scenario = s.name;
+        return Written{std::move(run.record), summary_json(run.summary), ""};
+    }();
+    return w;
+}
+
+std::string temp(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("mobb_record_file_" + name)).string();
+}
+
+std::string text_of(const RecordFile& r) { return record_to_text(r.record, r.summary_json, r.metrics_json); }
+
+std::string slurp(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The error reading `file` gives ("" when it reads), checked to be one line naming the file.
+std::string error_of(const std::string& file) {
+    try {
+        read_record_file(file);
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind(file + ": ", 0), 0u) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+        return m;
+    }
+    return "";
+}
+
+TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
+    for (const Written* w : {&wandering(), &leaving()}) {
+        const std::string json = record_to_text(w->record, w->summary, w->metrics);
+        const std::string h5 = temp("run.h5");
+        write_record_file(h5, w->record, w->summary, w->metrics);
+        EXPECT_EQ(text_of(read_record_file(h5)), json);
+        // And back: the JSON file read and written as HDF5 again, then as JSON.
+        const std::string j = temp("run.json"), h5b = temp("again.h5"), j2 = temp("again.json");
+        write_record_file(j, w->record, w->summary, w->metrics);
+        EXPECT_EQ(slurp(j), json);
+        const RecordFile from_json = read_record_file(j);
+        write_record_file(h5b, from_json.record, from_json.summary_json, from_json.metrics_json);
+        const RecordFile back = read_record_file(h5b);
+        write_record_file(j2, back.record, back.summary_json, back.metrics_json);
+        EXPECT_EQ(slurp(j2), json);
+        for (const std::string& f : {h5, j, h5b, j2}) std::remove(f.c_str());
+    }
+}
+
+TEST(RecordFile, TheRunsKeepWhatTheLayoutNeeds) {
+    bool left = false, intended = false, queries = false;
+    for (const AgentTrack& t : leaving().record.tracks) left = left || t.left_frame.has_value();
+    for (const ChoicePoint& c : leaving().record.choices) intended = intended || !c.intended.empty();
+    for (const ChoicePoint& c : wandering().record.choices)
+        for (const Candidate& k : c.candidates) queries = queries || !k.against.empty();
+    EXPECT_TRUE(left && intended && queries);
+}
+
+TEST(RecordFile, TruncatedHdf5IsRefusedInOneLine) {
+    const std::string h5 = temp("whole.h5"), cut = temp("cut.h5");
+    write_record_file(h5, wandering().record, wandering().summary, wandering().metrics);
+    const std::string bytes = slurp(h5);
+    for (double keep : {0.0, 0.001, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999}) {
+        std::ofstream(cut, std::ios::binary) << bytes.substr(0, std::size_t(double(bytes.size()) * keep));
+        EXPECT_NE(error_of(cut), "") << "kept " << keep;
+    }
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 1);
+    EXPECT_NE(error_of(cut), "");
+    for (const std::string& f : {h5, cut}) std::remove(f.c_str());
+}
+
+TEST(RecordFile, DamagedSamplesNameTheirBlock) {
+    const std::string h5 = temp("damaged.h5");
+    write_record_file(h5, wandering().record, wandering().summary, wandering().metrics);
+    std::string bytes = slurp(h5);
+    // One sample's x, found by its bytes (the samples are stored as native doubles), changed.
+    const double x = wandering().record.tracks[3].samples[100][1];
+    const std::size_t at = bytes.find(std::string(reinterpret_cast<const char*>(&x), sizeof x));
+    ASSERT_NE(at, std::string::npos);
+    bytes[at] = char(bytes[at] ^ 0x55);
+    std::ofstream(h5, std::ios::binary) << bytes;
+    const std::string e = error_of(h5);
+    EXPECT_NE(e.find("/tracks/samples block"), std::string::npos) << e;
+    std::remove(h5.c_str());
+}
+
+TEST(RecordFile, OtherFilesAreRefusedInOneLine) {
+    const std::string f = temp("text.h5");
+    std::ofstream(f) << "{\"format\": \"mobb crowd record\"}";
+    EXPECT_NE(error_of(f).find("not an HDF5 file"), std::string::npos);
+    EXPECT_NE(error_of(temp("missing.h5")), "");
+    std::remove(f.c_str());
+}
+
+}  // namespace
+}  // namespace mobb::crowd
