@@ -24,10 +24,10 @@ py::array_t<double> path_array(const Path& path);
 /// std::invalid_argument naming `what` when it is not four finite numbers.
 Placement placement_from(const py::handle& object, const std::string& what);
 
-void add_clip(py::module_& m);   // clip.cpp: Clip, load
-void add_query(py::module_& m);  // query.cpp: Tree, ClipIndex, collide, collide_batch, clearance
-void add_crowd(py::module_& m);  // crowd.cpp: crowd
-void add_poses(py::module_& m);  // poses.cpp: crowd_poses, crowd_joints
+void add_clip(py::module_& m);    // clip.cpp: Clip, load
+void add_query(py::module_& m);   // query.cpp: Tree, ClipIndex, collide, collide_batch, clearance
+void add_crowd(py::module_& m);   // crowd.cpp: crowd
+void add_poses(py::module_& m);   // poses.cpp: crowd_poses, crowd_joints
 void add_record(py::module_& m);  // record.cpp: read_record
 
 }  // namespace mobb::python

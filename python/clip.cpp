@@ -58,7 +58,8 @@ io::LoadOptions load_options(const std::string& up, const py::object& scale, con
         text.frames = frames.cast<std::string>();
     } else if (!frames.is_none()) {
         const auto ab = frames.cast<std::pair<py::object, py::object>>();
-        text.frames = std::string(py::str(ab.first)) + ":" + (ab.second.is_none() ? "" : std::string(py::str(ab.second)));
+        text.frames =
+            std::string(py::str(ab.first)) + ":" + (ab.second.is_none() ? "" : std::string(py::str(ab.second)));
     }
     text.skin = skin;
     text.animation = animation;
@@ -101,10 +102,11 @@ Attributes:
                    std::to_string(c.path.dt) + " s>";
         });
 
-    m.def("load", &load, py::arg("file"), py::kw_only(), py::arg("up") = "y", py::arg("scale") = py::none(),
-          py::arg("frames") = py::none(), py::arg("fps") = py::none(), py::arg("skin") = 0,
-          py::arg("animation") = "", py::arg("root") = "",
-          R"doc(Loads a clip file as `mobb path` does (the format by its extension: .bvh, .glb, .gltf, .fbx, ...) -> mobb.Clip.
+    m.def(
+        "load", &load, py::arg("file"), py::kw_only(), py::arg("up") = "y", py::arg("scale") = py::none(),
+        py::arg("frames") = py::none(), py::arg("fps") = py::none(), py::arg("skin") = 0, py::arg("animation") = "",
+        py::arg("root") = "",
+        R"doc(Loads a clip file as `mobb path` does (the format by its extension: .bvh, .glb, .gltf, .fbx, ...) -> mobb.Clip.
 
 The loader options are the command line's:
   up         "y" or "z": up axis of BVH data (glTF is always Y-up).

@@ -14,7 +14,8 @@ namespace {
 Path path_of_rows(const py::handle& object, const py::object& dt, const std::string& what) {
     const auto rows = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
     if (!rows || rows.ndim() != 2 || rows.shape(1) != 4)
-        throw std::invalid_argument(what + ": expected a mobb.Clip, Tree, ClipIndex or an (n, 4) array of (t, x, y, r)");
+        throw std::invalid_argument(what +
+                                    ": expected a mobb.Clip, Tree, ClipIndex or an (n, 4) array of (t, x, y, r)");
     const auto r = rows.unchecked<2>();
     Path path;
     if (!dt.is_none())

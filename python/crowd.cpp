@@ -37,9 +37,13 @@ struct CrowdArgs {
 crowd::CrowdOptions crowd_options(const CrowdArgs& a, crowd::Scenario& scenario) {
     crowd::CrowdOptions o;
     if (a.scenario) {
-        for (const auto& [given, flag] : {std::pair{bool(a.agents), "agents"}, {bool(a.world), "world"},
-                                          {bool(a.select), "select"}, {bool(a.seconds), "seconds"}})
-            if (given) throw std::invalid_argument(std::string("crowd: ") + flag + " does not go with scenario (the scenario sets it)");
+        for (const auto& [given, flag] : {std::pair{bool(a.agents), "agents"},
+                                          {bool(a.world), "world"},
+                                          {bool(a.select), "select"},
+                                          {bool(a.seconds), "seconds"}})
+            if (given)
+                throw std::invalid_argument(std::string("crowd: ") + flag +
+                                            " does not go with scenario (the scenario sets it)");
         scenario = crowd::load_scenario(*a.scenario);
         o = crowd::scenario_options(scenario);
     } else {
@@ -137,14 +141,15 @@ py::dict run(const CrowdArgs& args) {
         py::gil_scoped_release release;
         const crowd::MotionGraph graph = crowd::load_graph(file);
         // The fastest exact query unless a tree is asked for (its counters then fill the summary).
-        const crowd::NarrowPhase narrow = args.tree ? crowd::NarrowPhase::trees(graph, tree)
-                                                    : crowd::NarrowPhase::sweep(graph);
+        const crowd::NarrowPhase narrow =
+            args.tree ? crowd::NarrowPhase::trees(graph, tree) : crowd::NarrowPhase::sweep(graph);
         narrow_name = narrow.name();
         try {
             result = crowd::run_crowd(graph, narrow, options);
         } catch (const std::invalid_argument& e) {
             if (!args.scenario) throw;
-            throw std::invalid_argument(*args.scenario + ": " + e.what());  // its agents cannot start where it puts them
+            throw std::invalid_argument(*args.scenario + ": " +
+                                        e.what());  // its agents cannot start where it puts them
         }
         result.record.graph = file;
         result.record.scenario = scenario.name;
@@ -176,9 +181,10 @@ void add_crowd(py::module_& m) {
     m.def(
         "crowd",
         [](const std::optional<std::string>& graph, const std::optional<int>& agents,
-           const std::optional<std::pair<double, double>>& world, const std::optional<double>& seconds, std::uint64_t seed,
-           const std::optional<std::string>& select, double cell, int threads, const std::optional<std::string>& tree,
-           const std::optional<std::string>& scenario, const std::optional<std::string>& record) {
+           const std::optional<std::pair<double, double>>& world, const std::optional<double>& seconds,
+           std::uint64_t seed, const std::optional<std::string>& select, double cell, int threads,
+           const std::optional<std::string>& tree, const std::optional<std::string>& scenario,
+           const std::optional<std::string>& record) {
             CrowdArgs a;
             a.graph = graph;
             a.agents = agents;

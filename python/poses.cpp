@@ -29,7 +29,8 @@ std::unique_ptr<Posed> open(const std::string& file, const std::optional<std::st
     if (!(blend >= 0 && blend <= 10)) throw std::invalid_argument("blend: expected seconds in [0, 10]");
     auto out = std::make_unique<Posed>();
     out->record = crowd::load_record(file);
-    auto g = std::make_shared<crowd::MotionGraph>(crowd::load_graph(graph ? *graph : crowd::record_graph_file(out->record)));
+    auto g =
+        std::make_shared<crowd::MotionGraph>(crowd::load_graph(graph ? *graph : crowd::record_graph_file(out->record)));
     crowd::PoseBlend b;
     b.window = blend;
     try {
@@ -79,7 +80,8 @@ py::array_t<double> crowd_poses(const std::string& file, const std::optional<std
                     throw std::runtime_error(file + ": agent " + std::to_string(agents[a]) + " has no pose at " +
                                              std::to_string(times[f]) + " s");
                 for (py::ssize_t j = 0; j < joints_n; ++j)
-                    for (py::ssize_t c = 0; c < 3; ++c) o(py::ssize_t(a), py::ssize_t(f), j, c) = pose[std::size_t(j)][int(c)];
+                    for (py::ssize_t c = 0; c < 3; ++c)
+                        o(py::ssize_t(a), py::ssize_t(f), j, c) = pose[std::size_t(j)][int(c)];
             }
     }
     return out;
@@ -88,9 +90,10 @@ py::array_t<double> crowd_poses(const std::string& file, const std::optional<std
 }  // namespace
 
 void add_poses(py::module_& m) {
-    m.def("crowd_poses", &crowd_poses, py::arg("record"), py::arg("agents") = py::none(), py::arg("times") = py::none(),
-          py::kw_only(), py::arg("graph") = py::none(), py::arg("blend") = 0.25, py::arg("joints") = "all",
-          R"doc(Joint positions of a crowd record's agents, blended at clip starts as the viewer and `mobb export-crowd`.
+    m.def(
+        "crowd_poses", &crowd_poses, py::arg("record"), py::arg("agents") = py::none(), py::arg("times") = py::none(),
+        py::kw_only(), py::arg("graph") = py::none(), py::arg("blend") = 0.25, py::arg("joints") = "all",
+        R"doc(Joint positions of a crowd record's agents, blended at clip starts as the viewer and `mobb export-crowd`.
 
 record  a crowd record file (mobb crowd --record, or mobb.crowd(record=...)).
 agents  agent indices (None: all); times: seconds, 0 <= t <= frames * dt (None: every frame k * dt).

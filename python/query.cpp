@@ -41,13 +41,13 @@ struct Pair {
     bool operator()(const Placement& pa, const Placement& pb, QueryStats* stats = nullptr, Trace* trace = nullptr,
                     SamplePair* hit = nullptr) const {
         switch (method) {
-        case Method::Trees:
-            return collide(*static_cast<const Tree*>(a), pa, *static_cast<const Tree*>(b), pb, stats, trace, hit);
-        case Method::Sweep:
-            return collide_sweep(*static_cast<const ClipIndex*>(a), pa, *static_cast<const ClipIndex*>(b), pb, hit);
-        case Method::Brute:
-            return collide_brute(static_cast<const io::Clip*>(a)->path, pa, static_cast<const io::Clip*>(b)->path, pb,
-                                 stats, hit);
+            case Method::Trees:
+                return collide(*static_cast<const Tree*>(a), pa, *static_cast<const Tree*>(b), pb, stats, trace, hit);
+            case Method::Sweep:
+                return collide_sweep(*static_cast<const ClipIndex*>(a), pa, *static_cast<const ClipIndex*>(b), pb, hit);
+            case Method::Brute:
+                return collide_brute(static_cast<const io::Clip*>(a)->path, pa, static_cast<const io::Clip*>(b)->path,
+                                     pb, stats, hit);
         }
         return false;
     }
@@ -57,18 +57,18 @@ Pair pair_of(const py::handle& a, const py::handle& b) {
     Pair p;
     p.method = method_of(a, b);
     switch (p.method) {
-    case Method::Trees:
-        p.a = &a.cast<const Tree&>();
-        p.b = &b.cast<const Tree&>();
-        break;
-    case Method::Sweep:
-        p.a = &a.cast<const ClipIndex&>();
-        p.b = &b.cast<const ClipIndex&>();
-        break;
-    case Method::Brute:
-        p.a = &a.cast<const io::Clip&>();
-        p.b = &b.cast<const io::Clip&>();
-        break;
+        case Method::Trees:
+            p.a = &a.cast<const Tree&>();
+            p.b = &b.cast<const Tree&>();
+            break;
+        case Method::Sweep:
+            p.a = &a.cast<const ClipIndex&>();
+            p.b = &b.cast<const ClipIndex&>();
+            break;
+        case Method::Brute:
+            p.a = &a.cast<const io::Clip&>();
+            p.b = &b.cast<const io::Clip&>();
+            break;
     }
     return p;
 }
@@ -96,7 +96,8 @@ py::object collide_one(const py::handle& a, const py::handle& pa, const py::hand
     if (!counters && !trace) return py::bool_(pair(place_a, place_b));
     if (pair.method == Method::Sweep)
         throw std::invalid_argument("counters and the trace come from the trees: pass two mobb.Tree");
-    if (trace && pair.method != Method::Trees) throw std::invalid_argument("the trace comes from the trees: pass two mobb.Tree");
+    if (trace && pair.method != Method::Trees)
+        throw std::invalid_argument("the trace comes from the trees: pass two mobb.Tree");
     QueryStats stats;
     Trace events;
     SamplePair hit;
@@ -114,7 +115,8 @@ py::object collide_one(const py::handle& a, const py::handle& pa, const py::hand
 std::vector<Placement> placements_from(const py::handle& object, const std::string& what) {
     const auto rows = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
     if (!rows || rows.ndim() != 2 || rows.shape(1) != 4)
-        throw std::invalid_argument(what + ": expected a (k, 4) array of (x, y, theta, t0) (metres, metres, radians, seconds)");
+        throw std::invalid_argument(
+            what + ": expected a (k, 4) array of (x, y, theta, t0) (metres, metres, radians, seconds)");
     const auto r = rows.unchecked<2>();
     std::vector<Placement> out(std::size_t(rows.shape(0)));
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
@@ -133,7 +135,8 @@ py::array_t<bool> collide_batch(const py::handle& a, const py::handle& b, const 
     if (pa.size() != pb.size())
         throw std::invalid_argument("placements_a, placements_b: " + std::to_string(pa.size()) + " and " +
                                     std::to_string(pb.size()) + " rows; expected as many");
-    if (threads < 0) throw std::invalid_argument("threads: expected 0 (every core) or more, got " + std::to_string(threads));
+    if (threads < 0)
+        throw std::invalid_argument("threads: expected 0 (every core) or more, got " + std::to_string(threads));
     std::vector<std::uint8_t> hits(pa.size());
     {
         py::gil_scoped_release release;
@@ -170,7 +173,8 @@ py::dict clearance_of(const py::handle& a, const py::handle& pa, const py::handl
 }  // namespace
 
 void add_query(py::module_& m) {
-    py::class_<Tree>(m, "Tree", R"doc(A clip's MOBB / UMOBB tree (paper section 3), built once, queried under any placement.
+    py::class_<Tree>(m, "Tree",
+                     R"doc(A clip's MOBB / UMOBB tree (paper section 3), built once, queried under any placement.
 
 Tree(path, type="mobb", n_min=10, fit="chord", dt=None)
   path   a mobb.Clip, or an (n, 4) array of (t, x, y, r) (seconds, metres) with sample spacing dt
@@ -180,28 +184,37 @@ Tree(path, type="mobb", n_min=10, fit="chord", dt=None)
   fit    MOBB axis fit: "chord" (the paper's) or "pca".
 Raises ValueError for an empty or invalid path or a bad option.)doc")
         .def(py::init([](const py::object& path, const std::string& type, int n_min, const std::string& fit,
-                         const py::object& dt) { return Tree::build(path_from(path, dt, "path"), parse_tree_options(type, n_min, fit)); }),
+                         const py::object& dt) {
+                 return Tree::build(path_from(path, dt, "path"), parse_tree_options(type, n_min, fit));
+             }),
              py::arg("path"), py::arg("type") = "mobb", py::arg("n_min") = 10, py::arg("fit") = "chord",
              py::arg("dt") = py::none())
         .def_property_readonly("type", [](const Tree& t) { return to_string(t.options().type); })
         .def_property_readonly("n_min", [](const Tree& t) { return t.options().n_min; })
-        .def_property_readonly("nodes", [](const Tree& t) { return t.nodes().size(); }, "number of nodes")
+        .def_property_readonly(
+            "nodes", [](const Tree& t) { return t.nodes().size(); }, "number of nodes")
         .def_property_readonly("depth", &Tree::depth, "number of levels")
-        .def_property_readonly("path", [](const Tree& t) { return path_array(t.path()); },
-                               "(n, 4) float64 array of (t, x, y, r), seconds and metres")
-        .def_property_readonly("dt", [](const Tree& t) { return t.path().dt; }, "seconds between samples")
+        .def_property_readonly(
+            "path", [](const Tree& t) { return path_array(t.path()); },
+            "(n, 4) float64 array of (t, x, y, r), seconds and metres")
+        .def_property_readonly(
+            "dt", [](const Tree& t) { return t.path().dt; }, "seconds between samples")
         .def("__len__", [](const Tree& t) { return t.path().size(); });
 
     py::class_<ClipIndex>(m, "ClipIndex", R"doc(A clip prepared for the circle sweep, the library's fastest exact query.
 
 ClipIndex(path, dt=None): path as for mobb.Tree. Raises ValueError for an empty or invalid path, more
 than 2^21 samples or coordinates beyond 1e9 m.)doc")
-        .def(py::init([](const py::object& path, const py::object& dt) { return ClipIndex::build(path_from(path, dt, "path")); }),
+        .def(py::init([](const py::object& path, const py::object& dt) {
+                 return ClipIndex::build(path_from(path, dt, "path"));
+             }),
              py::arg("path"), py::arg("dt") = py::none())
         .def_property_readonly("levels", &ClipIndex::levels, "levels of the circle hierarchy")
-        .def_property_readonly("path", [](const ClipIndex& c) { return path_array(c.path()); },
-                               "(n, 4) float64 array of (t, x, y, r), seconds and metres")
-        .def_property_readonly("dt", [](const ClipIndex& c) { return c.path().dt; }, "seconds between samples")
+        .def_property_readonly(
+            "path", [](const ClipIndex& c) { return path_array(c.path()); },
+            "(n, 4) float64 array of (t, x, y, r), seconds and metres")
+        .def_property_readonly(
+            "dt", [](const ClipIndex& c) { return c.path().dt; }, "seconds between samples")
         .def("__len__", &ClipIndex::size);
 
     m.def("collide", &collide_one, py::arg("a"), py::arg("pa"), py::arg("b"), py::arg("pb"), py::kw_only(),
@@ -217,8 +230,8 @@ paper's counters, as `mobb query` prints them), pair (a colliding (i, j) or None
 (trees only), trace: the list of events, each a dict node_a, node_b, test ("time", "box2d", "box3d",
 "descend", "samples"), outcome ("no time overlap", "separated", "overlap", "miss", "hit"), sample_a, sample_b, samples_tested.)doc");
 
-    m.def("collide_batch", &collide_batch, py::arg("a"), py::arg("b"), py::arg("placements_a"),
-          py::arg("placements_b"), py::kw_only(), py::arg("threads") = 0,
+    m.def("collide_batch", &collide_batch, py::arg("a"), py::arg("b"), py::arg("placements_a"), py::arg("placements_b"),
+          py::kw_only(), py::arg("threads") = 0,
           R"doc(Query k placements of one pair of clips at once: row k asks collide(a, placements_a[k], b,
 placements_b[k]).
 

@@ -73,12 +73,12 @@ void add_path(CLI::App& app, int& exit_code);
 void add_tree(CLI::App& app, int& exit_code);
 void add_query(CLI::App& app, int& exit_code);
 void add_batch(CLI::App& app, int& exit_code);
-void add_crowd_commands(CLI::App& app, int& exit_code);  // graph, crowd (cmd_crowd.cpp)
+void add_crowd_commands(CLI::App& app, int& exit_code);     // graph, crowd (cmd_crowd.cpp)
 void add_record_commands(CLI::App& app, int& exit_code);    // record convert (cmd_record.cpp)
 void add_scenario_commands(CLI::App& app, int& exit_code);  // scenario import (cmd_scenario.cpp)
-void add_bench_commands(CLI::App& app, int& exit_code);  // bench ... (cmd_bench.cpp)
-void add_export_commands(CLI::App& app, int& exit_code);  // export-crowd (cmd_export.cpp)
-void add_view_commands(CLI::App& app, int& exit_code);   // view, render, export-gltf (cmd_view.cpp, with the viewer)
+void add_bench_commands(CLI::App& app, int& exit_code);     // bench ... (cmd_bench.cpp)
+void add_export_commands(CLI::App& app, int& exit_code);    // export-crowd (cmd_export.cpp)
+void add_view_commands(CLI::App& app, int& exit_code);      // view, render, export-gltf (cmd_view.cpp, with the viewer)
 
 /// "WxH" in metres -> w, h. Throws InputError.
 void parse_world(const std::string& text, double& w, double& h);

@@ -101,7 +101,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
     // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
     auto off = std::make_shared<crowd::CrowdTuning>();
     const auto rule_off = [&](const char* flag, bool crowd::CrowdTuning::*rule, const char* what) {
-        cmd->add_flag_callback(flag, [off, rule] { (*off).*rule = false; }, what);
+        cmd->add_flag_callback(
+            flag, [off, rule] { (*off).*rule = false; }, what);
     };
     rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
              "Goal agents try their candidates in the policy's order alone, without searching clip sequences");

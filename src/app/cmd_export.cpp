@@ -63,9 +63,8 @@ void run_export(const ExportArgs& a, std::ostream& out) {
     auto sources = std::make_shared<crowd::PoseSources>(graph);
     std::unique_ptr<crowd::CrowdPoser> poser;
     try {
-        poser = std::make_unique<crowd::CrowdPoser>(record, sources,
-                                                    a.joints == "major" ? crowd::RigJoints::Major : crowd::RigJoints::All,
-                                                    blend);
+        poser = std::make_unique<crowd::CrowdPoser>(
+            record, sources, a.joints == "major" ? crowd::RigJoints::Major : crowd::RigJoints::All, blend);
     } catch (const crowd::GraphError& e) {
         throw InputError(a.record + ": " + e.what());
     } catch (const std::out_of_range& e) {
@@ -97,9 +96,10 @@ void run_export(const ExportArgs& a, std::ostream& out) {
         const auto k0 = std::int64_t(std::llround(scene.start / record.dt));
         const auto k1 = k0 + std::int64_t(std::llround((scene.frames - 1) * scene.dt / record.dt)) + 1;
         const crowd::PoseJumps j = crowd::pose_jumps(*poser, agents, k0, k1);
-        out << std::setprecision(4) << "pose jumps p99 (largest joint move relative to the root per frame, m): "
-            << j.p99_start << " at " << j.starts << " clip starts, " << j.p99_within << " within clips (" << j.within
-            << " frames), ratio " << (j.p99_within > 0 ? j.p99_start / j.p99_within : 0.0) << "\n";
+        out << std::setprecision(4)
+            << "pose jumps p99 (largest joint move relative to the root per frame, m): " << j.p99_start << " at "
+            << j.starts << " clip starts, " << j.p99_within << " within clips (" << j.within << " frames), ratio "
+            << (j.p99_within > 0 ? j.p99_start / j.p99_within : 0.0) << "\n";
     }
 }
 
@@ -107,7 +107,8 @@ void run_export(const ExportArgs& a, std::ostream& out) {
 
 void add_export_commands(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand(
-        "export-crowd", "Write a crowd record's agents as animated skeletons: glTF / GLB (one armature per agent) or BVH");
+        "export-crowd",
+        "Write a crowd record's agents as animated skeletons: glTF / GLB (one armature per agent) or BVH");
     auto a = std::make_shared<ExportArgs>();
     cmd->add_option("RECORD", a->record, "Crowd record (mobb crowd --record)")->required();
     cmd->add_option("--out", a->out, "FILE.glb or FILE.gltf; with --format bvh a folder (one agent_K.bvh per agent)")
@@ -117,7 +118,8 @@ void add_export_commands(CLI::App& app, int& exit_code) {
     cmd->add_option("--agents", a->agents, "Agents A:B (A included, B not; default all)");
     cmd->add_option("--time", a->time, "Seconds A:B of the record (default: all of it)");
     cmd->add_option("--fps", a->fps, "Frames per second written (default: the record's)")->check(CLI::PositiveNumber);
-    cmd->add_option("--joints", a->joints, "all (every joint all sources share) or major (pelvis, legs, spine, head, arms)")
+    cmd->add_option("--joints", a->joints,
+                    "all (every joint all sources share) or major (pelvis, legs, spine, head, arms)")
         ->check(CLI::IsMember({"all", "major"}))
         ->capture_default_str();
     cmd->add_option("--blend", a->blend, "Seconds over which a clip start eases out of the previous clip (0: none)")

@@ -27,7 +27,8 @@ void add_import(CLI::App& group, int& exit_code) {
         ->capture_default_str();
     cmd->add_option("--time-limit", o->time_limit, "Seconds (default: estimated from the longest walk)")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--at-goal", o->at_goal, "At their last goal agents leave (SteerSuite's semantics, the default) or stay")
+    cmd->add_option("--at-goal", o->at_goal,
+                    "At their last goal agents leave (SteerSuite's semantics, the default) or stay")
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, crowd::AtGoal>{{"leave", crowd::AtGoal::Leave}, {"stay", crowd::AtGoal::Stay}}));
     cmd->add_option("--graph", *graph,

@@ -65,8 +65,7 @@ void apply_step(State& s, int step, const std::string& command) {
 
 /// Whether the command line names clip files (any format load_clip reads) rather than one scene (.json).
 bool names_clip_files(const std::vector<std::string>& inputs) {
-    return !inputs.empty() &&
-           !(inputs.size() == 1 && std::filesystem::path(inputs[0]).extension() == ".json");
+    return !inputs.empty() && !(inputs.size() == 1 && std::filesystem::path(inputs[0]).extension() == ".json");
 }
 
 /// The scene of clip files named on the command line, each loaded with `load`.
@@ -190,8 +189,8 @@ viewer::Ui ui_start(State& s, const std::vector<std::string>& picks, const std::
 // One line of `mobb render --bench`: what was drawn (the disk layer groups consecutive samples of crowds
 // seen from afar, level of detail k), the draw calls and vertices of the last frame, and frames per second.
 void print_bench(std::ostream& out, const std::string& what, const viewer::BenchResult& r, int w, int h) {
-    out << "bench: " << what << ", " << r.disks.disks << " disks in " << r.disks.instances << " instances at LOD k="
-        << r.disks.k_min;
+    out << "bench: " << what << ", " << r.disks.disks << " disks in " << r.disks.instances
+        << " instances at LOD k=" << r.disks.k_min;
     if (r.disks.k_max != r.disks.k_min) out << ".." << r.disks.k_max;
     out << ", " << r.draws.calls << " draw calls, " << r.draws.vertices << " vertices, " << w << "x" << h << ", "
         << std::fixed << std::setprecision(2) << r.fps << " frames per second\n";
@@ -225,8 +224,9 @@ void add_render(CLI::App& app, int& exit_code) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--colour-disks", a->disk_colour,
                     "Disks coloured by clip (default), radius, speed, time or clearance, with a colour bar");
-    cmd->add_option("--colour-boxes", a->box_colour,
-                    "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
+    cmd->add_option(
+        "--colour-boxes", a->box_colour,
+        "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
     cmd->add_flag("--top", a->top, "With --crowd: the top view (the panels' \"top\", the T key)");
     cmd->add_option("--out", a->out, "PNG file to write");
     cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")

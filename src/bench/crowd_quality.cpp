@@ -127,8 +127,9 @@ void add_goal_quality_targets(CrowdQualityTable& t) {
     }
     if (!slowest) return;
     const auto where = [](const ScenarioRow& r) { return r.name + " seed " + std::to_string(r.seed); };
-    t.targets.push_back(at_most("mean time to goal <= 1.5x the straight line at the graph's walking speed, every scenario",
-                                1.5, slowest->metrics.time_ratio, "worst: " + where(*slowest), true));
+    t.targets.push_back(
+        at_most("mean time to goal <= 1.5x the straight line at the graph's walking speed, every scenario", 1.5,
+                slowest->metrics.time_ratio, "worst: " + where(*slowest), true));
     t.targets.push_back(at_most("idle <= 20 % of agent time (at-goal time left out), every scenario", 20,
                                 100 * idlest->metrics.idle_share, "worst: " + where(*idlest) + ", in %"));
 }
@@ -202,9 +203,9 @@ std::string crowd_quality_markdown(const CrowdQualityTable& t) {
         out << "| " << r.name << " | " << r.agents << " | " << r.seed << " | " << (m.passed ? "yes" : "NO") << " | "
             << m.reached << " / " << m.goal_agents << " | " << fixed(m.mean_time_to_goal, 1) << " / "
             << fixed(m.max_time_to_goal, 1) << " (" << fixed(r.time_limit, 0) << ") | " << fixed(m.time_ratio, 2)
-            << " | " << m.contacts << " | "
-            << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | " << fixed(100 * m.idle_share, 1)
-            << " | " << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " |\n";
+            << " | " << m.contacts << " | " << fixed(m.path_ratio, 2) << " | " << fixed(m.speed_ratio, 3) << " | "
+            << fixed(100 * m.idle_share, 1) << " | " << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1)
+            << " |\n";
     }
     out << "\nTargets (issues 10 and 28):\n\n";
     for (const Target& g : t.targets) out << "- " << g.what << ": " << target_text(g) << " (" << g.detail << ")\n";

@@ -186,8 +186,7 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) {
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const AgentClipAt from{&prev, at.index - 1, gp.exit};
         // Only clips played back to back blend (the previous one ran to its exit).
-        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, a_) &&
-            raw(at, gc.first, b_)) {
+        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, a_) && raw(at, gc.first, b_)) {
             const double s = i / window, w = 1.0 - s * s * (3.0 - 2.0 * s);
             // Offsets in the ground relative to the root, heights as they are (the root is on the floor).
             for (std::size_t j = 1; j < out.size(); ++j) out[j] += w * ((a_[j] - a_[0]) - (b_[j] - b_[0]));

@@ -1,7 +1,7 @@
 #include "mobb/crowd/broad_phase.h"
 
-#include "mobb/util/worker_pool.h"
 #include "mobb/core/assert.h"
+#include "mobb/util/worker_pool.h"
 
 #include <algorithm>
 #include <cstddef>

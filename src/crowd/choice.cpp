@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "mobb/core/angle.h"
-#include "mobb/util/random.h"
 #include "mobb/core/assert.h"
+#include "mobb/util/random.h"
 
 namespace mobb::crowd {
 
@@ -149,8 +149,8 @@ int bin_of(double a) {
 
 // A candidate "leaves the world" when its root goes farther outside the rectangle than where it
 // starts, so an agent pushed out by a fallback may walk back in.
-PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
-                  std::int64_t frame, const World* world) {
+PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p,
+                           const Rigid2& m, std::int64_t frame, const World* world) {
     PlacedCandidate out{clip, p, {}, false, 0.0};
     out.box = {1e300, 1e300, -1e300, -1e300, frame, frame + frames};
     if (!world && outline.hull.size() >= 3 && outline.extreme.size() == std::size_t(ClipOutline::kBins)) {
@@ -271,7 +271,8 @@ void Choice::order(const CrowdState& s) {
     next_ = drawn_;
     s.policy.order(site, next_);
     searched_ = false;
-    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead) look_ahead(s, site, horizon);
+    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead)
+        look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
 }

@@ -53,8 +53,8 @@ struct PlacedCandidate {
 /// Places graph clip `clip` (outline `outline`, `frames` long) at `p` (rotation m = Rigid2::of(p)) from
 /// global frame `frame` on. The box pads the hull by r_max, so it holds every sample disk. With a world,
 /// also how far the clip leaves its rectangle.
-PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p, const Rigid2& m,
-                  std::int64_t frame, const World* world);
+PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t frames, const Placement& p,
+                           const Rigid2& m, std::int64_t frame, const World* world);
 
 /// Ground an agent holds from frame `frame` on, for as long as it stands there: a disk of radius r.
 struct Hold {
@@ -86,7 +86,7 @@ struct Piece {
     int commit = 0;        ///< the choice point (record order) whose plan holds it
     int index = 0;         ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
     std::int64_t seq = 0;  ///< pieces placed before it have smaller ones (broad-phase ids are reused)
-    BoxedClip clip;      ///< Clip
+    BoxedClip clip;        ///< Clip
     Hold hold;             ///< Held
 };
 
@@ -97,21 +97,21 @@ SpaceTimeBox box_of(const Piece& piece);
 /// One agent of the simulation.
 struct Agent {
     Placement start;
-    std::int64_t start_frame = 0;  ///< stands at its start until then
+    std::int64_t start_frame = 0;              ///< stands at its start until then
     std::vector<std::array<double, 2>> goals;  ///< AgentSpec::goals, reached in turn
     std::size_t next_goal = 0;                 ///< the one it heads for now
     AtGoal at_goal = AtGoal::Stay;
-    std::optional<std::int64_t> left_frame;    ///< it left the run then (AtGoal::Leave)
-    std::vector<PlacedClip> clips;  ///< committed, in time order
-    Plan plan;                      ///< reserved beyond its last clip
-    std::vector<int> reserved;      ///< broad-phase ids of the plan's pieces
-    bool arrived = false;           ///< reached its goal: stays for good
-    int stalled = 0;                ///< choice points in a row it followed its escape or stayed in place
-    std::int64_t moved_until = 0;   ///< where its last clip that moves (EscapeTable::moves) ended, or its start
-    LearnedCost learned;            ///< what its look-aheads learned of the time to go (look_ahead.h)
-    std::int64_t heading_since = 0;  ///< the frame it set off for the goal it heads for (its priority)
-    double best_to_go = 1e300;       ///< the least time to go (Policy::to_go) it reached for that goal
-    std::int64_t progress_frame = 0; ///< when it last came make_way_progress nearer
+    std::optional<std::int64_t> left_frame;  ///< it left the run then (AtGoal::Leave)
+    std::vector<PlacedClip> clips;           ///< committed, in time order
+    Plan plan;                               ///< reserved beyond its last clip
+    std::vector<int> reserved;               ///< broad-phase ids of the plan's pieces
+    bool arrived = false;                    ///< reached its goal: stays for good
+    int stalled = 0;                         ///< choice points in a row it followed its escape or stayed in place
+    std::int64_t moved_until = 0;     ///< where its last clip that moves (EscapeTable::moves) ended, or its start
+    LearnedCost learned;              ///< what its look-aheads learned of the time to go (look_ahead.h)
+    std::int64_t heading_since = 0;   ///< the frame it set off for the goal it heads for (its priority)
+    double best_to_go = 1e300;        ///< the least time to go (Policy::to_go) it reached for that goal
+    std::int64_t progress_frame = 0;  ///< when it last came make_way_progress nearer
     /// The way it asked the others to make (make_way.cpp): points down its path, asked until way_until
     /// (a frame).
     std::vector<std::array<double, 2>> way;
@@ -240,26 +240,26 @@ private:
 
     int agent_ = 0;
     std::int64_t frame_ = 0;
-    std::vector<int> drawn_;      // candidate clips in the stream's random order
-    std::vector<int> order_;      // the same in the policy's order, for the current evaluation
-    std::vector<int> next_;       // scratch: the order being made
-    std::vector<int> scratch_;    // scratch: next_ before the look-ahead's reorder
+    std::vector<int> drawn_;                      // candidate clips in the stream's random order
+    std::vector<int> order_;                      // the same in the policy's order, for the current evaluation
+    std::vector<int> next_;                       // scratch: the order being made
+    std::vector<int> scratch_;                    // scratch: next_ before the look-ahead's reorder
     std::vector<std::pair<double, int>> ranked_;  // scratch: (look-ahead score, policy rank)
     LookAhead search_;
-    bool searched_ = false;              // order_ comes from the look-ahead (ranked_ maps it to its nodes)
+    bool searched_ = false;  // order_ comes from the look-ahead (ranked_ maps it to its nodes)
     std::vector<SearchStep> intended_;
     std::vector<std::array<double, 3>> learned_;
     std::vector<std::array<double, 2>> way_;  // make way: the way asked of the others
-    double to_go_ = 0;                         // make way: Policy::to_go at the base, neighbours aside
-    std::vector<int> asking_;                  // scratch: agents whose ways were gathered
-    Placement base_;              // where and when the next clip starts
-    Rigid2 base_m_;               // Rigid2::of(base_): every candidate starts there
-    std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
-    int random_pick_ = 0;         // random mode: index of the clip taken
-    bool arriving_ = false;       // at its goal: stops as soon as it can
-    std::vector<int> near_;       // scratch: broad-phase ids of one query
-    std::vector<int> waiters_;    // scratch: agents waiting near a candidate
-    int deferred_ = -1;           // the first free moving candidate that passes a waiting agent
+    double to_go_ = 0;                        // make way: Policy::to_go at the base, neighbours aside
+    std::vector<int> asking_;                 // scratch: agents whose ways were gathered
+    Placement base_;                          // where and when the next clip starts
+    Rigid2 base_m_;                           // Rigid2::of(base_): every candidate starts there
+    std::vector<PlacedCandidate> placed_;     // order_[0 .. placed_.size()) placed
+    int random_pick_ = 0;                     // random mode: index of the clip taken
+    bool arriving_ = false;                   // at its goal: stops as soon as it can
+    std::vector<int> near_;                   // scratch: broad-phase ids of one query
+    std::vector<int> waiters_;                // scratch: agents waiting near a candidate
+    int deferred_ = -1;                       // the first free moving candidate that passes a waiting agent
     Plan deferred_plan_;
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     SpaceTimeBox queried_all_;                 // their union (bounding box)

@@ -7,13 +7,12 @@
 #include <limits>
 #include <stdexcept>
 
-
-#include "simulation.h"
 #include "mobb/core/angle.h"
+#include "mobb/core/assert.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/util/random.h"
 #include "mobb/util/worker_pool.h"
-#include "mobb/core/assert.h"
+#include "simulation.h"
 
 namespace mobb::crowd {
 
@@ -64,7 +63,6 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       chosen_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
       moved_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
       waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
-
 
 // The boxes the frame's plans put in place and the ones they release, by position in the batch.
 void Simulation::gather(std::size_t n) {
@@ -237,8 +235,8 @@ void Simulation::apply_waiting() {
         const Hold& h = *agents_[std::size_t(agent)].plan.hold;
         waiting_at_[std::size_t(agent)] = {h.x, h.y};
         waiting_.insert(agent, agent,
-                        {h.x - reach, h.y - reach, h.x + reach, h.y + reach,
-                         std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()});
+                        {h.x - reach, h.y - reach, h.x + reach, h.y + reach, std::numeric_limits<std::int64_t>::min(),
+                         std::numeric_limits<std::int64_t>::max()});
     }
     wait_changes_.clear();
 }

@@ -27,7 +27,8 @@ std::array<float, 3> agent_color(int agent) {
 std::vector<io::ExportShape> world_shapes(const Record& r) {
     std::vector<io::ExportShape> out;
     const World& w = r.world;
-    if (w.walls) out.push_back({"walls", Polygon::rectangle(w.x0, w.y0, w.x1, w.y1).vertices, 1.0, {0.45f, 0.45f, 0.5f}});
+    if (w.walls)
+        out.push_back({"walls", Polygon::rectangle(w.x0, w.y0, w.x1, w.y1).vertices, 1.0, {0.45f, 0.45f, 0.5f}});
     for (std::size_t k = 0; k < w.obstacles.size(); ++k)
         out.push_back({"obstacle " + std::to_string(k), w.obstacles[k].vertices, 1.0, {0.55f, 0.4f, 0.3f}});
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
@@ -35,8 +36,8 @@ std::vector<io::ExportShape> world_shapes(const Record& r) {
             io::ExportShape disk{"goal " + std::to_string(a) + "." + std::to_string(g), {}, 0.0, agent_color(int(a))};
             for (int k = 0; k < 16; ++k) {
                 const double ang = 6.283185307179586 * k / 16;
-                disk.ground.push_back({r.tracks[a].goals[g][0] + 0.3 * std::cos(ang),
-                                       r.tracks[a].goals[g][1] + 0.3 * std::sin(ang)});
+                disk.ground.push_back(
+                    {r.tracks[a].goals[g][0] + 0.3 * std::cos(ang), r.tracks[a].goals[g][1] + 0.3 * std::sin(ang)});
             }
             out.push_back(std::move(disk));
         }

@@ -18,11 +18,17 @@ Id::~Id() {
 void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
 template <>
-hid_t native<std::int64_t>() { return H5T_NATIVE_INT64; }
+hid_t native<std::int64_t>() {
+    return H5T_NATIVE_INT64;
+}
 template <>
-hid_t native<std::uint64_t>() { return H5T_NATIVE_UINT64; }
+hid_t native<std::uint64_t>() {
+    return H5T_NATIVE_UINT64;
+}
 template <>
-hid_t native<double>() { return H5T_NATIVE_DOUBLE; }
+hid_t native<double>() {
+    return H5T_NATIVE_DOUBLE;
+}
 
 namespace {
 

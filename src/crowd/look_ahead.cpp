@@ -30,8 +30,8 @@ void LearnedCost::raise(double x, double y, double seconds) {
     v = std::max(v, seconds);
 }
 
-void LookAhead::push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth,
-                     double elapsed, const ToGo& to_go) {
+void LookAhead::push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth, double elapsed,
+                     const ToGo& to_go) {
     const double seconds = elapsed + double(graph.clips[std::size_t(step.clip)].path.size()) * graph.dt();
     const Placement end = graph.next(step.place, step.clip);
     const double score = seconds + to_go(end);
@@ -61,8 +61,8 @@ void LookAhead::settle(int first, const LookAheadLimits& limits) {
 }
 
 const std::vector<double>& LookAhead::search(const MotionGraph& graph, const std::vector<int>& first,
-                                             const Placement& base, std::int64_t frame,
-                                             const LookAheadLimits& limits, const Free& free, const ToGo& to_go) {
+                                             const Placement& base, std::int64_t frame, const LookAheadLimits& limits,
+                                             const Free& free, const ToGo& to_go) {
     const std::size_t n = first.size();
     limits_ = limits;
     nodes_.clear();
@@ -140,7 +140,9 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
         return piece_free(s, piece, nullptr);
     };
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
-    const auto to_go = [&](const Placement& end) { return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y)); };
+    const auto to_go = [&](const Placement& end) {
+        return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y));
+    };
     const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
     searched_ = true;
     const double best = *std::min_element(score.begin(), score.end());

@@ -31,8 +31,8 @@ struct SearchStep {
 };
 
 struct LookAheadLimits {
-    int horizon = 3;   ///< clips in a sequence
-    int budget = 96;   ///< steps tested per choice point (each: the broad phase and its exact queries)
+    int horizon = 3;      ///< clips in a sequence
+    int budget = 96;      ///< steps tested per choice point (each: the broad phase and its exact queries)
     double dead_end = 0;  ///< seconds added to a first clip without a free sequence to the horizon
     double weight = 2;    ///< of the time to go in the order of search (weighted A*; 1: plain best-first)
 };
@@ -103,11 +103,11 @@ private:
     LookAheadLimits limits_;
     std::vector<Node> nodes_;
     std::priority_queue<Open, std::vector<Open>, std::greater<>> open_;
-    std::vector<double> score_;     // per candidate
-    std::vector<int> best_;         // per candidate: node ending its best sequence (-1: none)
-    std::vector<int> pending_;      // per candidate: its nodes still open
-    std::vector<double> reached_;   // per candidate: the best score of its free nodes
-    std::vector<int> expanded_;     // free nodes whose successors were opened
+    std::vector<double> score_;    // per candidate
+    std::vector<int> best_;        // per candidate: node ending its best sequence (-1: none)
+    std::vector<int> pending_;     // per candidate: its nodes still open
+    std::vector<double> reached_;  // per candidate: the best score of its free nodes
+    std::vector<int> expanded_;    // free nodes whose successors were opened
     int tested_ = 0;
 };
 

@@ -148,7 +148,8 @@ namespace {
 double clip_speed(const GraphClip& c) {
     double length = 0;
     for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
-        length += std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x, c.path.samples[i + 1].y - c.path.samples[i].y);
+        length +=
+            std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x, c.path.samples[i + 1].y - c.path.samples[i].y);
     return length / c.path.duration();
 }
 
@@ -268,10 +269,9 @@ std::string metrics_text(const CrowdMetrics& m) {
         << "idle                     " << 100.0 * m.idle_share << " % of agent time, longest " << m.longest_idle
         << " s\n";
     if (m.goal_agents > 0)
-        out << "goals                    " << m.reached << " of " << m.goal_agents << " reached ("
-            << m.left << " left the run there), mean "
-            << m.mean_time_to_goal << " s, last " << m.max_time_to_goal << " s, path " << m.path_ratio
-            << " x the straight line: " << (m.passed ? "PASSED" : "FAILED") << "\n"
+        out << "goals                    " << m.reached << " of " << m.goal_agents << " reached (" << m.left
+            << " left the run there), mean " << m.mean_time_to_goal << " s, last " << m.max_time_to_goal << " s, path "
+            << m.path_ratio << " x the straight line: " << (m.passed ? "PASSED" : "FAILED") << "\n"
             << "time to goal             " << m.time_ratio << " x the straight line at the graph's walking speed ("
             << m.walking_speed << " m/s)\n";
     out << "SteerSuite composite     01: " << m.composite01 << ", 02: " << m.composite02 << " (lower is better)\n";

@@ -244,8 +244,8 @@ void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
 
 MotionGraph build_motion_graph(const std::vector<std::string>& files, const GraphBuildOptions& o, std::ostream* log) {
     if (files.empty()) throw GraphError("graph build: no input files");
-    if (!(o.fps >= kMinGraphFps && o.fps <= kMaxGraphFps) || !(o.threshold > 0) || o.window < 1 ||
-        !(o.min_clip > 0) || o.max_clip < o.min_clip)
+    if (!(o.fps >= kMinGraphFps && o.fps <= kMaxGraphFps) || !(o.threshold > 0) || o.window < 1 || !(o.min_clip > 0) ||
+        o.max_clip < o.min_clip)
         throw GraphError("graph build: invalid options");
     MotionGraph g;
     g.fps = o.fps;

@@ -200,8 +200,8 @@ void read_ranges(const json& c, const GraphSource& src, GraphClip& out, const st
     out.frame_exit = frames[1];
     const std::string fr = "[" + std::to_string(out.frame_first) + ", " + std::to_string(out.frame_exit) + "]";
     if (out.frame_first < src.frame_begin || out.frame_exit < out.frame_first)
-        fail(where + ".frames", fr + ": expected frame_begin (" + std::to_string(src.frame_begin) +
-                                    ") <= first <= exit");
+        fail(where + ".frames",
+             fr + ": expected frame_begin (" + std::to_string(src.frame_begin) + ") <= first <= exit");
     if (src.frame_end >= 0 && out.frame_exit >= src.frame_end)
         fail(where + ".frames", fr + ": its source ends before frame " + std::to_string(src.frame_end));
 }
@@ -261,8 +261,8 @@ void read_path(const json& c, double dt, GraphClip& out, const std::string& wher
     const auto& path = field(c, "path", where);
     if (!path.is_array() || path.empty()) fail(where + ".path", "expected [[x, y, r], ...]");
     if (path.size() != std::size_t(out.exit - out.first))
-        fail(where + ".path", std::to_string(path.size()) + " samples, \"samples\" says " +
-                                  std::to_string(out.exit - out.first));
+        fail(where + ".path",
+             std::to_string(path.size()) + " samples, \"samples\" says " + std::to_string(out.exit - out.first));
     for (std::size_t k = 0; k < path.size(); ++k) {
         const auto& s = path[k];
         const std::string place = where + ".path[" + std::to_string(k) + "]";
@@ -275,8 +275,8 @@ void read_path(const json& c, double dt, GraphClip& out, const std::string& wher
     }
     const Sample& p0 = out.path.samples.front();
     if (std::abs(p0.x) > 1e-6 || std::abs(p0.y) > 1e-6)
-        fail(where + ".path[0]", "the first sample is the origin of the clip's frame, not (" + num(p0.x) + ", " +
-                                     num(p0.y) + ")");
+        fail(where + ".path[0]",
+             "the first sample is the origin of the clip's frame, not (" + num(p0.x) + ", " + num(p0.y) + ")");
     try {
         validate(out.path);
     } catch (const std::invalid_argument& e) {
@@ -300,8 +300,8 @@ GraphClip clip_from_json(const json& c, const MotionGraph& g, std::size_t id, co
     }
     out.source = integer(field(c, "source", where), where + ".source");
     if (out.source < 0 || out.source >= int(g.sources.size()))
-        fail(where + ".source", std::to_string(out.source) + ": out of range (" + std::to_string(g.sources.size()) +
-                                    " sources)");
+        fail(where + ".source",
+             std::to_string(out.source) + ": out of range (" + std::to_string(g.sources.size()) + " sources)");
     if (c.contains("kind")) {
         const auto& kind = c["kind"];
         const bool known =
@@ -342,8 +342,7 @@ void read_stats(const json& j, MotionGraph& g, const std::string& where) {
     const auto near = [&](const char* key, double expected, double slack) {
         if (!s.contains(key)) return;
         const double v = finite(s[key], w + "." + key);
-        if (!(std::abs(v - expected) <= slack))
-            fail(w + "." + key, num(v) + ", the clips give " + num(expected));
+        if (!(std::abs(v - expected) <= slack)) fail(w + "." + key, num(v) + ", the clips give " + num(expected));
     };
     near("mean_duration", total / n, 1e-4);
     near("min_duration", lo, 1e-4);
@@ -351,8 +350,7 @@ void read_stats(const json& j, MotionGraph& g, const std::string& where) {
     near("mean_successors", double(edges) / n, 1e-3);
     if (s.contains("transition_points"))
         g.transitions = integer_at_least(s["transition_points"], w + ".transition_points", 0);
-    if (s.contains("clips_cut"))
-        g.clips_cut = integer_at_least(s["clips_cut"], w + ".clips_cut", int(g.clips.size()));
+    if (s.contains("clips_cut")) g.clips_cut = integer_at_least(s["clips_cut"], w + ".clips_cut", int(g.clips.size()));
 }
 
 }  // namespace

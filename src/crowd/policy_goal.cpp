@@ -87,11 +87,11 @@ public:
     }
 
     bool arrived(const ChoiceSite& site) const override {
-        return site.goal && site.stops && std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
+        return site.goal && site.stops &&
+               std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
     }
 
 private:
-
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
     // cost for ending close to where the neighbours will be. Within the stop radius, the path alone: the
     // agent stops there whichever way it faces and whoever stands near (else ending at the goal facing

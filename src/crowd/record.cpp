@@ -6,7 +6,6 @@
 #include <limits>
 #include <stdexcept>
 
-
 namespace mobb::crowd {
 
 const char* to_string(AtGoal at_goal) { return at_goal == AtGoal::Leave ? "leave" : "stay"; }
@@ -114,7 +113,7 @@ std::vector<Contact> frame_contacts(const Record& record) {
     const auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
     for (std::int64_t f0 = 0; f0 < record.frames; f0 += kBlock) {
         const std::int64_t frames = std::min(kBlock, record.frames - f0);
-        double rmax = 0;  // of the block: contacts are closer than 2 rmax
+        double rmax = 0;                        // of the block: contacts are closer than 2 rmax
         in_run.assign(std::size_t(frames), 0);  // per frame: agents still in the run (none left yet)
         for (std::size_t a = 0; a < n; ++a) {
             const auto& samples = record.tracks[a].samples;

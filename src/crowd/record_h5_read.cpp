@@ -33,7 +33,8 @@ J object(hid_t f, const char* name) {
     const auto v = h5::read_text(f, name);
     if (!v) return nullptr;
     J j = J::parse(*v, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) throw h5::Error(std::string("attribute ") + name + ": expected a JSON object");
+    if (j.is_discarded() || !j.is_object())
+        throw h5::Error(std::string("attribute ") + name + ": expected a JSON object");
     return j;
 }
 
@@ -49,7 +50,8 @@ std::size_t same_rows(const std::string& group, std::initializer_list<std::pair<
     const std::size_t n = sizes.begin()->second;
     for (const auto& [name, size] : sizes)
         if (size != n)
-            throw h5::Error(group + "/" + name + ": " + std::to_string(size) + " rows, " + group + " has " + std::to_string(n));
+            throw h5::Error(group + "/" + name + ": " + std::to_string(size) + " rows, " + group + " has " +
+                            std::to_string(n));
     return n;
 }
 
@@ -62,7 +64,8 @@ std::size_t owner(const I& column, std::size_t k, std::size_t owners, const std:
 }
 
 J header(hid_t f) {
-    if (h5::read_text(f, "format") != "mobb crowd record") throw h5::Error("attribute format: expected \"mobb crowd record\"");
+    if (h5::read_text(f, "format") != "mobb crowd record")
+        throw h5::Error("attribute format: expected \"mobb crowd record\"");
     if (one<std::int64_t>(f, "complete") != 1)
         throw h5::Error("incomplete: the writing stopped before the end (the run was killed, or the disk was full)");
     J j;
@@ -120,17 +123,23 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
             start = rows<std::int64_t>(f, "/clips/start"), fallback = rows<std::int64_t>(f, "/clips/fallback"),
             commit = rows<std::int64_t>(f, "/clips/commit");
     const D place = rows<double>(f, "/clips/place", {4});
-    const std::size_t n = same_rows("/clips", {{"agent", agent.size()}, {"clip", clip.size()}, {"start", start.size()},
-                                               {"fallback", fallback.size()}, {"commit", commit.size()},
+    const std::size_t n = same_rows("/clips", {{"agent", agent.size()},
+                                               {"clip", clip.size()},
+                                               {"start", start.size()},
+                                               {"fallback", fallback.size()},
+                                               {"commit", commit.size()},
                                                {"place", place.size() / 4}});
     for (std::size_t k = 0; k < n; ++k)
         out[owner(agent, k, agents, "/clips/agent")]["clips"].push_back(
-            {{"clip", clip[k]}, {"start", start[k]}, {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
-             {"fallback", fallback[k] != 0}, {"commit", commit[k]}});
+            {{"clip", clip[k]},
+             {"start", start[k]},
+             {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
+             {"fallback", fallback[k] != 0},
+             {"commit", commit[k]}});
     const D samples = rows<double>(f, "/tracks/samples", {hsize_t(agents), 4});
     if (std::int64_t(samples.size() / (4 * std::max<std::size_t>(1, agents))) != frames)
-        throw h5::Error("/tracks/samples: " + std::to_string(samples.size() / (4 * agents)) + " frames, the record has " +
-                        std::to_string(frames));
+        throw h5::Error("/tracks/samples: " + std::to_string(samples.size() / (4 * agents)) +
+                        " frames, the record has " + std::to_string(frames));
     for (std::size_t a = 0; a < agents; ++a) {
         const std::int64_t until = left[a] >= 0 ? std::min(left[a], frames) : frames;
         for (std::int64_t k = 0; k < until; ++k) {
@@ -147,8 +156,8 @@ void framed(hid_t f, const std::string& group, const char* owner_name, std::size
     const I own = rows<std::int64_t>(f, group + "/" + owner_name), clip = rows<std::int64_t>(f, group + "/clip"),
             frame = rows<std::int64_t>(f, group + "/frame");
     const D place = rows<double>(f, group + "/place", {3});
-    const std::size_t n = same_rows(group, {{owner_name, own.size()}, {"clip", clip.size()}, {"frame", frame.size()},
-                                            {"place", place.size() / 3}});
+    const std::size_t n = same_rows(
+        group, {{owner_name, own.size()}, {"clip", clip.size()}, {"frame", frame.size()}, {"place", place.size() / 3}});
     for (std::size_t k = 0; k < n; ++k)
         into(owner(own, k, owners, group + "/" + owner_name))
             .push_back({clip[k], frame[k], place[3 * k], place[3 * k + 1], place[3 * k + 2]});
@@ -170,25 +179,36 @@ J choices(hid_t f, double dt) {
     same_rows("/choices", {{"agent", n}, {"hold", hold.size() / 3}});
     J out = J::array();
     for (std::size_t k = 0; k < n; ++k) {
-        if (c[3][k] < 0 || c[3][k] > 4) throw h5::Error("/choices/outcome row " + std::to_string(k) + ": expected 0 to 4");
+        if (c[3][k] < 0 || c[3][k] > 4)
+            throw h5::Error("/choices/outcome row " + std::to_string(k) + ": expected 0 to 4");
         J plan = {{"escape", J::array()}};
         if (c[10][k] >= 0) plan["hold"] = {hold[3 * k], hold[3 * k + 1], hold[3 * k + 2], c[10][k]};
-        out.push_back({{"agent", c[0][k]}, {"frame", c[1][k]}, {"t", util::rounded(double(c[1][k]) * dt, 9)},
-                       {"taken", c[2][k]}, {"outcome", kOutcomes[c[3][k]]}, {"fallback", c[4][k] != 0},
-                       {"queries", count(c[5][k])}, {"tests2d", count(c[6][k])}, {"tests3d", count(c[7][k])},
-                       {"samples", count(c[8][k])}, {"pruned", count(c[9][k])}, {"plan", plan}, {"candidates", J::array()}});
+        out.push_back({{"agent", c[0][k]},
+                       {"frame", c[1][k]},
+                       {"t", util::rounded(double(c[1][k]) * dt, 9)},
+                       {"taken", c[2][k]},
+                       {"outcome", kOutcomes[c[3][k]]},
+                       {"fallback", c[4][k] != 0},
+                       {"queries", count(c[5][k])},
+                       {"tests2d", count(c[6][k])},
+                       {"tests3d", count(c[7][k])},
+                       {"samples", count(c[8][k])},
+                       {"pruned", count(c[9][k])},
+                       {"plan", plan},
+                       {"candidates", J::array()}});
     }
     framed(f, "/escapes", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["escape"]; });
     framed(f, "/intended", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["intended"]; });
     const I rc = rows<std::int64_t>(f, "/reroutes/choice"), ra = rows<std::int64_t>(f, "/reroutes/agent"),
             rf = rows<std::int64_t>(f, "/reroutes/hold_frame");
     const D rh = rows<double>(f, "/reroutes/hold", {3});
-    const std::size_t nr = same_rows("/reroutes", {{"choice", rc.size()}, {"agent", ra.size()}, {"hold_frame", rf.size()},
-                                                   {"hold", rh.size() / 3}});
+    const std::size_t nr = same_rows(
+        "/reroutes", {{"choice", rc.size()}, {"agent", ra.size()}, {"hold_frame", rf.size()}, {"hold", rh.size() / 3}});
     std::vector<std::pair<std::size_t, std::size_t>> reroute_at;  // (choice, index in its reroutes)
     for (std::size_t k = 0; k < nr; ++k) {
         J& list = out[owner(rc, k, n, "/reroutes/choice")]["plan"]["reroutes"];
-        list.push_back({{"agent", ra[k]}, {"escape", J::array()}, {"hold", {rh[3 * k], rh[3 * k + 1], rh[3 * k + 2], rf[k]}}});
+        list.push_back(
+            {{"agent", ra[k]}, {"escape", J::array()}, {"hold", {rh[3 * k], rh[3 * k + 1], rh[3 * k + 2], rf[k]}}});
         reroute_at.emplace_back(std::size_t(rc[k]), list.size() - 1);
     }
     framed(f, "/reroute_escapes", "reroute", nr, [&](std::size_t k) -> J& {
@@ -202,17 +222,23 @@ void candidates(hid_t f, J& choices) {
     static const char* const kNames[] = {"choice", "clip", "outside", "queries", "hits", "crowded"};
     std::vector<I> c;
     for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name));
-    for (std::size_t k = 0; k < c.size(); ++k) same_rows("/candidates", {{"choice", c[0].size()}, {kNames[k], c[k].size()}});
+    for (std::size_t k = 0; k < c.size(); ++k)
+        same_rows("/candidates", {{"choice", c[0].size()}, {kNames[k], c[k].size()}});
     static const char* const kQuery[] = {"candidate", "agent", "commit", "piece", "mine", "hit"};
     std::vector<I> q;
     for (const char* name : kQuery) q.push_back(rows<std::int64_t>(f, std::string("/queries/") + name));
-    for (std::size_t k = 0; k < q.size(); ++k) same_rows("/queries", {{"candidate", q[0].size()}, {kQuery[k], q[k].size()}});
+    for (std::size_t k = 0; k < q.size(); ++k)
+        same_rows("/queries", {{"candidate", q[0].size()}, {kQuery[k], q[k].size()}});
     std::vector<J> against(c[0].size(), J::array());
     for (std::size_t k = 0; k < q[0].size(); ++k)
-        against[owner(q[0], k, against.size(), "/queries/candidate")].push_back({q[1][k], q[2][k], q[3][k], q[4][k], q[5][k]});
+        against[owner(q[0], k, against.size(), "/queries/candidate")].push_back(
+            {q[1][k], q[2][k], q[3][k], q[4][k], q[5][k]});
     for (std::size_t k = 0; k < c[0].size(); ++k) {
         J& list = choices[owner(c[0], k, choices.size(), "/candidates/choice")]["candidates"];
-        list.push_back({{"clip", c[1][k]}, {"outside", c[2][k] != 0}, {"queries", c[3][k]}, {"hits", c[4][k]},
+        list.push_back({{"clip", c[1][k]},
+                        {"outside", c[2][k] != 0},
+                        {"queries", c[3][k]},
+                        {"hits", c[4][k]},
                         {"against", std::move(against[k])}});
         if (c[5][k]) list.back()["crowded"] = true;
     }
@@ -222,7 +248,8 @@ void candidates(hid_t f, J& choices) {
 
 RecordFile read_h5_record(const std::string& file) {
     h5::quiet();
-    if (H5Fis_hdf5(file.c_str()) <= 0) throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
+    if (H5Fis_hdf5(file.c_str()) <= 0)
+        throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
     J j;
     try {
         const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
@@ -251,7 +278,8 @@ namespace mobb::crowd {
 
 SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::int64_t last) {
     h5::quiet();
-    if (H5Fis_hdf5(file.c_str()) <= 0) throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
+    if (H5Fis_hdf5(file.c_str()) <= 0)
+        throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
     SampleWindow w;
     try {
         const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);

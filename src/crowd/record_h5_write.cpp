@@ -3,8 +3,8 @@
 // nested by their owner's row (a candidate's "choice", a query's "candidate").
 #include <algorithm>
 #include <array>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "h5.h"
@@ -22,7 +22,9 @@ const h5::Layout kColumn{};
 const h5::Layout kPair{{2}}, kTriple{{3}}, kPlace{{4}};
 
 // Frames per block of samples: about 64 k disks (2 MB) a block, 1 to 256 frames.
-hsize_t block_frames(std::size_t agents) { return hsize_t(std::clamp<std::size_t>(65536 / std::max<std::size_t>(1, agents), 1, 256)); }
+hsize_t block_frames(std::size_t agents) {
+    return hsize_t(std::clamp<std::size_t>(65536 / std::max<std::size_t>(1, agents), 1, 256));
+}
 
 void write_header(hid_t f, const Record& r, const std::string& summary, const std::string& metrics) {
     h5::write_text(f, "format", "mobb crowd record");
@@ -45,7 +47,8 @@ void write_obstacles(hid_t f, const World& w) {
     I polygon;
     D vertex;
     for (std::size_t k = 0; k < w.obstacles.size(); ++k)
-        for (const auto& v : w.obstacles[k].vertices) polygon.push_back(std::int64_t(k)), vertex.insert(vertex.end(), {v[0], v[1]});
+        for (const auto& v : w.obstacles[k].vertices)
+            polygon.push_back(std::int64_t(k)), vertex.insert(vertex.end(), {v[0], v[1]});
     h5::write_rows(f, "/obstacles/polygon", polygon, kColumn);
     h5::write_rows(f, "/obstacles/vertex", vertex, kPair);
 }
@@ -68,8 +71,8 @@ void write_tracks(hid_t f, const Record& r) {
     h5::write_rows(f, "/tracks/at_goal", at_goal, kColumn);
     h5::write_rows(f, "/goals/agent", goal_agent, kColumn);
     h5::write_rows(f, "/goals/xy", goal, kPair);
-    for (const auto& [name, column] : {std::pair{"agent", &agent}, {"clip", &clip}, {"start", &start},
-                                       {"fallback", &fallback}, {"commit", &commit}})
+    for (const auto& [name, column] :
+         {std::pair{"agent", &agent}, {"clip", &clip}, {"start", &start}, {"fallback", &fallback}, {"commit", &commit}})
         h5::write_rows(f, std::string("/clips/") + name, *column, kColumn);
     h5::write_rows(f, "/clips/place", place, kPlace);
 }
@@ -78,14 +81,17 @@ void write_tracks(hid_t f, const Record& r) {
 void write_samples(hid_t f, const Record& r) {
     const std::size_t n = r.tracks.size();
     const h5::Layout layout{{hsize_t(n), 4}, block_frames(n), false};
-    h5::write_rows<double>(f, "/tracks/samples", hsize_t(r.frames), layout, [&](hsize_t first, hsize_t count, double* out) {
-        for (hsize_t k = first; k < first + count; ++k)
-            for (std::size_t a = 0; a < n; ++a, out += 4) {
-                const auto& s = r.tracks[a].samples;
-                if (k < s.size()) std::copy(s[k].begin(), s[k].end(), out);
-                else std::fill(out, out + 4, kNone);
-            }
-    });
+    h5::write_rows<double>(f, "/tracks/samples", hsize_t(r.frames), layout,
+                           [&](hsize_t first, hsize_t count, double* out) {
+                               for (hsize_t k = first; k < first + count; ++k)
+                                   for (std::size_t a = 0; a < n; ++a, out += 4) {
+                                       const auto& s = r.tracks[a].samples;
+                                       if (k < s.size())
+                                           std::copy(s[k].begin(), s[k].end(), out);
+                                       else
+                                           std::fill(out, out + 4, kNone);
+                                   }
+                           });
 }
 
 // A table written as it grows: named columns of int64 (one value a row) and float64 (`width` a row),
@@ -94,7 +100,8 @@ class Table {
 public:
     Table(hid_t f, const std::string& group, std::initializer_list<const char*> ints,
           std::initializer_list<std::pair<const char*, hsize_t>> reals) {
-        for (const char* name : ints) ints_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_INT64, kColumn), I{});
+        for (const char* name : ints)
+            ints_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_INT64, kColumn), I{});
         for (const auto& [name, width] : reals)
             reals_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_DOUBLE, h5::Layout{{width}}), D{});
     }
@@ -105,7 +112,8 @@ public:
     void flush(bool all) {
         if (!all && ints_[0].second.size() < kColumn.block) return;
         for (auto& [out, rows] : ints_) out.append(rows.data(), rows.size()), rows.clear();
-        for (auto& [out, rows] : reals_) out.append(rows.data(), rows.size() / h5::row_size(out.layout())), rows.clear();
+        for (auto& [out, rows] : reals_)
+            out.append(rows.data(), rows.size() / h5::row_size(out.layout())), rows.clear();
     }
 
 private:
@@ -124,8 +132,8 @@ std::int64_t outcome_index(const std::string& outcome) {
 struct Tables {
     explicit Tables(hid_t f)
         : choices(f, "/choices",
-                  {"agent", "frame", "taken", "outcome", "fallback", "queries", "tests2d", "tests3d", "samples", "pruned",
-                   "hold_frame"},
+                  {"agent", "frame", "taken", "outcome", "fallback", "queries", "tests2d", "tests3d", "samples",
+                   "pruned", "hold_frame"},
                   {{"hold", 3}}),
           escapes(f, "/escapes", {"choice", "clip", "frame"}, {{"place", 3}}),
           intended(f, "/intended", {"choice", "clip", "frame"}, {{"place", 3}}),
@@ -142,16 +150,25 @@ struct Tables {
     }
 
     void add(std::size_t c, const ChoicePoint& cp) {
-        const std::int64_t row[] = {cp.agent, cp.frame, cp.taken, outcome_index(cp.outcome), cp.fallback,
-                                    std::int64_t(cp.queries), std::int64_t(cp.tests2d), std::int64_t(cp.tests3d),
-                                    std::int64_t(cp.samples), std::int64_t(cp.pruned), cp.holds ? cp.hold_frame : -1};
+        const std::int64_t row[] = {cp.agent,
+                                    cp.frame,
+                                    cp.taken,
+                                    outcome_index(cp.outcome),
+                                    cp.fallback,
+                                    std::int64_t(cp.queries),
+                                    std::int64_t(cp.tests2d),
+                                    std::int64_t(cp.tests3d),
+                                    std::int64_t(cp.samples),
+                                    std::int64_t(cp.pruned),
+                                    cp.holds ? cp.hold_frame : -1};
         for (std::size_t k = 0; k < std::size(row); ++k) choices.i(k).push_back(row[k]);
         for (std::size_t k = 0; k < 3; ++k) choices.d(0).push_back(cp.holds ? cp.hold[k] : kNone);
         framed(escapes, c, cp.escape);
         framed(intended, c, cp.intended);
         for (const ReroutedPlan& p : cp.reroutes) {
             framed(reroute_escapes, reroutes.rows(), p.escape);
-            reroutes.i(0).push_back(std::int64_t(c)), reroutes.i(1).push_back(p.agent), reroutes.i(2).push_back(p.hold_frame);
+            reroutes.i(0).push_back(std::int64_t(c)), reroutes.i(1).push_back(p.agent),
+                reroutes.i(2).push_back(p.hold_frame);
             reroutes.d(0).insert(reroutes.d(0).end(), p.hold.begin(), p.hold.end());
         }
         for (const Candidate& k : cp.candidates) {
@@ -165,7 +182,9 @@ struct Tables {
         for (Table* t : all()) t->flush(false);
     }
 
-    std::array<Table*, 7> all() { return {&choices, &escapes, &intended, &reroutes, &reroute_escapes, &candidates, &queries}; }
+    std::array<Table*, 7> all() {
+        return {&choices, &escapes, &intended, &reroutes, &reroute_escapes, &candidates, &queries};
+    }
 
     Table choices, escapes, intended, reroutes, reroute_escapes, candidates, queries;
 };

@@ -173,8 +173,8 @@ PlacedClip placed_clip_of(const json& c, const Record& r, const PlacedClip* befo
     out.fallback = boolean(need(c, "fallback", w), dot(w, "fallback"));
     out.commit = integer(need(c, "commit", w), dot(w, "commit"), -1, kNoLimit);
     if (before && out.commit < before->commit)
-        fail(dot(w, "commit"), std::to_string(out.commit) + ": commits in order, the clip before's is " +
-                                   std::to_string(before->commit));
+        fail(dot(w, "commit"),
+             std::to_string(out.commit) + ": commits in order, the clip before's is " + std::to_string(before->commit));
     return out;
 }
 
@@ -207,10 +207,10 @@ AgentTrack track_of(const json& t, const Record& r, const std::string& w) {
     const json& clips = array(need(t, "clips", w), dot(w, "clips"), "an array of clips");
     if (clips.empty()) fail(dot(w, "clips"), "an agent plays at least one clip");
     for (std::size_t k = 0; k < clips.size(); ++k)
-        track.clips.push_back(
-            placed_clip_of(clips[k], r, k ? &track.clips.back() : nullptr, at(dot(w, "clips"), k)));
+        track.clips.push_back(placed_clip_of(clips[k], r, k ? &track.clips.back() : nullptr, at(dot(w, "clips"), k)));
     if (t.contains("left_frame")) track.left_frame = integer(t["left_frame"], dot(w, "left_frame"), 1, r.frames - 1);
-    if (track.left_frame && track.at_goal != AtGoal::Leave) fail(dot(w, "left_frame"), "only an agent that leaves has one");
+    if (track.left_frame && track.at_goal != AtGoal::Leave)
+        fail(dot(w, "left_frame"), "only an agent that leaves has one");
     const std::int64_t frames = track.left_frame.value_or(r.frames);
     const json& samples = array(need(t, "samples", w), dot(w, "samples"), "an array of [t, x, y, r]");
     if (std::int64_t(samples.size()) != frames)
@@ -290,7 +290,7 @@ CandidateQuery query_of(const json& q, const Record& r, const std::string& w) {
             fail(at(w, 1), std::to_string(cq.commit) + ": no such wall or obstacle (" + std::to_string(solids) + ")");
         return cq;
     }
-    const bool start = cq.commit == -1 && cq.piece == -1;  // the ground the agent started on
+    const bool start = cq.commit == -1 && cq.piece == -1;                         // the ground the agent started on
     if (!start && (cq.commit < 0 || std::size_t(cq.commit) >= r.choices.size()))  // queries name earlier ones only
         fail(at(w, 1), std::to_string(cq.commit) + ": names no earlier choice point (" +
                            std::to_string(r.choices.size()) + " before this one)");
@@ -305,8 +305,8 @@ Candidate candidate_of(const json& k, const Record& r, const std::string& w) {
     cand.hits = index(need(k, "hits", w), dot(w, "hits"), 0, cand.queries);
     const json& against = array(need(k, "against", w), dot(w, "against"), "an array of queries");
     if (against.size() > std::size_t(cand.queries))
-        fail(dot(w, "against"), std::to_string(against.size()) + " queries listed, \"queries\" says " +
-                                    std::to_string(cand.queries));
+        fail(dot(w, "against"),
+             std::to_string(against.size()) + " queries listed, \"queries\" says " + std::to_string(cand.queries));
     for (std::size_t i = 0; i < against.size(); ++i)
         cand.against.push_back(query_of(against[i], r, at(dot(w, "against"), i)));
     cand.crowded = k.contains("crowded") ? boolean(k["crowded"], dot(w, "crowded")) : false;

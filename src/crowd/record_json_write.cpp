@@ -8,8 +8,6 @@
 
 namespace mobb::crowd {
 
-
-
 namespace {
 
 using J = nlohmann::ordered_json;

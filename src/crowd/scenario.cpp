@@ -109,7 +109,8 @@ std::vector<std::array<double, 2>> goals(const json& j, const World& w, const st
     const json& v = j["goals"];
     if (!v.is_array() || v.empty()) fail(where + ".goals", "expected a non-empty array of [x, y]");
     std::vector<std::array<double, 2>> out;
-    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(goal(v[k], w, where + ".goals[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < v.size(); ++k)
+        out.push_back(goal(v[k], w, where + ".goals[" + std::to_string(k) + "]"));
     return out;
 }
 

@@ -85,7 +85,7 @@ private:
         std::vector<std::array<double, 2>> way;
     };
     std::vector<WayAsked> way_changes_;  // this frame's asks to make way, applied after it
-    std::vector<char> in_waiting_;                    // per agent: in waiting_
+    std::vector<char> in_waiting_;       // per agent: in waiting_
     CrowdRun out_;
 };
 

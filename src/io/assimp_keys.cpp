@@ -28,7 +28,8 @@ void read_times(const Key* keys, unsigned count, double tps, std::vector<double>
     }
 }
 
-void read_vectors(const aiVectorKey* keys, unsigned count, double tps, Keys<glm::dvec3>& out, const std::string& where) {
+void read_vectors(const aiVectorKey* keys, unsigned count, double tps, Keys<glm::dvec3>& out,
+                  const std::string& where) {
     if (!keys) return;
     read_times(keys, count, tps, out.times, where);
     for (unsigned k = 0; k < count; ++k) {
@@ -38,7 +39,8 @@ void read_vectors(const aiVectorKey* keys, unsigned count, double tps, Keys<glm:
     }
 }
 
-void read_rotations(const aiQuatKey* keys, unsigned count, double tps, Keys<glm::dquat>& out, const std::string& where) {
+void read_rotations(const aiQuatKey* keys, unsigned count, double tps, Keys<glm::dquat>& out,
+                    const std::string& where) {
     if (!keys) return;
     read_times(keys, count, tps, out.times, where);
     for (unsigned k = 0; k < count; ++k) {
@@ -82,9 +84,10 @@ glm::dmat4 Track::at(double time, const aiMatrix4x4& rest) const {
         rest.Decompose(rest_scale, rest_rotation, rest_position);
     const glm::dvec3 t = translation.times.empty() ? glm::dvec3(rest_position.x, rest_position.y, rest_position.z)
                                                    : translation.at(time);
-    const glm::dquat r = rotation.times.empty()
-                             ? glm::normalize(glm::dquat(rest_rotation.w, rest_rotation.x, rest_rotation.y, rest_rotation.z))
-                             : rotation.at(time);
+    const glm::dquat r =
+        rotation.times.empty()
+            ? glm::normalize(glm::dquat(rest_rotation.w, rest_rotation.x, rest_rotation.y, rest_rotation.z))
+            : rotation.at(time);
     const glm::dvec3 s = scale.times.empty() ? glm::dvec3(rest_scale.x, rest_scale.y, rest_scale.z) : scale.at(time);
     const glm::dmat3 m = glm::mat3_cast(r);
     glm::dmat4 out(1.0);

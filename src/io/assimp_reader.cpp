@@ -7,10 +7,10 @@
 #include <map>
 #include <optional>
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
@@ -108,8 +108,8 @@ private:
         const aiScene* scene = nullptr;
         std::string error;
         try {
-            scene = importer_.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure,
-                                                 hint.c_str());
+            scene =
+                importer_.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, hint.c_str());
             if (!scene) error = first_line(importer_.GetErrorString());
         } catch (const std::exception& e) {
             error = first_line(e.what());
@@ -354,14 +354,14 @@ private:
     const aiScene* scene_ = nullptr;
     const aiAnimation* animation_ = nullptr;
     std::string animation_label_;
-    glm::dmat4 axes_{1.0};                   // file axes to Y or Z up
-    std::vector<Node> nodes_;                // depth first
+    glm::dmat4 axes_{1.0};                    // file axes to Y or Z up
+    std::vector<Node> nodes_;                 // depth first
     std::vector<std::vector<int>> children_;  // per node
-    std::map<std::string, int> by_name_;  // first node of each name
+    std::map<std::string, int> by_name_;      // first node of each name
     std::vector<Track> tracks_;
-    std::vector<int> track_of_;   // per node: its track, or -1
-    std::vector<int> joints_;     // per joint: its node
-    std::vector<int> chain_;      // ancestors of the skeleton's top node, outermost first
+    std::vector<int> track_of_;      // per node: its track, or -1
+    std::vector<int> joints_;        // per joint: its node
+    std::vector<int> chain_;         // ancestors of the skeleton's top node, outermost first
     std::vector<glm::dmat4> world_;  // per node: world matrix of the sample being posed
     Result result_;
 };

@@ -45,7 +45,8 @@ std::uintmax_t write_bvh(const ExportScene& scene, int skeleton, const std::stri
     std::vector<std::vector<std::size_t>> children(joints);
     for (std::size_t j = 1; j < joints; ++j) {
         const int p = scene.rig.parents[j];
-        if (p < 0 || std::size_t(p) >= j) throw ExportError(file + ": joint " + std::to_string(j) + " has a bad parent");
+        if (p < 0 || std::size_t(p) >= j)
+            throw ExportError(file + ": joint " + std::to_string(j) + " has a bad parent");
         children[std::size_t(p)].push_back(j);
     }
     std::vector<std::size_t> order;  // joints in the order the hierarchy lists them (depth first)
@@ -59,7 +60,8 @@ std::uintmax_t write_bvh(const ExportScene& scene, int skeleton, const std::stri
         append(text, o.x), text += ' ', append(text, o.y), text += ' ', append(text, o.z);
         text += "\n" + pad + "  CHANNELS 3 Xposition Yposition Zposition\n";
         for (std::size_t c : children[j]) self(self, c, depth + 1);
-        if (children[j].empty()) text += pad + "  End Site\n" + pad + "  {\n" + pad + "    OFFSET 0 0 0\n" + pad + "  }\n";
+        if (children[j].empty())
+            text += pad + "  End Site\n" + pad + "  {\n" + pad + "    OFFSET 0 0 0\n" + pad + "  }\n";
         text += pad + "}\n";
     };
     write(write, 0, 0);

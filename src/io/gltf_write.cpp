@@ -5,9 +5,9 @@
 #include <cstring>
 #include <filesystem>
 
+#include <tiny_gltf.h>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
-#include <tiny_gltf.h>
 
 #include "mobb/io/export.h"
 
@@ -61,9 +61,7 @@ public:
     }
 
 private:
-    static std::size_t component_size(int c) {
-        return c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2 : 4;
-    }
+    static std::size_t component_size(int c) { return c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2 : 4; }
     static int count(int type) {
         return type == TINYGLTF_TYPE_SCALAR ? 1 : type == TINYGLTF_TYPE_VEC3 ? 3 : type == TINYGLTF_TYPE_VEC4 ? 4 : 16;
     }
@@ -115,8 +113,12 @@ struct BodyMesh {
         const glm::vec3 u = glm::normalize(glm::cross(axis, other)), v = glm::cross(axis, u);
         const float rad = std::clamp(0.25f * len, 0.01f, 0.06f);
         // Rings along the axis: (offset from a, ring radius); the ends are rounded.
-        const std::array<std::array<float, 2>, 6> rings = {
-            {{-rad, 0}, {-0.7f * rad, 0.7f * rad}, {0, rad}, {len, rad}, {len + 0.7f * rad, 0.7f * rad}, {len + rad, 0}}};
+        const std::array<std::array<float, 2>, 6> rings = {{{-rad, 0},
+                                                            {-0.7f * rad, 0.7f * rad},
+                                                            {0, rad},
+                                                            {len, rad},
+                                                            {len + 0.7f * rad, 0.7f * rad},
+                                                            {len + rad, 0}}};
         constexpr int kSides = 8;
         const std::uint32_t base = std::uint32_t(positions.size());
         for (const auto& ring : rings) {
@@ -181,8 +183,8 @@ void add_shape(ModelBuilder& out, const ExportShape& shape) {
         out.accessor(pos, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     prim.attributes["NORMAL"] =
         out.accessor(nrm, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
-    prim.indices =
-        out.accessor(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    prim.indices = out.accessor(idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     tinygltf::Mesh mesh;
     mesh.name = shape.name;
     mesh.primitives.push_back(std::move(prim));
@@ -254,9 +256,11 @@ void add_skeleton(ModelBuilder& out, const ExportScene& scene, const ExportSkele
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = out.material(sk.name + " body", sk.color);
     const int vb = TINYGLTF_TARGET_ARRAY_BUFFER;
-    prim.attributes["POSITION"] = out.accessor(body.positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vb, true);
+    prim.attributes["POSITION"] =
+        out.accessor(body.positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vb, true);
     prim.attributes["NORMAL"] = out.accessor(body.normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vb);
-    prim.attributes["JOINTS_0"] = out.accessor(body.joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, vb);
+    prim.attributes["JOINTS_0"] =
+        out.accessor(body.joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, vb);
     prim.attributes["WEIGHTS_0"] = out.accessor(body.weights, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, vb);
     prim.indices = out.accessor(body.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                                 TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
@@ -311,8 +315,10 @@ std::uintmax_t write_gltf(const ExportScene& scene, const std::string& file) {
     std::error_code ec;
     if (!ok) {
         std::filesystem::remove(tmp, ec);
-        throw ExportError(file + ": cannot write glTF (" + (std::filesystem::path(file).has_parent_path() ?
-                                                               "is the folder there and writable?" : "not writable") + ")");
+        throw ExportError(
+            file + ": cannot write glTF (" +
+            (std::filesystem::path(file).has_parent_path() ? "is the folder there and writable?" : "not writable") +
+            ")");
     }
     std::filesystem::rename(tmp, file, ec);
     if (ec) {

@@ -23,8 +23,8 @@ void BoxLayer::rebuild(const Frame& frame) {
         if (!clip.visible) continue;
         const SpaceTimeRigid m = SpaceTimeRigid::of(clip.place);
         const auto& nodes = clip.tree->nodes();
-        const bool mapped = frame.layers.box_colour != BoxColour::Level && clip.node_values &&
-                            clip.node_values->size() == nodes.size();
+        const bool mapped =
+            frame.layers.box_colour != BoxColour::Level && clip.node_values && clip.node_values->size() == nodes.size();
         for (std::size_t n = 0; n < nodes.size(); ++n) {
             const Node& node = nodes[n];
             if (!frame.layers.all_levels && !shown_at_level(node, frame.layers.level, frame.layers.levels)) continue;

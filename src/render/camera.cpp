@@ -53,7 +53,8 @@ void Camera::frame(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
         const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
         const glm::vec3 rel = corner - target;
         const float z = glm::dot(rel, back);
-        nearest = std::max({nearest, z + std::abs(glm::dot(rel, right)) / tan_x, z + std::abs(glm::dot(rel, up)) / tan_y});
+        nearest =
+            std::max({nearest, z + std::abs(glm::dot(rel, right)) / tan_x, z + std::abs(glm::dot(rel, up)) / tan_y});
     }
     distance = nearest;
 }

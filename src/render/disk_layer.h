@@ -48,7 +48,7 @@ private:
         GLuint vao = 0, vbo = 0;
         GLsizei count = 0;
         bool built = false;
-        GLuint values = 0;                              ///< one float per instance (location 4)
+        GLuint values = 0;                                  ///< one float per instance (location 4)
         std::uint64_t values_revision = ~std::uint64_t(0);  ///< the frame's colour_revision uploaded
     };
     struct Tube {

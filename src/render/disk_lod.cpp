@@ -62,9 +62,10 @@ std::vector<Bounds> chunk_bounds(const Path& path, const Placement& place) {
 bool outside_view(const glm::mat4& view_proj, const glm::vec3& lo, const glm::vec3& hi) {
     int left = 0, right = 0, below = 0, above = 0, behind = 0, beyond = 0;
     for (int c = 0; c < 8; ++c) {
-        const glm::vec4 p = view_proj * glm::vec4((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z, 1.0f);
-        left += p.x < -p.w, right += p.x > p.w, below += p.y < -p.w, above += p.y > p.w;
-        behind += p.z < -p.w, beyond += p.z > p.w;
+        const glm::vec4 p =
+            view_proj * glm::vec4((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z, 1.0f);
+        left += p.x<-p.w, right += p.x> p.w, below += p.y<-p.w, above += p.y> p.w;
+        behind += p.z<-p.w, beyond += p.z> p.w;
     }
     return left == 8 || right == 8 || below == 8 || above == 8 || behind == 8 || beyond == 8;
 }

@@ -90,7 +90,7 @@ struct TubeVertex {
     glm::vec4 dir;
 };
 struct TubeMesh {
-    std::vector<TubeVertex> vertices;  ///< rings 0..groups, then the two caps' copies of the end rings
+    std::vector<TubeVertex> vertices;    ///< rings 0..groups, then the two caps' copies of the end rings
     std::vector<std::uint32_t> indices;  ///< bottom cap, then 6 * segments per group in order, top cap
     std::size_t groups = 0;
     int segments = 0;

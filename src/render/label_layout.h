@@ -29,9 +29,9 @@ struct TextBox {
 enum class LabelRole : std::uint8_t { Overlay, Title, Tick };
 
 struct LabelSpot {
-    TextBox box;         ///< where the label's anchor puts it (moved by the layout)
+    TextBox box;  ///< where the label's anchor puts it (moved by the layout)
     LabelRole role = LabelRole::Tick;
-    bool anchor_inside = true;  ///< the point it labels lies in the viewport (read for titles)
+    bool anchor_inside = true;            ///< the point it labels lies in the viewport (read for titles)
     std::optional<TextBox> other_side{};  ///< a tick label's box across its axis (read for ticks)
 };
 

@@ -16,8 +16,8 @@ constexpr std::size_t kVertexBytes = 16;  ///< stb_easy_font's vertex: x, y, z f
 /// The text's glyph quads from stb_easy_font, in font pixels from the text's origin; `ink` gets their bounds.
 std::vector<glm::vec2> glyph_corners(const std::string& text, TextBox& ink) {
     static std::vector<char> quads(64 * 1024);
-    const int n = stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(text.c_str()), nullptr, quads.data(),
-                                      int(quads.size()));
+    const int n =
+        stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(text.c_str()), nullptr, quads.data(), int(quads.size()));
     std::vector<glm::vec2> corners(std::size_t(n) * 4);
     ink = {1e30f, 1e30f, -1e30f, -1e30f};
     for (std::size_t v = 0; v < corners.size(); ++v) {

@@ -51,7 +51,7 @@ private:
         Anchor anchor;
         LabelRole role;
         glm::vec2 offset{0.0f};
-        bool screen = false;  ///< world.x, world.y are pixels
+        bool screen = false;                ///< world.x, world.y are pixels
         std::optional<glm::vec3> across{};  ///< add_tick's other side
     };
     std::vector<Label> labels_;

@@ -268,8 +268,8 @@ std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
         const double until = double(track.samples.size()) * r.dt;
         for (std::size_t k = 0; k < track.goals.size(); ++k) {
             const double size = k + 1 == track.goals.size() ? 0.15 : 0.08;
-            out.push_back({circle(track.goals[k][0], track.goals[k][1], size, 4), 0, until,
-                           render::clip_color(int(a)), 0.6f, false});
+            out.push_back({circle(track.goals[k][0], track.goals[k][1], size, 4), 0, until, render::clip_color(int(a)),
+                           0.6f, false});
         }
     }
     const auto frame = std::int64_t(std::floor(t / r.dt));

@@ -48,8 +48,8 @@ std::vector<std::string> cut_windows(const ImVec2& display) {
 std::vector<ImageRect> drawn_windows() {
     std::vector<ImageRect> out;
     for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
-        const ImGuiWindowFlags skip = ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup | ImGuiWindowFlags_MenuBar |
-                                      ImGuiWindowFlags_ChildWindow;
+        const ImGuiWindowFlags skip =
+            ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup | ImGuiWindowFlags_MenuBar | ImGuiWindowFlags_ChildWindow;
         if (w->WasActive && !w->Hidden && !(w->Flags & skip))
             out.push_back({w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}});
     }

@@ -12,8 +12,8 @@ namespace mobb::viewer {
 namespace {
 
 constexpr float kMinColumn = 200.0f;
-constexpr float kMinFill = 150.0f;  ///< the least a list panel keeps before the others give way
-constexpr float kMaxStrip = 0.35f;  ///< the most of the window's height the bottom strip takes
+constexpr float kMinFill = 150.0f;     ///< the least a list panel keeps before the others give way
+constexpr float kMaxStrip = 0.35f;     ///< the most of the window's height the bottom strip takes
 constexpr float kFirstStrip = 120.0f;  ///< the strip's height before its panel has measured its content
 
 std::size_t index_of(const PanelInfo& info) { return std::size_t(&info - panel_list().data()); }
@@ -182,8 +182,8 @@ bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
         ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
         // The strip follows the columns and its content: nothing of it to drag.
         const int fixed = info.column == Column::Bottom ? ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : 0;
-        drawn = ImGui::Begin(info.name, &open,
-                             flags | fixed | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+        drawn =
+            ImGui::Begin(info.name, &open, flags | fixed | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
         // Dragging a panel's side edge resizes its whole column.
         if (const float w = ImGui::GetWindowWidth(); info.column != Column::Bottom && std::abs(w - r.width) > 0.5f)
             (info.column == Column::Left ? ui.columns.left : ui.columns.right) = clamped_width(w, ui);

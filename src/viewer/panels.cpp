@@ -25,10 +25,10 @@ void apply_style() {
 const std::vector<PanelInfo>& panel_list() {
     using C = Column;
     static const std::vector<PanelInfo> list = {
-        {"Scene", &PanelsOpen::scene, C::Left, false},  {"Query", &PanelsOpen::query, C::Right, false},
-        {"Trace", &PanelsOpen::trace, C::Right, true},  {"Recursion", &PanelsOpen::recursion, C::Left, true},
-        {"Tree fit", &PanelsOpen::fit, C::Left, false}, {"Inspector", &PanelsOpen::inspector, C::Left, false},
-        {"Crowd", &PanelsOpen::crowd, C::Right, false}, {"Timeline", &PanelsOpen::timeline, C::Bottom, false},
+        {"Scene", &PanelsOpen::scene, C::Left, false},   {"Query", &PanelsOpen::query, C::Right, false},
+        {"Trace", &PanelsOpen::trace, C::Right, true},   {"Recursion", &PanelsOpen::recursion, C::Left, true},
+        {"Tree fit", &PanelsOpen::fit, C::Left, false},  {"Inspector", &PanelsOpen::inspector, C::Left, false},
+        {"Crowd", &PanelsOpen::crowd, C::Right, false},  {"Timeline", &PanelsOpen::timeline, C::Bottom, false},
         {"Open", &PanelsOpen::open, C::Floating, false},
     };
     return list;

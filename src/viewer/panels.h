@@ -25,7 +25,7 @@ struct Pick {
 struct PanelsOpen {
     bool scene = true, query = true, trace = true, recursion = true, fit = false, inspector = false, crowd = false;
     bool timeline = false;  ///< a crowd's playback and timeline, in the bottom strip
-    bool open = false;  ///< the Open panel (data folder)
+    bool open = false;      ///< the Open panel (data folder)
 };
 
 /// Where a panel stands: in the left or right column beside the 3D view, in the bottom strip under it

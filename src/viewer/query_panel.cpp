@@ -5,8 +5,8 @@
 
 #include <imgui.h>
 
-#include "mobb/core/angle.h"
 #include "layout.h"
+#include "mobb/core/angle.h"
 #include "panels.h"
 #include "widgets.h"
 

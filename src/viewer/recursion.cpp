@@ -57,7 +57,8 @@ Recursion recursion_of(const Trace& trace, const Tree& a, const Tree& b) {
         up.hit = up.hit || p.hit;
     }
     for (int k = 0; k < int(r.pairs.size()); ++k)
-        if (r.pairs[std::size_t(k)].parent >= 0) r.pairs[std::size_t(r.pairs[std::size_t(k)].parent)].children.push_back(k);
+        if (r.pairs[std::size_t(k)].parent >= 0)
+            r.pairs[std::size_t(r.pairs[std::size_t(k)].parent)].children.push_back(k);
     return r;
 }
 

@@ -157,7 +157,8 @@ void layers_of(const json& j, const std::string& where, render::Layers& l) {
         Reader::fail(r.at("disk_colour"), e.what());
     }
     try {
-        if (r.has("box_colour")) l.box_colour = render::parse_box_colour(r.string("box_colour", to_string(l.box_colour)));
+        if (r.has("box_colour"))
+            l.box_colour = render::parse_box_colour(r.string("box_colour", to_string(l.box_colour)));
     } catch (const std::invalid_argument& e) {
         Reader::fail(r.at("box_colour"), e.what());
     }

@@ -79,9 +79,10 @@ void write_all(ImGuiContext*, ImGuiSettingsHandler* h, ImGuiTextBuffer* out) {
     out->appendf("[%s][Panel choices]\n", h->TypeName);
     for (const auto& [name, open] : s.panel_choices) out->appendf("%s=%d\n", name.c_str(), open ? 1 : 0);
     const Columns& c = s.columns;
-    out->appendf("\n[%s][Columns]\nleft=%.0f\nright=%.0f\nleft_collapsed=%d\nright_collapsed=%d\nbottom_collapsed=%d\n\n",
-                 h->TypeName, double(c.left), double(c.right), c.left_collapsed ? 1 : 0, c.right_collapsed ? 1 : 0,
-                 c.bottom_collapsed ? 1 : 0);
+    out->appendf(
+        "\n[%s][Columns]\nleft=%.0f\nright=%.0f\nleft_collapsed=%d\nright_collapsed=%d\nbottom_collapsed=%d\n\n",
+        h->TypeName, double(c.left), double(c.right), c.left_collapsed ? 1 : 0, c.right_collapsed ? 1 : 0,
+        c.bottom_collapsed ? 1 : 0);
     for (const auto& [key, camera] : s.cameras)
         out->appendf("[%s][Camera %s]\n%s\n\n", h->TypeName, key.c_str(), camera_line(camera).c_str());
 }

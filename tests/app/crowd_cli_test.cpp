@@ -144,8 +144,9 @@ TEST(CrowdCli, BenchCrowdWritesItsTables) {
     const std::string json = temp_file("crowd.json"), png = temp_file("crowd.png");
     const Result r = run("bench crowd --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
     ASSERT_EQ(r.code, 0) << r.err;
-    for (const char* part : {"### Wandering crowds", "### Scenarios", "Targets (issues 10 and 28)", "fallbacks <= 0.5 %",
-                             "time to goal <= 1.5x the straight line", "time to goal / straight at walking speed"})
+    for (const char* part :
+         {"### Wandering crowds", "### Scenarios", "Targets (issues 10 and 28)", "fallbacks <= 0.5 %",
+          "time to goal <= 1.5x the straight line", "time to goal / straight at walking speed"})
         EXPECT_NE(r.out.find(part), std::string::npos) << part;
     const nlohmann::json j = nlohmann::json::parse(test::slurp(json));
     EXPECT_EQ(j["workload"], "crowd");

@@ -40,11 +40,11 @@ std::string fbx_folder() {
     return !dir.empty() && std::filesystem::is_directory(dir, ec) ? dir : std::string();
 }
 
-#define MOBB_REQUIRE_FBX(dir)                                                                       \
-    const std::string dir = fbx_folder();                                                           \
-    if (dir.empty()) {                                                                              \
+#define MOBB_REQUIRE_FBX(dir)                                                                      \
+    const std::string dir = fbx_folder();                                                          \
+    if (dir.empty()) {                                                                             \
         if (mobb::test::data_required()) FAIL() << "MOBB_REQUIRE_DATA=1 but no mocap fbx/ folder"; \
-        GTEST_SKIP() << "mocap fbx/ folder not found: set MOBB_DATA or put it in ../shared/mocap";  \
+        GTEST_SKIP() << "mocap fbx/ folder not found: set MOBB_DATA or put it in ../shared/mocap"; \
     }
 
 TEST(FbxCli, EverySubcommandReadsEveryFbxFile) {
@@ -121,7 +121,8 @@ TEST(FbxCli, RenderDrawsFbxFiles) {
     MOBB_REQUIRE_FBX(dir);
     const std::string png = mobb::test::temp_file("render_fbx.png");
     std::filesystem::remove(png);
-    const Result r = mobb("render " + dir + "/002_01.fbx " + dir + "/007_01.fbx --ui --width 320 --height 240 --out " + png);
+    const Result r =
+        mobb("render " + dir + "/002_01.fbx " + dir + "/007_01.fbx --ui --width 320 --height 240 --out " + png);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.out, png + "\n");
     EXPECT_GT(std::filesystem::file_size(png), 1000u);

@@ -67,9 +67,9 @@ TEST(InputErrors, GraphFieldsThroughCrowd) {
         SCOPED_TRACE(place);
         write_edited(graph, bad, edit);
         std::remove(rec.c_str());
-        expect_refused(test::run_mobb("crowd --quiet --graph " + bad +
-                                      " --agents 2 --world 10x10 --seconds 2 --record " + rec),
-                       bad, place, rec);
+        expect_refused(
+            test::run_mobb("crowd --quiet --graph " + bad + " --agents 2 --world 10x10 --seconds 2 --record " + rec),
+            bad, place, rec);
     }
     std::remove(bad.c_str());
 }

@@ -72,13 +72,14 @@ TEST(NearestClearance, LeastOfThePairwiseClearances) {
             std::vector<double> expected(paths[std::size_t(c)].size(), std::numeric_limits<double>::infinity());
             for (int d = 0; d < n; ++d) {
                 if (d == c) continue;
-                for (const ClearanceSample& s :
-                     clearance(paths[std::size_t(c)], places[std::size_t(c)], paths[std::size_t(d)], places[std::size_t(d)]))
+                for (const ClearanceSample& s : clearance(paths[std::size_t(c)], places[std::size_t(c)],
+                                                          paths[std::size_t(d)], places[std::size_t(d)]))
                     expected[std::size_t(s.i)] = std::min(expected[std::size_t(s.i)], s.gap);
             }
             ASSERT_EQ(nearest[std::size_t(c)].size(), expected.size());
             for (std::size_t i = 0; i < expected.size(); ++i)
-                EXPECT_EQ(nearest[std::size_t(c)][i], expected[i]) << "round " << round << " clip " << c << " sample " << i;
+                EXPECT_EQ(nearest[std::size_t(c)][i], expected[i])
+                    << "round " << round << " clip " << c << " sample " << i;
         }
     }
 }

@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <glm/geometric.hpp>
 
 #include "data.h"
 #include "files.h"
@@ -172,8 +172,8 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
     std::vector<glm::dvec3> pose;
     for (int k = 0; k < 5; ++k) {
         const int agent = 2 + k;
-        EXPECT_EQ(m.nodes[std::size_t(m.skins[std::size_t(k)].joints[0])].name, "agent " + std::to_string(agent) + " " +
-                                                                                    p.rig().names[0]);
+        EXPECT_EQ(m.nodes[std::size_t(m.skins[std::size_t(k)].joints[0])].name,
+                  "agent " + std::to_string(agent) + " " + p.rig().names[0]);
         for (int f = 0; f < scene.frames; ++f) {
             const std::int64_t frame = 90 + f;  // 3 s at 30 fps
             const auto joints = gltf_joints(m, k, f);
@@ -182,7 +182,8 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
             root_error = std::max(root_error, std::hypot(joints[0].x - s[1], -joints[0].z - s[2]));
             ASSERT_TRUE(p.pose(agent, frame, pose));
             for (std::size_t j = 0; j < pose.size(); ++j)
-                joint_error = std::max(joint_error, glm::length(joints[j] - glm::dvec3(pose[j].x, pose[j].z, -pose[j].y)));
+                joint_error =
+                    std::max(joint_error, glm::length(joints[j] - glm::dvec3(pose[j].x, pose[j].z, -pose[j].y)));
         }
     }
     EXPECT_LT(root_error, 1e-3);

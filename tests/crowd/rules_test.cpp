@@ -163,7 +163,8 @@ std::int64_t both_through(const Record& r) {
     for (const AgentTrack& t : r.tracks) {
         std::int64_t f = 0;
         while (f < std::int64_t(t.samples.size()) &&
-               std::hypot(t.samples[std::size_t(f)][1] - t.goals.back()[0], t.samples[std::size_t(f)][2] - t.goals.back()[1]) >= 1.0)
+               std::hypot(t.samples[std::size_t(f)][1] - t.goals.back()[0],
+                          t.samples[std::size_t(f)][2] - t.goals.back()[1]) >= 1.0)
             ++f;
         last = std::max(last, f);
     }

@@ -22,9 +22,10 @@ TEST(Scenario, ShipsTheTestCases) {
     const auto files = scenario_files(default_scenario_folder());
     std::vector<std::string> names;
     for (const std::string& f : files) names.push_back(load_scenario(f).name);
-    for (const char* n : {"oncoming", "crossing", "four_way", "hallway_two_way", "doorway_two_way", "circle_20",
-                          "bottleneck", "random_obstacles", "oncoming_obstacle", "crossing_obstacle", "three_way", "fan_out",
-                          "hallway_one_way", "circle_pillar", "l_walls_60", "evacuation_exit", "fan_in", "fan_in_exit", "waypoints"})
+    for (const char* n :
+         {"oncoming", "crossing", "four_way", "hallway_two_way", "doorway_two_way", "circle_20", "bottleneck",
+          "random_obstacles", "oncoming_obstacle", "crossing_obstacle", "three_way", "fan_out", "hallway_one_way",
+          "circle_pillar", "l_walls_60", "evacuation_exit", "fan_in", "fan_in_exit", "waypoints"})
         EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
 }
 

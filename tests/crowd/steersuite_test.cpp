@@ -371,8 +371,9 @@ TEST(SteerSuite, SpeedsRadiiAndSharedGoalsAreReported) {
     EXPECT_TRUE(notes_with(s, "of another's").empty());
     ImportOptions stay;
     stay.at_goal = AtGoal::Stay;
-    EXPECT_EQ(notes_with(import_steersuite(file, kRoom, stay), ": 2 agents have a goal within 0.98 m of another's").size(),
-              1u);
+    EXPECT_EQ(
+        notes_with(import_steersuite(file, kRoom, stay), ": 2 agents have a goal within 0.98 m of another's").size(),
+        1u);
     std::remove(file.c_str());
 }
 

@@ -26,9 +26,10 @@ inline std::string ascii_fbx(const AsciiFbx& f) {
     const auto ticks = [](double s) { return std::to_string(std::int64_t(s * 46186158000.0 + 0.5)); };
     double t[3] = {0, 0, 0};
     t[f.up_axis] = f.hips_height;
-    std::string s = "; FBX 7.4.0 project file\n"
-                    "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
-                    "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n";
+    std::string s =
+        "; FBX 7.4.0 project file\n"
+        "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
+        "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n";
     if (f.write_up)
         s += "\t\tP: \"UpAxis\", \"int\", \"Integer\", \"\"," + std::to_string(f.up_axis) +
              "\n\t\tP: \"UpAxisSign\", \"int\", \"Integer\", \"\",1\n";

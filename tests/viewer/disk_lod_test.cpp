@@ -202,7 +202,7 @@ TEST(DiskLod, ChunkBoundsHoldTheirDisks) {
 TEST(DiskLod, OutsideViewCullsOnlyWhatIsOutside) {
     const glm::mat4 identity(1.0f);  // clip volume = the cube [-1, 1]^3
     EXPECT_FALSE(render::outside_view(identity, glm::vec3(-0.5f), glm::vec3(0.5f)));
-    EXPECT_FALSE(render::outside_view(identity, glm::vec3(0.9f), glm::vec3(3.0f)));  // straddles a side
+    EXPECT_FALSE(render::outside_view(identity, glm::vec3(0.9f), glm::vec3(3.0f)));   // straddles a side
     EXPECT_FALSE(render::outside_view(identity, glm::vec3(-5.0f), glm::vec3(5.0f)));  // holds the view
     EXPECT_TRUE(render::outside_view(identity, glm::vec3(1.5f, -0.5f, -0.5f), glm::vec3(2.0f, 0.5f, 0.5f)));
     EXPECT_TRUE(render::outside_view(identity, glm::vec3(-0.5f, -3.0f, -0.5f), glm::vec3(0.5f, -1.1f, 0.5f)));

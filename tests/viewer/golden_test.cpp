@@ -10,8 +10,8 @@
 
 #include "crowd_view.h"
 #include "headless.h"
-#include "panels.h"
 #include "image_diff.h"
+#include "panels.h"
 #include "render_test_util.h"
 #include "scene.h"
 #include "state.h"

@@ -32,7 +32,8 @@ TEST(LabelLayout, TicksCloserThanTheGapKeepTheFirst) {
 }
 
 TEST(LabelLayout, TheEdgeMovesATitleInAndLeavesATickOut) {
-    std::vector<LabelSpot> l = {{{-30, 50, 60, 64}, LabelRole::Title}, {{-5, 80, 30, 94}, LabelRole::Tick},
+    std::vector<LabelSpot> l = {{{-30, 50, 60, 64}, LabelRole::Title},
+                                {{-5, 80, 30, 94}, LabelRole::Tick},
                                 {{180, 80, 210, 94}, LabelRole::Tick}};
     const std::vector<bool> drawn = render::lay_out_labels(l, {}, 200, 100, kGap);
     ASSERT_TRUE(drawn[0]);

@@ -94,8 +94,8 @@ void check_sizes(const std::function<State()>& load, const std::function<viewer:
         State s = load();
         viewer::frame_all(s, float(size.width) / float(size.height));
         std::vector<ImageRect> labels;
-        const render::Image image = viewer::render_headless(s, {size.width, size.height, false, false, nullptr,
-                                                                nullptr, &labels});
+        const render::Image image =
+            viewer::render_headless(s, {size.width, size.height, false, false, nullptr, nullptr, &labels});
         for (const std::string& p : label_problems(labels, {}, size)) ADD_FAILURE() << at << ": " << p;
         // The axes stay labelled: the time axis's title, some of its ticks and some metres.
         EXPECT_TRUE(has_time_title(labels)) << at;

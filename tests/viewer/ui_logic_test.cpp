@@ -95,8 +95,7 @@ TEST(Picking, BoxOfTheQueryUnderARay) {
     viewer::State s = load("walks.json");
     s.scene.layers.boxes = true;
     s.scene.layers.level = 0;
-    const Obb3 root = transformed(s.clips[0].tree->box3(s.clips[0].tree->nodes()[0]),
-                                  SpaceTimeRigid::of(s.places[0]));
+    const Obb3 root = transformed(s.clips[0].tree->box3(s.clips[0].tree->nodes()[0]), SpaceTimeRigid::of(s.places[0]));
     const glm::vec3 top = render::to_gl(root.center.x, root.center.y, 1e3, s.scene.time_scale);
     const render::Ray ray{top, glm::vec3(0, -1, 0)};
     const viewer::BoxPick b = viewer::pick_box(s, ray);
@@ -104,8 +103,8 @@ TEST(Picking, BoxOfTheQueryUnderARay) {
     const Tree& tree = *s.clips[std::size_t(b.clip)].tree;
     EXPECT_EQ(tree.nodes()[std::size_t(b.node)].level, 0);
     // The entry point, back in space-time, lies on the box: inside its slabs up to rounding.
-    const Obb3 hit = transformed(tree.box3(tree.nodes()[std::size_t(b.node)]),
-                                 SpaceTimeRigid::of(s.places[std::size_t(b.clip)]));
+    const Obb3 hit =
+        transformed(tree.box3(tree.nodes()[std::size_t(b.node)]), SpaceTimeRigid::of(s.places[std::size_t(b.clip)]));
     const glm::dvec3 p(root.center.x, root.center.y, (double(top.y) - b.distance) / s.scene.time_scale);
     const glm::dvec3 local = glm::transpose(hit.axes) * (p - hit.center);
     for (int i = 0; i < 3; ++i) EXPECT_LE(std::fabs(local[i]), hit.half[i] + 1e-4) << i;
@@ -201,7 +200,9 @@ TEST(OpenFiles, FbxIsListedAndOpens) {
     for (const char* f : {"fbx/005_01.fbx", "cmu/005_01.bvh"})
         EXPECT_TRUE(std::binary_search(files.begin(), files.end(), std::string(f))) << f;
     for (const std::string& f : files) EXPECT_TRUE(io::is_clip_file(f)) << f;
-    EXPECT_EQ(std::count_if(files.begin(), files.end(), [](const std::string& f) { return std::filesystem::path(f).extension() == ".csv"; }), 0);
+    EXPECT_EQ(std::count_if(files.begin(), files.end(),
+                            [](const std::string& f) { return std::filesystem::path(f).extension() == ".csv"; }),
+              0);
     EXPECT_EQ(std::count(files.begin(), files.end(), "README.md"), 0);
 
     viewer::State s = load("walks.json");
@@ -346,8 +347,8 @@ TEST(PanelLayout, TimelineInTheBottomStrip) {
     const viewer::Rect v = viewer::viewport(s, ui);
     EXPECT_EQ(v.height, 701.0f - strip);
     viewer::place_panels(s, ui);
-    const viewer::Rect t = ui.panel_rects[std::size_t(&viewer::panel_info(&viewer::PanelsOpen::timeline) -
-                                                      viewer::panel_list().data())];
+    const viewer::Rect t =
+        ui.panel_rects[std::size_t(&viewer::panel_info(&viewer::PanelsOpen::timeline) - viewer::panel_list().data())];
     EXPECT_EQ(t.x, v.x);
     EXPECT_EQ(t.width, v.width);
     EXPECT_EQ(t.y, v.y + v.height);

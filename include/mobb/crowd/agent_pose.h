@@ -67,8 +67,8 @@ private:
 enum class RigJoints { All, Major };
 struct Rig {
     std::vector<std::string> names;
-    std::vector<int> parents;                      ///< -1 for joint 0
-    std::vector<std::vector<int>> source_joints;   ///< [source][joint]: its index in that source's skeleton
+    std::vector<int> parents;                     ///< -1 for joint 0
+    std::vector<std::vector<int>> source_joints;  ///< [source][joint]: its index in that source's skeleton
     int size() const { return int(names.size()); }
 };
 /// Loads every source of the graph. Throws io::LoadError / GraphError for a source that cannot be loaded.
@@ -87,9 +87,9 @@ Rig crowd_rig(PoseSources& sources, RigJoints joints);
 /// smaller disk than the pose it eases out of, joints are drawn in over the frames before (at most
 /// pull_speed) rather than at once.
 struct PoseBlend {
-    double window = 0.25;      ///< seconds; 0 = no blending (the raw clips, jumping at clip starts)
-    double pull_speed = 1.5;   ///< metres per second
-    double look_ahead = 0.5;   ///< seconds
+    double window = 0.25;     ///< seconds; 0 = no blending (the raw clips, jumping at clip starts)
+    double pull_speed = 1.5;  ///< metres per second
+    double look_ahead = 0.5;  ///< seconds
 };
 
 /// Poses of a record's agents. Throws like crowd_rig on construction; GraphError when the record's dt is

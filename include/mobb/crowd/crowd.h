@@ -21,10 +21,10 @@ namespace mobb::crowd {
 
 /// An agent placed by a scenario.
 struct AgentSpec {
-    Placement start;                            ///< x, y (metres), heading theta (radians); t0 unused
-    double start_time = 0;                      ///< seconds: it stands at its start until then
-    std::vector<std::array<double, 2>> goals;   ///< metres, reached in turn (within goal_radius); empty: wanders
-    AtGoal at_goal = AtGoal::Stay;              ///< at the last goal: stand there, or leave the run
+    Placement start;                           ///< x, y (metres), heading theta (radians); t0 unused
+    double start_time = 0;                     ///< seconds: it stands at its start until then
+    std::vector<std::array<double, 2>> goals;  ///< metres, reached in turn (within goal_radius); empty: wanders
+    AtGoal at_goal = AtGoal::Stay;             ///< at the last goal: stand there, or leave the run
 };
 
 struct CrowdOptions {

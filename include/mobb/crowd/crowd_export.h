@@ -13,10 +13,10 @@ struct CrowdExportOptions {
     int agent_begin = 0;
     std::optional<int> agent_end;  ///< agents [begin, end); none: to the last
     double t_begin = 0;
-    std::optional<double> t_end;   ///< seconds; none: the record's last frame, (frames - 1) dt
-    double fps = 0;                       ///< frames per second written; 0: the record's (1 / dt)
-    bool bodies = false;                  ///< a capsule per bone (io::ExportScene::bodies)
-    bool world = true;                    ///< walls, obstacles and goals as shapes
+    std::optional<double> t_end;  ///< seconds; none: the record's last frame, (frames - 1) dt
+    double fps = 0;               ///< frames per second written; 0: the record's (1 / dt)
+    bool bodies = false;          ///< a capsule per bone (io::ExportScene::bodies)
+    bool world = true;            ///< walls, obstacles and goals as shapes
 };
 
 /// Frames written: at t_begin + f / fps for f = 0 .. while <= t_end (+1e-9 s). Throws std::invalid_argument

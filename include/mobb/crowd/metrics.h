@@ -34,7 +34,7 @@ struct CrowdMetrics {
     double walking_speed = 0;  ///< m/s: graph_walking_speed()
     /// Time to the last goal over the straight lines' time at walking_speed, mean over the agents that reached it.
     double time_ratio = 0;
-    bool passed = false;    ///< every goal agent reached its goal and no contact at any frame
+    bool passed = false;  ///< every goal agent reached its goal and no contact at any frame
     // SteerSuite's benchmark scores (steerlib/src/CompositeTechnique01.cpp, CompositeTechnique02.cpp), lower
     // is better, on the tracks resampled to its 20 frames per second: Composite01 = 50 x mean unique
     // collisions (counted by both agents) + mean time enabled (to the goal, or the run) + mean sum over

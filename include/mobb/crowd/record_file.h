@@ -53,9 +53,9 @@ private:
 
 /// Frames first .. last - 1 of a record: every agent's disk then, and what the file says of the run.
 struct SampleWindow {
-    double dt = 0;                   ///< seconds per frame
-    std::int64_t frames = 0;         ///< the run's frames
-    std::size_t agents = 0;          ///< the run's agents
+    double dt = 0;            ///< seconds per frame
+    std::int64_t frames = 0;  ///< the run's frames
+    std::size_t agents = 0;   ///< the run's agents
     std::int64_t first = 0, last = 0;
     /// (last - first) x agents disks [t, x, y, r] (seconds, metres): agent a at frame f is
     /// samples[(f - first) * agents + a]; NaN from the frame it left the run on.

@@ -30,7 +30,7 @@ struct Scenario {
     std::string name, description, source;
     World world;
     std::vector<AgentSpec> agents;
-    double time_limit = 60;  ///< seconds
+    double time_limit = 60;         ///< seconds
     AtGoal at_goal = AtGoal::Stay;  ///< the agents' unless they say otherwise
 };
 

@@ -54,12 +54,12 @@ struct CrowdTuning {
     // door, where neither walks and so neither has the right of way. 4 m and 10 s/m: bench/results/README.md
     // "making way" (judge: 78 -> 80 of 93 runs; 8 m or 4 s/m, or asking agents that progress: worse).
     bool make_way = true;
-    double make_way_after = 2.0;       ///< seconds without progress
-    double make_way_progress = 0.5;    ///< seconds of time to go: what counts as progress
-    double make_way_length = 4.0;      ///< metres of the asking agent's path
-    double make_way_clearance = 1.2;   ///< metres from that path
-    double make_way_cost = 10.0;       ///< seconds per metre nearer
-    double make_way_keep = 3.0;        ///< seconds an ask lasts
+    double make_way_after = 2.0;      ///< seconds without progress
+    double make_way_progress = 0.5;   ///< seconds of time to go: what counts as progress
+    double make_way_length = 4.0;     ///< metres of the asking agent's path
+    double make_way_clearance = 1.2;  ///< metres from that path
+    double make_way_cost = 10.0;      ///< seconds per metre nearer
+    double make_way_keep = 3.0;       ///< seconds an ask lasts
 
     // The look-ahead (src/crowd/look_ahead.h; Lau and Kuffner 2005, Silver 2005): a goal agent searches
     // clip sequences `goal_horizon` clips deep, at most `look_ahead_budget` clips tested per choice
