@@ -71,7 +71,8 @@ public:
         constexpr double kStep = 0.25;  // metres
         std::vector<std::array<double, 2>> out{{site.base.x, site.base.y}};
         double x = site.base.x, y = site.base.y;
-        for (double walked = 0; walked < length && field.distance(x, y) > kStep; walked += kStep) {
+        const int steps = int(std::ceil(length / kStep));
+        for (int k = 0; k < steps && field.distance(x, y) > kStep; ++k) {
             const double heading = field.downhill(x, y);
             x += kStep * std::cos(heading);
             y += kStep * std::sin(heading);

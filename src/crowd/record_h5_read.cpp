@@ -49,9 +49,12 @@ std::vector<T> rows(hid_t f, const std::string& path, std::vector<hsize_t> inner
 std::size_t same_rows(const std::string& group, std::initializer_list<std::pair<const char*, std::size_t>> sizes) {
     const std::size_t n = sizes.begin()->second;
     for (const auto& [name, size] : sizes)
-        if (size != n)
-            throw h5::Error(group + "/" + name + ": " + std::to_string(size) + " rows, " + group + " has " +
-                            std::to_string(n));
+        if (size != n) {
+            std::string what = group;
+            what.append("/").append(name).append(": ").append(std::to_string(size)).append(" rows, ");
+            what.append(group).append(" has ").append(std::to_string(n));
+            throw h5::Error(what);
+        }
     return n;
 }
 

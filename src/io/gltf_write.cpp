@@ -219,7 +219,7 @@ void add_skeleton(ModelBuilder& out, const ExportScene& scene, const ExportSkele
         out.node(std::move(n), false);
     }
     for (std::size_t j = 1; j < joints; ++j)
-        out.model().nodes[std::size_t(first + parents[j])].children.push_back(first + int(j));
+        out.model().nodes[std::size_t(first) + std::size_t(parents[j])].children.push_back(first + int(j));
     // The rest pose is frame 0: inverse bind matrices undo its world translations.
     std::vector<float> ibm;
     for (std::size_t j = 0; j < joints; ++j) {

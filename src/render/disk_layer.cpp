@@ -342,7 +342,7 @@ void DiskLayer::draw(const Frame& frame, const DrawContext& ctx, bool translucen
     glBindVertexArray(0);
 }
 
-DiskLayer::Tube& DiskLayer::tube_at(const ClipView& clip, Clip& c, int k) {
+DiskLayer::Tube& DiskLayer::tube_at(const ClipView& clip, Clip& c, int k) const {
     const int level = level_of(k);
     Tube& t = c.tubes[std::size_t(level)];
     if (t.built) return t;

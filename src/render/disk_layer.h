@@ -74,7 +74,7 @@ private:
     std::vector<Run> runs_in_view(const Frame& frame, const DrawContext& ctx);
     /// Draws samples [span) of clip c as its tube at level of detail k > 1; returns the groups drawn.
     GLsizei draw_tube(const Frame& frame, std::size_t c, SampleSpan span, int k);
-    Tube& tube_at(const ClipView& clip, Clip& c, int k);
+    Tube& tube_at(const ClipView& clip, Clip& c, int k) const;
     static void release(Tube& t);
     static SampleSpan in_window(const Frame& frame, const ClipView& clip);
     /// Draws samples [span) of clip c at level of detail k; returns the instances drawn.

@@ -94,7 +94,7 @@ struct TubeMesh {
     std::vector<std::uint32_t> indices;  ///< bottom cap, then 6 * segments per group in order, top cap
     std::size_t groups = 0;
     int segments = 0;
-    std::size_t cap_indices() const { return std::size_t(3 * (segments - 2)); }
+    std::size_t cap_indices() const { return 3 * std::size_t(segments - 2); }
     /// First index and count of groups [g0, g1), with the caps where the range reaches an end.
     std::size_t first_index(std::size_t g0) const {
         return g0 == 0 ? 0 : cap_indices() + 6 * std::size_t(segments) * g0;

@@ -15,7 +15,7 @@ constexpr std::size_t kVertexBytes = 16;  ///< stb_easy_font's vertex: x, y, z f
 
 /// The text's glyph quads from stb_easy_font, in font pixels from the text's origin; `ink` gets their bounds.
 std::vector<glm::vec2> glyph_corners(const std::string& text, TextBox& ink) {
-    static std::vector<char> quads(64 * 1024);
+    static std::vector<char> quads(std::size_t{64} * 1024);
     const int n =
         stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(text.c_str()), nullptr, quads.data(), int(quads.size()));
     std::vector<glm::vec2> corners(std::size_t(n) * 4);
@@ -101,7 +101,9 @@ void TextLayer::draw(const DrawContext& ctx) {
     labels_.clear();
     reserved_.clear();
     ctx.use(*ctx.color);
-    ctx.color->set("u_mvp", glm::ortho(0.0f, width, height, 0.0f, -1.0f, 1.0f));
+    // Pixels from the top-left corner: bottom is the height, top 0 (not a swap).
+    ctx.color->set("u_mvp",
+                   glm::ortho(0.0f, width, height, 0.0f, -1.0f, 1.0f));  // NOLINT(readability-suspicious-call-argument)
     tris_.draw();
 }
 

@@ -40,8 +40,9 @@ struct AgentClipAt {
     int index = 0;   ///< in the agent's track.clips
     int sample = 0;  ///< sample index in the source (graph fps)
 };
-/// False outside the agent's clips (or for an agent or clip id that does not exist).
-bool agent_clip_at(const Record& record, const MotionGraph& graph, int agent, std::int64_t frame, AgentClipAt& out);
+/// The clip agent `agent` plays at global frame `k` of the record. False outside the agent's clips (or for
+/// an agent or clip id that does not exist).
+bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_t k, AgentClipAt& out);
 
 /// Every source of one graph, each loaded on first use and kept (a failure too, with its reason, so a
 /// missing file is not retried every frame). Not thread-safe.
@@ -106,7 +107,7 @@ public:
     /// at the floor, so the root's own height is not kept).
     /// An agent past the end of its clips (it left the run) keeps its last pose. False for an agent or frame
     /// outside the record.
-    bool pose(int agent, std::int64_t frame, std::vector<glm::dvec3>& out);
+    bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out);
     /// At time t (seconds, 0 <= t <= frames * dt): linear between the poses of the frames around t, so a
     /// frame's own time gives that frame's pose.
     bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
@@ -114,7 +115,7 @@ public:
 private:
     /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor).
     bool raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
-    void keep_inside(const AgentTrack& track, std::int64_t frame, std::vector<glm::dvec3>& out) const;
+    void keep_inside(const AgentTrack& track, std::int64_t k, std::vector<glm::dvec3>& out) const;
 
     const Record& record_;
     std::shared_ptr<PoseSources> sources_;
