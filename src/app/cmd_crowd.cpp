@@ -109,8 +109,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
     rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
              "An agent that waited never pushes others' reservations aside");
     rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
-    rule_off("--no-make-way", &crowd::CrowdTuning::make_way,
-             "An agent that waits does not ask those it outranks to keep clear of its way");
+    cmd->add_flag_callback(
+        "--make-way", [off] { off->make_way = true; },
+        "A goal agent stuck for 2 s asks agents it outranks, stuck and heading against it, to keep clear "
+        "of its way (off by default)");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
     cmd->add_flag("--quiet", *quiet, "No progress bar");

@@ -31,8 +31,7 @@ void Choice::ways_to_make(const CrowdState& s, ChoiceSite& site) {
     // Only an agent stuck itself: one making progress is not waiting for anyone (a deadlock is two agents
     // each waiting for the other).
     if (!t.make_way || !site.goal || double(frame_ - me.progress_frame) * s.graph.dt() < t.make_way_after) return;
-    // Only ways head-on against this agent's own (over 120 degrees apart): one behind it in a queue going
-    // its way, or crossing it, waits its turn.
+    // Only ways against this agent's own: one behind it in a queue going its way waits its turn.
     const std::vector<std::array<double, 2>> mine = s.policy.way(site, 1.0);
     const double mx = mine.size() > 1 ? mine.back()[0] - mine.front()[0] : 0.0;
     const double my = mine.size() > 1 ? mine.back()[1] - mine.front()[1] : 0.0;
@@ -45,9 +44,7 @@ void Choice::ways_to_make(const CrowdState& s, ChoiceSite& site) {
         if (other.way_until < frame_ || !outranks(other, o, me, agent_)) continue;
         const auto& w = other.way;
         if (w.size() < 2) continue;
-        const double ox = w.back()[0] - w.front()[0], oy = w.back()[1] - w.front()[1];
-        const double norms = std::hypot(ox, oy) * std::hypot(mx, my);
-        if (!(norms > 0) || ox * mx + oy * my > -0.5 * norms) continue;  // not head-on: within 120 degrees
+        if ((w.back()[0] - w.front()[0]) * mx + (w.back()[1] - w.front()[1]) * my > 0) continue;
         for (std::size_t k = 0; k + 1 < other.way.size(); ++k)
             site.make_way.push_back({other.way[k][0], other.way[k][1], other.way[k + 1][0], other.way[k + 1][1]});
     }
