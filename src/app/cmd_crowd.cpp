@@ -115,6 +115,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
         "of its way (off by default)");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
+    auto tune = std::make_shared<std::vector<std::string>>();
+    cmd->add_option("--tune", *tune,
+                    "Set a field of CrowdTuning, NAME=VALUE (repeatable; include/mobb/crowd/tuning.h), e.g. "
+                    "--tune look_ahead_budget=192");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
     tree->add_to(*cmd, false);
     cmd->callback([=, &exit_code] {
@@ -125,6 +129,15 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 exit_code = kUsage;
                 return;
             }
+        for (const std::string& t : *tune) {
+            try {
+                crowd::set_tuning(*off, t);
+            } catch (const std::invalid_argument& e) {
+                std::cerr << "crowd: --tune " << e.what() << "\n";
+                exit_code = kUsage;
+                return;
+            }
+        }
         exit_code = guarded([&](std::ostream& out) {
             crowd::CrowdOptions opt = *o;
             parse_world(*world, opt.world.x1, opt.world.y1);

@@ -196,5 +196,27 @@ TEST(CrowdCli, ErrorsAndExitCodes) {
     EXPECT_EQ(r.code, 2);
 }
 
+// --tune sets any CrowdTuning field by name: the run changes with it, and a bad one is a usage error.
+TEST(CrowdCli, TuneSetsAFieldByName) {
+    const std::string base = "crowd --quiet --graph " + kGraph + " --scenario " + std::string(MOBB_SOURCE_DIR) +
+                             "/assets/scenarios/crossing.json --record ";
+    const std::string plain = temp_file("tune_plain.json"), tuned = temp_file("tune_field.json"),
+                      flag = temp_file("tune_flag.json");
+    ASSERT_EQ(run(base + plain).code, 0);
+    ASSERT_EQ(run(base + tuned + " --tune look_ahead=off").code, 0);
+    ASSERT_EQ(run(base + flag + " --no-look-ahead").code, 0);
+    EXPECT_EQ(test::slurp(tuned), test::slurp(flag)) << "the flag and the field are one switch";
+    EXPECT_NE(test::slurp(tuned), test::slurp(plain)) << "the look-ahead changes the record";
+    for (const std::string& f : {plain, tuned, flag}) std::remove(f.c_str());
+    for (const char* bad : {"look_ahead_budget=many", "no_such_field=1", "look_ahead", "goal_walking=nan"}) {
+        const Result r = run(base + plain + " --tune " + bad);
+        EXPECT_EQ(r.code, 2) << bad;
+        EXPECT_EQ(r.err.rfind("crowd: --tune ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_TRUE(r.out.empty());
+        EXPECT_FALSE(std::ifstream(plain).good()) << "no record for a usage error";
+    }
+}
+
 }  // namespace
 }  // namespace mobb

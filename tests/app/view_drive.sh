@@ -12,7 +12,7 @@ shift 4
 "$mobb" view "$scene" --frames 100000 --screenshot "$out" --save-state "$state" --width 1280 --height 720 &
 pid=$!
 window=$(find_window)
-sleep 1
+sleep 2  # the first frames place the panels in their columns: a click before that lands elsewhere
 focus "$window"
 xdotool mousemove --window "$window" 640 700
 for action in "$@"; do
@@ -20,7 +20,7 @@ for action in "$@"; do
     key:*) xdotool keydown "${action#key:}"; sleep 0.15; xdotool keyup "${action#key:}" ;;
     click:*) IFS=: read -r _ x y <<<"$action"
              xdotool mousemove --window "$window" "$x" "$y"; sleep 0.2
-             xdotool mousedown 1; sleep 0.2; xdotool mouseup 1 ;;
+             xdotool mousedown 1; sleep 0.4; xdotool mouseup 1 ;;  # a frame or more down, under load
     type:*) xdotool type --delay 80 "${action#type:}" ;;
     wait:*) sleep "${action#wait:}" ;;
     *) echo "unknown action $action" >&2; kill "$pid"; exit 2 ;;

@@ -1,10 +1,12 @@
 // Every tuning number of the crowd's rules in one place, with its unit, what it trades and what chose it
 // (after Box2D's constants.h and DetourCrowd's dtCrowdAgentParams). Each rule can be switched off - on
 // the command line `mobb crowd --no-right-of-way`, `--no-give-way`, `--no-standing-gap`,
-// `--no-make-way`, `--no-look-ahead` - so a rule's effect is one command away. The measurements behind the values are in
-// bench/results/README.md (the section named after each rule). Metrics keep their own thresholds
+// `--no-look-ahead` (`--make-way` switches making way on) - so a rule's effect is one command away, and
+// any field is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning()). The measurements behind
+// the values are in bench/results/README.md (the section named after each rule). Metrics keep their own thresholds
 // (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
 #pragma once
+#include <string>
 
 namespace mobb::crowd {
 
@@ -75,7 +77,9 @@ struct CrowdTuning {
     // The goal policy's estimate of the time to go (src/crowd/policy_goal.cpp): path length at
     // `goal_walking` m/s, plus the turn to face down the path at `goal_turning` rad/s, plus
     // `goal_crowding` seconds per metre an end comes nearer than `goal_personal` to a neighbour. The
-    // speeds are the committed graph's walking and turning clips', rounded.
+    // speeds are the committed graph's walking and turning clips', rounded. Crowding trades following
+    // close (queues flow with less) against room where agents settle (late arrivals are hemmed in short
+    // of their goals with less): bench/results/README.md "crowding".
     double goal_walking = 1.3;    ///< m/s
     double goal_turning = 1.3;    ///< rad/s
     double goal_personal = 2.0;   ///< metres
@@ -84,5 +88,10 @@ struct CrowdTuning {
     int goal_horizon = 3;         ///< clips searched ahead (about 3.6 s of the committed graph's clips)
     double nav_clearance = 0.45;  ///< metres the navigation fields keep from walls and obstacles
 };
+
+/// Sets one field from "NAME=VALUE" (booleans: true/false, on/off, 1/0; numbers as written, finite).
+/// Throws std::invalid_argument naming the field and the value on a bad one (an unknown name: with the
+/// fields there are).
+void set_tuning(CrowdTuning& tuning, const std::string& assignment);
 
 }  // namespace mobb::crowd

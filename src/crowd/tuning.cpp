@@ -1,0 +1,103 @@
+// CrowdTuning's fields by name, so that any of them can be set from the command line
+// (`mobb crowd --tune NAME=VALUE`) and a tuning is measured without a rebuild.
+#include "mobb/crowd/tuning.h"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <variant>
+
+namespace mobb::crowd {
+
+namespace {
+
+using Member = std::variant<bool CrowdTuning::*, int CrowdTuning::*, double CrowdTuning::*>;
+
+struct Field {
+    const char* name;
+    Member member;
+};
+
+// clang-format off
+// One line per field of tuning.h, in its order.
+const Field kFields[] = {
+    {"moving_speed", &CrowdTuning::moving_speed},
+    {"escape_steps", &CrowdTuning::escape_steps},
+    {"escape_routes", &CrowdTuning::escape_routes},
+    {"right_of_way", &CrowdTuning::right_of_way},
+    {"right_of_way_after", &CrowdTuning::right_of_way_after},
+    {"max_yielding", &CrowdTuning::max_yielding},
+    {"give_way", &CrowdTuning::give_way},
+    {"give_way_after", &CrowdTuning::give_way_after},
+    {"give_way_reach", &CrowdTuning::give_way_reach},
+    {"standing_gap", &CrowdTuning::standing_gap},
+    {"standing_gap_width", &CrowdTuning::standing_gap_width},
+    {"make_way", &CrowdTuning::make_way},
+    {"make_way_after", &CrowdTuning::make_way_after},
+    {"make_way_progress", &CrowdTuning::make_way_progress},
+    {"make_way_length", &CrowdTuning::make_way_length},
+    {"make_way_clearance", &CrowdTuning::make_way_clearance},
+    {"make_way_cost", &CrowdTuning::make_way_cost},
+    {"make_way_keep", &CrowdTuning::make_way_keep},
+    {"look_ahead", &CrowdTuning::look_ahead},
+    {"look_ahead_budget", &CrowdTuning::look_ahead_budget},
+    {"look_ahead_dead_end", &CrowdTuning::look_ahead_dead_end},
+    {"goal_walking", &CrowdTuning::goal_walking},
+    {"goal_turning", &CrowdTuning::goal_turning},
+    {"goal_personal", &CrowdTuning::goal_personal},
+    {"goal_crowding", &CrowdTuning::goal_crowding},
+    {"goal_patience", &CrowdTuning::goal_patience},
+    {"goal_horizon", &CrowdTuning::goal_horizon},
+    {"nav_clearance", &CrowdTuning::nav_clearance},
+};
+// clang-format on
+
+bool parse_bool(const std::string& text) {
+    if (text == "true" || text == "on" || text == "1") return true;
+    if (text == "false" || text == "off" || text == "0") return false;
+    throw std::invalid_argument("is not true or false");
+}
+
+int parse_int(const std::string& text) {
+    int v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc{} || end != text.data() + text.size()) throw std::invalid_argument("is not an integer");
+    return v;
+}
+
+double parse_double(const std::string& text) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(v)) throw std::invalid_argument("is not a number");
+    return v;
+}
+
+}  // namespace
+
+void set_tuning(CrowdTuning& tuning, const std::string& assignment) {
+    const std::size_t eq = assignment.find('=');
+    const std::string name = assignment.substr(0, eq);
+    for (const Field& f : kFields) {
+        if (name != f.name) continue;
+        if (eq == std::string::npos) throw std::invalid_argument(name + ": no value (NAME=VALUE)");
+        const std::string value = assignment.substr(eq + 1);
+        try {
+            if (const auto* b = std::get_if<bool CrowdTuning::*>(&f.member)) tuning.*(*b) = parse_bool(value);
+            if (const auto* i = std::get_if<int CrowdTuning::*>(&f.member)) tuning.*(*i) = parse_int(value);
+            if (const auto* d = std::get_if<double CrowdTuning::*>(&f.member)) tuning.*(*d) = parse_double(value);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(name + ": '" + value + "' " + e.what());
+        }
+        return;
+    }
+    std::string fields;
+    for (const Field& f : kFields) fields += std::string(fields.empty() ? "" : ", ") + f.name;
+    throw std::invalid_argument("'" + name + "' is not a field of CrowdTuning (" + fields + ")");
+}
+
+}  // namespace mobb::crowd
