@@ -13,9 +13,8 @@ double tick_step(double range, int most) {
 
 Bounds grid_bounds(const Bounds& scene) {
     Bounds b;
-    b.add({std::floor(scene.lo.x) - 1, std::floor(scene.lo.y) - 1, std::min(0.0, scene.lo.z)});
-    b.add(
-        {std::ceil(scene.hi.x) + 1, std::ceil(scene.hi.y) + 1, std::max(scene.hi.z, std::min(0.0, scene.lo.z) + 1e-3)});
+    b.add({std::floor(scene.lo.x), std::floor(scene.lo.y), std::min(0.0, scene.lo.z)});
+    b.add({std::ceil(scene.hi.x), std::ceil(scene.hi.y), std::max(scene.hi.z, std::min(0.0, scene.lo.z) + 1e-3)});
     return b;
 }
 
