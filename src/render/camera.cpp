@@ -42,6 +42,7 @@ void Camera::zoom(float steps) { distance = std::clamp(distance * std::pow(0.88f
 
 void Camera::frame(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
     std::vector<glm::vec3> corners;
+    corners.reserve(8);
     for (int k = 0; k < 8; ++k)
         corners.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
     frame(corners, aspect);

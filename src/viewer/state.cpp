@@ -112,6 +112,7 @@ void frame_all(State& s, float aspect) {
     glm::vec3 lo, hi;
     render::gl_bounds(b, s.scene.time_scale, lo, hi);
     std::vector<glm::vec3> points;
+    points.reserve(10);
     for (int k = 0; k < 8; ++k)
         points.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
     const render::Bounds grid = render::grid_bounds(b);
