@@ -353,6 +353,13 @@ TEST(Golden, CrowdQueryOpened) {
     EXPECT_EQ(x_of("Recursion"), 0.0f);
     EXPECT_GT(x_of("Query"), 640.0f);
     EXPECT_GT(x_of("Crowd"), 640.0f);
+    // With the left column collapsed nothing moves: Trace is back in its own column, which scrolls.
+    viewer::Ui collapsed;
+    collapsed.panels = viewer::default_panels(s);
+    collapsed.columns.left_collapsed = true;
+    render_ui(s, 1280, 720, &collapsed, false, &windows);
+    EXPECT_GT(x_of("Trace"), 640.0f);
+    EXPECT_EQ(x_of("Scene"), -1.0f);
 }
 
 /// Moves agent 1 onto agent 0 at a third of the run (one contact); returns that frame.
