@@ -41,22 +41,48 @@ void Camera::pan(float dx, float dy, float height) {
 void Camera::zoom(float steps) { distance = std::clamp(distance * std::pow(0.88f, steps), 0.05f, 5000.0f); }
 
 void Camera::frame(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
-    MOBB_ASSERT(aspect > 0.0f);
+    std::vector<glm::vec3> corners;
+    corners.reserve(8);
+    for (int k = 0; k < 8; ++k)
+        corners.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    frame(corners, aspect);
+}
+
+void Camera::frame(const std::vector<glm::vec3>& points, float aspect) {
+    MOBB_ASSERT(aspect > 0.0f && !points.empty());
+    glm::vec3 lo = points.front(), hi = points.front();
+    for (const glm::vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
     target = 0.5f * (lo + hi);
-    // The nearest eye from which the view's frustum holds all eight corners: a corner at (x, y) across
-    // the view and z towards the eye needs distance >= z + |x| / tan(half fov x), likewise in y.
     const glm::mat4 v = view();
     const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]), back(v[0][2], v[1][2], v[2][2]);
     const float tan_y = std::tan(glm::radians(fov) * 0.5f), tan_x = tan_y * aspect;
-    float nearest = 0.5f;
-    for (int k = 0; k < 8; ++k) {
-        const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        const glm::vec3 rel = corner - target;
-        const float z = glm::dot(rel, back);
-        nearest =
-            std::max({nearest, z + std::abs(glm::dot(rel, right)) / tan_x, z + std::abs(glm::dot(rel, up)) / tan_y});
+    // The nearest eye from which the view's frustum holds every point: a point at (x, y) across the view
+    // and z towards the eye needs distance >= z + |x| / tan(half fov x), likewise in y.
+    auto fit = [&] {
+        float nearest = 0.5f;
+        for (const glm::vec3& p : points) {
+            const glm::vec3 rel = p - target;
+            const float z = glm::dot(rel, back);
+            nearest = std::max(
+                {nearest, z + std::abs(glm::dot(rel, right)) / tan_x, z + std::abs(glm::dot(rel, up)) / tan_y});
+        }
+        distance = nearest;
+    };
+    // Perspective draws the near side larger: the box's centre is not the picture's. A few steps move the
+    // target across the view until the points' picture is centred, then fit again.
+    constexpr int kCentring = 4;
+    for (int k = 0; k < kCentring; ++k) {
+        fit();
+        float x0 = 1e9f, x1 = -1e9f, y0 = 1e9f, y1 = -1e9f;
+        for (const glm::vec3& p : points) {
+            const glm::vec3 rel = p - target;
+            const float depth = distance - glm::dot(rel, back);  // in front of the eye: fit() keeps it positive
+            const float x = glm::dot(rel, right) / (depth * tan_x), y = glm::dot(rel, up) / (depth * tan_y);
+            x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        }
+        target += distance * (0.5f * (x0 + x1) * tan_x * right + 0.5f * (y0 + y1) * tan_y * up);
     }
-    distance = nearest;
+    fit();
 }
 
 void Camera::top() {

@@ -1,5 +1,7 @@
 // An orbit camera around a target point in the GL world (y up): yaw and pitch in degrees.
 #pragma once
+#include <vector>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -27,6 +29,9 @@ struct Camera {
     /// Keeps yaw and pitch, centres the GL-world box [lo, hi] and backs off to the nearest distance at which
     /// its eight corners are all in view (the viewport's aspect: width / height).
     void frame(const glm::vec3& lo, const glm::vec3& hi, float aspect);
+    /// The same for a set of GL-world points (at least one): centres their box and backs off until every
+    /// point is in view.
+    void frame(const std::vector<glm::vec3>& points, float aspect);
     void top();   ///< looking straight down
     void side();  ///< looking horizontally along -z: x to the right, time up
 

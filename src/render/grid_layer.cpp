@@ -1,7 +1,9 @@
 #include "grid_layer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace mobb::render {
 
@@ -12,10 +14,20 @@ double tick_step(double range, int most) {
 }
 
 Bounds grid_bounds(const Bounds& scene) {
+    // Whole metres around the scene, widened to kMinGridSide a side so that a scene standing in place
+    // still shows a few metre lines and their labels.
+    static constexpr double kMinGridSide = 3;  // metres
+    auto side = [](double lo, double hi) {
+        double a = std::floor(lo), b = std::ceil(hi);
+        const double extra = std::max(0.0, kMinGridSide - (b - a));
+        a -= std::floor(extra / 2);
+        return std::pair{a, a + std::max(kMinGridSide, b - a)};
+    };
+    const auto [x0, x1] = side(scene.lo.x, scene.hi.x);
+    const auto [y0, y1] = side(scene.lo.y, scene.hi.y);
     Bounds b;
-    b.add({std::floor(scene.lo.x) - 1, std::floor(scene.lo.y) - 1, std::min(0.0, scene.lo.z)});
-    b.add(
-        {std::ceil(scene.hi.x) + 1, std::ceil(scene.hi.y) + 1, std::max(scene.hi.z, std::min(0.0, scene.lo.z) + 1e-3)});
+    b.add({x0, y0, std::min(0.0, scene.lo.z)});
+    b.add({x1, y1, std::max(scene.hi.z, std::min(0.0, scene.lo.z) + 1e-3)});
     return b;
 }
 

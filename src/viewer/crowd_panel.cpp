@@ -16,6 +16,25 @@ namespace mobb::viewer {
 
 namespace {
 
+/// The choice-point list's share of the panel's room below it when a choice point's candidates are
+/// listed under it (the candidates take the rest); the least either list keeps is kLeastRows rows.
+constexpr float kChoiceShare = 0.4f;
+constexpr float kLeastRows = 3.0f;
+
+/// A bordered list's height for `rows` rows: the rows and the child window's padding above and below.
+float list_height(float rows) {
+    return rows * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+}
+
+/// The room the lists have: what is left of the panel above the status line under them.
+float room_for_lists(const Ui& ui) {
+    float room = ImGui::GetContentRegionAvail().y;
+    if (!ui.status.empty())
+        room -= ImGui::CalcTextSize(ui.status.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x).y +
+                ImGui::GetStyle().ItemSpacing.y;
+    return room;
+}
+
 /// What a query was against, in words: another agent's clip (committed, or reserved to stop it), its
 /// held ground, or a wall or an obstacle.
 std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q) {
@@ -39,8 +58,9 @@ void view_buttons(Ui& ui) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("side view (S)");
 }
 
-/// The agent chosen, what its skeletons lack, and its choice points; choosing one moves the cursor to it.
-void choice_list(State& s) {
+/// The agent chosen, what its skeletons lack, and its choice points, in a list as tall as the panel
+/// allows (a share of it once a choice point's candidates are listed); choosing one moves the cursor to it.
+void choice_list(State& s, const Ui& ui) {
     CrowdView& v = *s.crowd;
     const crowd::Record& r = v.record;
     int agent = v.agent;
@@ -51,7 +71,11 @@ void choice_list(State& s) {
         ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
     ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
     const std::vector<int> choices = agent_choices(v, v.agent);
-    ImGui::BeginChild("choices", ImVec2(0, 110), true);
+    const float room = room_for_lists(ui);
+    const float height = v.choice < 0 ? room
+                                      : std::min(list_height(float(choices.size())),
+                                                 std::max(list_height(kLeastRows), kChoiceShare * room));
+    ImGui::BeginChild("choices", ImVec2(0, std::max(height, list_height(kLeastRows))), true);
     for (int k : choices) {
         const crowd::ChoicePoint& c = r.choices[std::size_t(k)];
         char label[96];
@@ -118,11 +142,10 @@ void choice_details(State& s, Ui& ui) {
         for (const crowd::FramedClip& e : c.intended) plan += ", " + std::to_string(e.clip);
         ImGui::TextWrapped("%s (looked ahead)", plan.c_str());
     }
-    // A scrolled list past 14 rows: a fallback may list dozens of candidates, the view stays visible.
-    std::size_t rows = c.candidates.size();
-    for (const crowd::Candidate& cand : c.candidates) rows += cand.against.size();
-    const float height = float(std::min<std::size_t>(rows, 14)) * ImGui::GetTextLineHeightWithSpacing() + 8.0f;
-    ImGui::BeginChild("candidates", ImVec2(0, height), true);
+    // The rest of the panel: a fallback may list dozens of candidates, which scroll.
+    // Its rows and their queries run wider than a column: they scroll sideways.
+    ImGui::BeginChild("candidates", ImVec2(0, std::max(room_for_lists(ui), list_height(kLeastRows))), true,
+                      ImGuiWindowFlags_HorizontalScrollbar);
     for (std::size_t k = 0; k < c.candidates.size(); ++k) candidate_row(s, ui, c, int(k));
     ImGui::EndChild();
 }
@@ -132,7 +155,7 @@ void choice_details(State& s, Ui& ui) {
 void crowd_panel(State& s, Ui& ui) {
     if (!begin_panel(s, ui, &PanelsOpen::crowd)) return;
     view_buttons(ui);
-    choice_list(s);
+    choice_list(s, ui);
     if (s.crowd->choice >= 0) choice_details(s, ui);
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::End();

@@ -12,8 +12,8 @@ namespace mobb::viewer {
 namespace {
 
 constexpr float kMinColumn = 200.0f;
-constexpr float kMinFill = 150.0f;     ///< the least a list panel keeps before the others give way
 constexpr float kMaxStrip = 0.35f;     ///< the most of the window's height the bottom strip takes
+constexpr float kMoveGain = 40.0f;     ///< pixels (two rows) a list's move must save the taller column
 constexpr float kFirstStrip = 120.0f;  ///< the strip's height before its panel has measured its content
 
 std::size_t index_of(const PanelInfo& info) { return std::size_t(&info - panel_list().data()); }
@@ -33,6 +33,9 @@ float wanted_height(const PanelInfo& info) {
     return w->TitleBarHeight() + 2.0f * w->WindowPadding.y + w->ContentSizeIdeal.y + w->ScrollbarSizes.y;
 }
 
+/// The height a panel needs in its column: its content's, or a list's least (PanelInfo::least).
+float needed_height(const PanelInfo& info) { return info.fills ? info.least : wanted_height(info); }
+
 /// The fitting case of share_height: the `least` heights, the spare height split among the lists; the
 /// last panel takes what rounding (or the lack of lists) leaves over.
 std::vector<float> share_fitting(const std::vector<float>& wanted, std::vector<float> out, float height) {
@@ -46,18 +49,14 @@ std::vector<float> share_fitting(const std::vector<float>& wanted, std::vector<f
     return out;
 }
 
-/// Heights for a column: when the panels' content fits with kMinFill left for each list, each panel is as
-/// tall as its content and the lists share the rest; else each panel is as tall as it wants while that
-/// is within a fair share (water filling) and the others share the rest. The last takes any left over.
-std::vector<float> share_height(const std::vector<float>& wanted, float height) {
+/// Heights for a column: when the panels' content fits with each list's least height (`least`), each
+/// panel is as tall as its content and the lists share the rest; else each panel is as tall as it wants
+/// while that is within a fair share (water filling) and the others share the rest. The last takes any
+/// left over.
+std::vector<float> share_height(const std::vector<float>& wanted, const std::vector<float>& least, float height) {
     float content = 0;
-    for (float w : wanted) content += std::isinf(w) ? kMinFill : w;
-    if (content <= height) {
-        std::vector<float> least = wanted;
-        for (float& w : least)
-            if (std::isinf(w)) w = kMinFill;
-        return share_fitting(wanted, least, height);
-    }
+    for (float h : least) content += h;
+    if (content <= height) return share_fitting(wanted, least, height);
     std::vector<float> out(wanted.size(), -1.0f);
     float left = height;
     std::size_t unset = wanted.size();
@@ -85,18 +84,58 @@ void place_column(const State& s, Ui& ui, Column column) {
     const float width = column_width(s, ui, column);
     if (width <= 0) return;
     std::vector<const PanelInfo*> shown;
-    std::vector<float> wanted;
+    std::vector<float> wanted, least;
     for (const PanelInfo& p : panel_list())
-        if (p.column == column && panel_shown(s, ui, p)) {
+        if (placed_column(ui, p) == column && panel_shown(s, ui, p)) {
             shown.push_back(&p);
             wanted.push_back(wanted_height(p));
+            least.push_back(needed_height(p));
         }
-    const std::vector<float> heights = share_height(wanted, float(ui.window_size.y) - ui.menu_height);
+    const std::vector<float> heights = share_height(wanted, least, float(ui.window_size.y) - ui.menu_height);
     const float x = column == Column::Left ? 0.0f : float(ui.window_size.x) - width;
     float y = ui.menu_height;
     for (std::size_t k = 0; k < shown.size(); ++k) {
         ui.panel_rects[index_of(*shown[k])] = {x, y, width, heights[k]};
         y += heights[k];
+    }
+}
+
+/// The height the panels standing in `column` need (needed_height), and how many they are; infinite
+/// while one has not measured its content yet.
+std::pair<float, int> column_need(const State& s, const Ui& ui, Column column) {
+    float need = 0;
+    int count = 0;
+    for (const PanelInfo& p : panel_list())
+        if (placed_column(ui, p) == column && panel_shown(s, ui, p)) need += needed_height(p), ++count;
+    return {need, count};
+}
+
+/// Moves lists between the two columns, one at a time, while a move lowers the taller column's need by
+/// more than kMoveGain (so that a move is not undone by a row's difference the next frame); a column is
+/// never emptied, and nothing moves while either column is collapsed (the moved lists go home).
+void balance_columns(const State& s, Ui& ui) {
+    const auto& list = panel_list();
+    ui.moved.resize(list.size(), false);
+    const bool both = !ui.columns.left_collapsed && !ui.columns.right_collapsed;
+    for (std::size_t k = 0; k < list.size(); ++k)
+        if (!both || !panel_shown(s, ui, list[k])) ui.moved[k] = false;
+    if (!both) return;
+    for (std::size_t round = 0; round < list.size(); ++round) {
+        const auto [left, lefts] = column_need(s, ui, Column::Left);
+        const auto [right, rights] = column_need(s, ui, Column::Right);
+        if (std::isinf(left) || std::isinf(right) || lefts == 0 || rights == 0) return;
+        float best = std::max(left, right) - kMoveGain;
+        std::size_t move = list.size();
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const PanelInfo& p = list[k];
+            const Column at = placed_column(ui, p);
+            if (!p.fills || !panel_shown(s, ui, p) || (at == Column::Left ? lefts : rights) == 1) continue;
+            const float d = at == Column::Left ? p.least : -p.least;  // what the left column gives the right
+            const float after = std::max(left - d, right + d);
+            if (after < best) best = after, move = k;
+        }
+        if (move == list.size()) return;
+        ui.moved[move] = !ui.moved[move];
     }
 }
 
@@ -139,9 +178,15 @@ float column_width(const State& s, const Ui& ui, Column column) {
     const bool left = column == Column::Left;
     if (left ? ui.columns.left_collapsed : ui.columns.right_collapsed) return 0;
     for (const PanelInfo& p : panel_list())
-        if (p.column == column && panel_shown(s, ui, p))
+        if (placed_column(ui, p) == column && panel_shown(s, ui, p))
             return clamped_width(left ? ui.columns.left : ui.columns.right, ui);
     return 0;
+}
+
+Column placed_column(const Ui& ui, const PanelInfo& panel) {
+    const std::size_t k = index_of(panel);
+    if (k >= ui.moved.size() || !ui.moved[k]) return panel.column;
+    return panel.column == Column::Left ? Column::Right : Column::Left;
 }
 
 Rect viewport(const State& s, const Ui& ui) {
@@ -161,6 +206,7 @@ render::Viewport gl_viewport(const Rect& r, const glm::ivec2& window, const glm:
 
 void place_panels(const State& s, Ui& ui) {
     ui.panel_rects.assign(panel_list().size(), Rect{});
+    balance_columns(s, ui);
     place_column(s, ui, Column::Left);
     place_column(s, ui, Column::Right);
     place_strip(s, ui);
@@ -185,8 +231,9 @@ bool begin_panel(State& s, Ui& ui, bool PanelsOpen::*panel, int flags) {
         drawn =
             ImGui::Begin(info.name, &open, flags | fixed | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
         // Dragging a panel's side edge resizes its whole column.
-        if (const float w = ImGui::GetWindowWidth(); info.column != Column::Bottom && std::abs(w - r.width) > 0.5f)
-            (info.column == Column::Left ? ui.columns.left : ui.columns.right) = clamped_width(w, ui);
+        const Column column = placed_column(ui, info);
+        if (const float w = ImGui::GetWindowWidth(); column != Column::Bottom && std::abs(w - r.width) > 0.5f)
+            (column == Column::Left ? ui.columns.left : ui.columns.right) = clamped_width(w, ui);
     }
     if (!open) choose_panel(ui, panel, false);  // its close button
     if (!drawn) ImGui::End();

@@ -15,6 +15,10 @@ bool crowd_only(const PanelInfo& panel);
 /// Whether the panel is drawn this frame: open and, for a crowd's panel, a crowd loaded.
 bool panel_shown(const State& state, const Ui& ui, const PanelInfo& panel);
 
+/// The column a panel stands in this frame: its own (PanelInfo::column), or for a list the other one
+/// when place_panels moved it there to balance the columns' heights (Ui::moved).
+Column placed_column(const Ui& ui, const PanelInfo& panel);
+
 /// The width a column takes this frame: 0 when collapsed or none of its panels is shown.
 float column_width(const State& state, const Ui& ui, Column column);
 
@@ -29,7 +33,9 @@ Rect viewport(const State& state, const Ui& ui);
 /// than the window).
 render::Viewport gl_viewport(const Rect& rect, const glm::ivec2& window, const glm::ivec2& framebuffer);
 
-/// Places this frame's column panels in ui.panel_rects (after the menu bar, before the panels).
+/// Places this frame's column panels in ui.panel_rects (after the menu bar, before the panels). A list
+/// (Trace, Recursion, Crowd) stands in the other column when that lowers the taller column's content by
+/// two rows or more, so that both columns fit the window without scrolling where they can.
 void place_panels(const State& state, Ui& ui);
 
 /// ImGui::Begin for a panel at its place: in its column at the size the layout gave it (a width the user

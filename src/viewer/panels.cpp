@@ -24,12 +24,14 @@ void apply_style() {
 
 const std::vector<PanelInfo>& panel_list() {
     using C = Column;
+    // The lists' least heights (pixels): 150 holds the Trace panel's controls and two rows, or eight rows
+    // of Recursion; 250 the Crowd panel's controls and its two lists of three rows (crowd_panel.cpp).
     static const std::vector<PanelInfo> list = {
-        {"Scene", &PanelsOpen::scene, C::Left, false},   {"Query", &PanelsOpen::query, C::Right, false},
-        {"Trace", &PanelsOpen::trace, C::Right, true},   {"Recursion", &PanelsOpen::recursion, C::Left, true},
-        {"Tree fit", &PanelsOpen::fit, C::Left, false},  {"Inspector", &PanelsOpen::inspector, C::Left, false},
-        {"Crowd", &PanelsOpen::crowd, C::Right, false},  {"Timeline", &PanelsOpen::timeline, C::Bottom, false},
-        {"Open", &PanelsOpen::open, C::Floating, false},
+        {"Scene", &PanelsOpen::scene, C::Left, false, 0},   {"Query", &PanelsOpen::query, C::Right, false, 0},
+        {"Trace", &PanelsOpen::trace, C::Right, true, 150}, {"Recursion", &PanelsOpen::recursion, C::Left, true, 150},
+        {"Tree fit", &PanelsOpen::fit, C::Left, false, 0},  {"Inspector", &PanelsOpen::inspector, C::Left, false, 0},
+        {"Crowd", &PanelsOpen::crowd, C::Right, true, 250}, {"Timeline", &PanelsOpen::timeline, C::Bottom, false, 0},
+        {"Open", &PanelsOpen::open, C::Floating, false, 0},
     };
     return list;
 }

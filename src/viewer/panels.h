@@ -35,8 +35,9 @@ enum class Column : std::uint8_t { Left, Right, Bottom, Floating };
 struct PanelInfo {
     const char* name;  ///< the window title, also the key in the settings file
     bool PanelsOpen::*open;
-    Column column;
-    bool fills;  ///< takes what its column has left (a list); the others are as tall as their content
+    Column column;  ///< its own column; a list may stand in the other one to balance them (layout.h)
+    bool fills;     ///< takes what its column has left (a list); the others are as tall as their content
+    float least;    ///< a list's least height (pixels) before the other panels of its column give way
 };
 /// Every panel in View-menu order, which is also the top-down order within a column.
 const std::vector<PanelInfo>& panel_list();
@@ -46,7 +47,7 @@ const PanelInfo& panel_info(bool PanelsOpen::*open);
 /// and whether each is collapsed (its panels hidden, the 3D view takes the room). The settings file
 /// keeps them.
 struct Columns {
-    float left = 300, right = 330;
+    float left = 315, right = 330;  // left: the Trace panel's rows fit when it stands there
     bool left_collapsed = false, right_collapsed = false, bottom_collapsed = false;
 };
 
@@ -84,6 +85,7 @@ struct Ui {
     std::map<std::string, bool> panel_choices;
     Columns columns;
     std::vector<Rect> panel_rects;   ///< this frame's place of each panel in a column (panel_list() order)
+    std::vector<bool> moved;         ///< lists standing in the other column to balance them (panel_list() order)
     Pick pick;                       ///< the last disk clicked (the inspector)
     Pick ruler;                      ///< the one clicked before it: the inspector measures from it to `pick`
     std::vector<int> picked_events;  ///< trace events whose node holds the picked disk

@@ -8,6 +8,7 @@
 #include "layout.h"
 #include "mobb/core/angle.h"
 #include "panels.h"
+#include "scene.h"
 #include "widgets.h"
 
 namespace mobb::viewer {
@@ -17,7 +18,7 @@ namespace {
 bool placement_fields(const char* id, Placement& p) {
     ImGui::PushID(id);
     double xy[2] = {p.x, p.y}, turn[2] = {degrees(p.theta), p.t0};
-    const double lo = -1e4, hi = 1e4;
+    const double lo = -kFar, hi = kFar;  // a scene file's range
     bool changed = false;
     if (ImGui::DragScalarN("x y (m)", ImGuiDataType_Double, xy, 2, 0.01f, &lo, &hi, "%.2f")) {
         p.x = xy[0], p.y = xy[1];

@@ -35,18 +35,18 @@ public:
 
     double number(const char* key, double fallback) const {
         if (!has(key)) return fallback;
-        const json& v = j_.at(key);
-        if (!v.is_number() || !std::isfinite(v.get<double>())) fail(at(key), "expected a finite number");
-        return v.get<double>();
+        return finite(j_.at(key), at(key));
     }
-    double positive(const char* key, double fallback) const {
+    /// A number within lo..hi (both allowed).
+    double number(const char* key, double fallback, double lo, double hi) const {
         const double v = number(key, fallback);
-        if (!(v > 0)) fail(at(key), "expected a positive number");
+        if (!(v >= lo && v <= hi)) fail(at(key), "expected a number in " + range(lo, hi) + ", got " + text(v));
         return v;
     }
-    double non_negative(const char* key, double fallback) const {
+    /// A number over 0 and at most hi.
+    double positive(const char* key, double fallback, double hi) const {
         const double v = number(key, fallback);
-        if (!(v >= 0)) fail(at(key), "expected a number >= 0");
+        if (!(v > 0 && v <= hi)) fail(at(key), "expected a number over 0 and at most " + text(hi) + ", got " + text(v));
         return v;
     }
     int integer(const char* key, int fallback, int lo, int hi) const {
@@ -66,19 +66,34 @@ public:
         if (!j_.at(key).is_string()) fail(at(key), "expected a string");
         return j_.at(key).get<std::string>();
     }
-    std::vector<double> numbers(const char* key, std::size_t count) const {
+    /// An array of `count` numbers, each within lo..hi; an error names the element (KEY[i]).
+    std::vector<double> numbers(const char* key, std::size_t count, double lo, double hi) const {
         const json& v = j_.at(key);
         if (!v.is_array() || v.size() != count)
             fail(at(key), "expected an array of " + std::to_string(count) + " numbers");
         std::vector<double> out;
-        for (const json& x : v) {
-            if (!x.is_number() || !std::isfinite(x.get<double>())) fail(at(key), "expected finite numbers");
-            out.push_back(x.get<double>());
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::string place = at(key) + "[" + std::to_string(k) + "]";
+            const double x = finite(v[k], place);
+            if (!(x >= lo && x <= hi)) fail(place, "expected a number in " + range(lo, hi) + ", got " + text(x));
+            out.push_back(x);
         }
         return out;
     }
 
+    static std::string text(double v) {
+        char out[32];
+        std::snprintf(out, sizeof out, "%g", v);
+        return out;
+    }
+    static std::string range(double lo, double hi) { return text(lo) + ".." + text(hi); }
+
 private:
+    static double finite(const json& v, const std::string& place) {
+        if (!v.is_number() || !std::isfinite(v.get<double>())) fail(place, "expected a finite number");
+        return v.get<double>();
+    }
+
     const json& j_;
     std::string where_;
 };
@@ -86,10 +101,14 @@ private:
 RandomWalk walk_of(const json& j, const std::string& where) {
     Reader r(j, where, {"seconds", "hz", "seed", "random_walks", "spacing"});
     RandomWalk w;
-    w.seconds = r.positive("seconds", w.seconds);
-    w.hz = r.positive("hz", w.hz);
+    w.seconds = r.positive("seconds", w.seconds, kMaxWalkSamples / kMinRate);
+    w.hz = r.number("hz", w.hz, kMinRate, kMaxRate);
     w.seed = unsigned(r.integer("seed", int(w.seed), 0, 1 << 30));
-    if (w.seconds * w.hz > 1e7) Reader::fail(where, "more than 10,000,000 samples");
+    // A tree needs a sample; the product is checked for the scene's walks together (parse_scene).
+    if (std::llround(w.seconds * w.hz) < 1)
+        Reader::fail(r.at("seconds"), "expected at least one sample (seconds x hz)");
+    if (w.seconds * w.hz > kMaxWalkSamples)
+        Reader::fail(r.at("seconds"), "more than " + Reader::text(kMaxWalkSamples) + " samples (seconds x hz)");
     return w;
 }
 
@@ -110,7 +129,7 @@ SceneClip clip_of(const json& j, const std::string& where) {
         const json& s = j.at("scale");
         if (s.is_number()) {
             char text[64];
-            std::snprintf(text, sizeof text, "%.17g", s.get<double>());
+            std::snprintf(text, sizeof text, "%.17g", r.number("scale", 1, kMinScale, kMaxScale));
             c.load.scale = text;
         } else if (s.is_string() && s.get<std::string>() == "auto") {
             c.load.scale = "auto";
@@ -119,18 +138,19 @@ SceneClip clip_of(const json& j, const std::string& where) {
         }
     }
     c.load.frames = r.string("frames", "");
-    c.load.fps = r.has("fps") ? r.positive("fps", 0) : 0;
-    if (r.has("place")) {
-        const auto p = r.numbers("place", 4);
+    try {  // checked here too, so that a bad range names the scene file and the key
+        io::LoadOptionText frames;
+        frames.frames = c.load.frames;
+        (void)io::parse_load_options(frames);
+    } catch (const std::exception& e) {
+        Reader::fail(r.at("frames"), e.what());
+    }
+    c.load.fps = r.has("fps") ? r.number("fps", 0, kMinRate, kMaxRate) : 0;
+    if (r.has("place")) {  // x, y (m), theta (degrees), t0 (s): the Query panel's ranges
+        const auto p = r.numbers("place", 4, -kFar, kFar);
         c.place = {p[0], p[1], radians(p[2]), p[3]};
     }
     c.visible = r.boolean("visible", true);
-    // Loader options are checked here too, so a bad one names the scene file and the key.
-    try {
-        (void)io::parse_load_options(c.load);
-    } catch (const std::exception& e) {
-        Reader::fail(where, e.what());
-    }
     return c;
 }
 
@@ -169,16 +189,34 @@ render::Camera camera_of(const json& j, const std::string& where, double time_sc
     Reader r(j, where, {"target", "yaw", "pitch", "distance", "fov"});
     render::Camera c;
     if (r.has("target")) {
-        const auto t = r.numbers("target", 3);
+        const auto t = r.numbers("target", 3, -kFar, kFar);
         c.target = render::to_gl(t[0], t[1], t[2], time_scale);
     }
-    c.yaw = float(r.number("yaw", c.yaw));
-    c.pitch = float(r.number("pitch", c.pitch));
-    if (c.pitch < -89.0f || c.pitch > 89.9f) Reader::fail(r.at("pitch"), "expected -89..89.9 degrees");
-    c.distance = float(r.positive("distance", c.distance));
-    c.fov = float(r.positive("fov", c.fov));
-    if (c.fov >= 170.0f) Reader::fail(r.at("fov"), "expected less than 170 degrees");
+    c.yaw = float(r.number("yaw", c.yaw, -kMaxYaw, kMaxYaw));
+    c.pitch = float(r.number("pitch", c.pitch, -89.0, 89.9));  // Camera::orbit's range
+    c.distance = float(r.positive("distance", c.distance, kMaxCameraDistance));
+    c.fov = float(r.number("fov", c.fov, kMinFov, kMaxFov));
     return c;
+}
+
+/// The random walks' samples together, and the query's clips: indices of the scene's clips (its own,
+/// then the generated walks), two different ones or -1 for none.
+void check_clips(const Scene& s, const Reader& r) {
+    double samples = double(s.generate.count) * s.generate.walk.seconds * s.generate.walk.hz;
+    for (const SceneClip& c : s.clips)
+        if (c.walk) samples += c.walk->seconds * c.walk->hz;
+    if (samples > kMaxWalkSamples)
+        Reader::fail(r.at(s.generate.count > 0 ? "generate" : "clips"),
+                     "more than " + Reader::text(kMaxWalkSamples) + " samples in the random walks together");
+    const int clips = int(s.clips.size()) + s.generate.count;
+    const std::string where = r.at("query");
+    for (const auto& [key, index] : {std::pair{"a", s.query_a}, std::pair{"b", s.query_b}})
+        if (index >= clips)
+            Reader::fail(where + "." + key, "clip " + std::to_string(index) + " past the scene's " +
+                                                std::to_string(clips) + " clips (-1 for none)");
+    if (s.query_a >= 0 && s.query_a == s.query_b) Reader::fail(where + ".b", "expected a clip other than a's");
+    if ((s.query_a < 0) != (s.query_b < 0))
+        Reader::fail(where + (s.query_a < 0 ? ".a" : ".b"), "expected a clip (-1 for none only with the other)");
 }
 
 }  // namespace
@@ -196,7 +234,9 @@ Scene parse_scene(const json& j, const std::string& file) {
         const Reader g(j.at("generate"), r.at("generate"), {"random_walks", "seconds", "hz", "seed", "spacing"});
         s.generate.count = g.integer("random_walks", 0, 0, 10000);
         s.generate.walk = walk_of(j.at("generate"), r.at("generate"));
-        s.generate.spacing = g.positive("spacing", s.generate.spacing);
+        // The walks stand on a square grid from the origin, which must stay within kFar.
+        const double side = std::ceil(std::sqrt(double(s.generate.count)));
+        s.generate.spacing = g.positive("spacing", s.generate.spacing, kFar / std::max(1.0, side - 1));
     }
     if (r.has("tree")) {
         const Reader t(j.at("tree"), r.at("tree"), {"type", "n_min", "fit"});
@@ -219,11 +259,11 @@ Scene parse_scene(const json& j, const std::string& file) {
     if (r.has("layers")) layers_of(j.at("layers"), r.at("layers"), s.layers);
     if (r.has("time")) {
         const Reader t(j.at("time"), r.at("time"), {"scale", "cursor", "window"});
-        s.time_scale = t.positive("scale", s.time_scale);
-        s.cursor = t.number("cursor", s.cursor);
-        s.window = t.non_negative("window", s.window);
+        s.time_scale = t.number("scale", s.time_scale, kMinTimeScale, kMaxTimeScale);
+        s.cursor = t.number("cursor", s.cursor, -kFar, kFar);
+        s.window = t.number("window", s.window, 0, kFar);
     }
-    s.skeleton_scale = r.positive("skeleton_scale", s.skeleton_scale);
+    s.skeleton_scale = r.number("skeleton_scale", s.skeleton_scale, kMinSkeletonScale, kMaxSkeletonScale);
     if (r.has("camera")) s.camera = camera_of(j.at("camera"), r.at("camera"), s.time_scale);
     if (r.has("image")) {
         const Reader im(j.at("image"), r.at("image"), {"width", "height", "multisample"});
@@ -231,10 +271,7 @@ Scene parse_scene(const json& j, const std::string& file) {
         s.height = im.integer("height", s.height, 16, 8192);
         s.multisample = im.boolean("multisample", s.multisample);
     }
-    const int clips = int(s.clips.size()) + s.generate.count;
-    if (s.query_a >= clips || s.query_b >= clips) Reader::fail(r.at("query"), "clip index out of range");
-    if ((s.query_a < 0) != (s.query_b < 0) || (s.query_a >= 0 && s.query_a == s.query_b))
-        Reader::fail(r.at("query"), "expected two different clips (or -1 for none)");
+    check_clips(s, r);
     return s;
 }
 

@@ -15,6 +15,20 @@
 
 namespace mobb::viewer {
 
+/// What a scene's numbers may be: the file's reader refuses anything else, and the panels' drags stay
+/// within the same ranges (one place for both).
+/// Metres from the origin (placements, the camera's target) and seconds from 0 (start times, the
+/// cursor, the time window): the Query panel's drag range; the grid draws a line per metre across it.
+inline constexpr double kFar = 1e4;
+inline constexpr double kMinTimeScale = 0.05, kMaxTimeScale = 20;         ///< metres per second (Scene panel)
+inline constexpr double kMinSkeletonScale = 0.05, kMaxSkeletonScale = 5;  ///< times the standing height
+inline constexpr double kMinScale = 1e-6, kMaxScale = 1e3;                ///< a clip's metres per file unit (um to km)
+inline constexpr double kMinRate = 1, kMaxRate = 1000;  ///< samples per second: a walk's hz, a clip's fps
+inline constexpr double kMaxWalkSamples = 1e7;          ///< all random walks of a scene together
+inline constexpr double kMaxCameraDistance = 1e6;       ///< metres from the target (floats stay finite)
+inline constexpr double kMinFov = 1, kMaxFov = 170;     ///< degrees, vertical
+inline constexpr double kMaxYaw = 1e6;                  ///< degrees either way (orbiting adds up)
+
 /// A synthetic path: a seeded random walk (no skeleton), for data-free tests and the benchmark.
 struct RandomWalk {
     double seconds = 10.0;
@@ -53,8 +67,10 @@ struct Scene {
     bool multisample = true;  ///< render::Frame::multisample; saved under "image" only when off
 };
 
-/// Parses a scene. Throws ViewerError with one line "FILE: KEY.PATH: message" (or the JSON
-/// parser's line and column) for a missing file, malformed JSON, unknown keys or wrong types.
+/// Parses a scene. Throws ViewerError with one line "FILE.KEY.PATH: message" (or "FILE: " and the JSON
+/// parser's line and column) for a missing file, malformed JSON, unknown keys, wrong types, numbers out
+/// of the ranges above and clip indices past the scene's clips. A query step past the trace's last is
+/// its last (assets/scenes/trace_hit.json shows the hit so).
 Scene load_scene(const std::string& file);
 Scene parse_scene(const nlohmann::json& json, const std::string& file);
 nlohmann::json scene_json(const Scene& scene);

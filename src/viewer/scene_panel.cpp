@@ -7,6 +7,7 @@
 
 #include "layout.h"
 #include "panels.h"
+#include "scene.h"
 
 namespace mobb::viewer {
 
@@ -93,8 +94,8 @@ void scene_panel(State& s, Ui& ui) {
     colouring_combos(s.scene.layers);
     drag("time", &s.scene.cursor, 0.01f, 0.0, max_time(s), "%.2f s");
     drag("window", &s.scene.window, 0.05f, 0.0, max_time(s), s.scene.window > 0 ? "+-%.2f s" : "all time");
-    drag("m per s", &s.scene.time_scale, 0.01f, 0.05, 20.0, "%.2f");
-    drag("skeleton", &s.scene.skeleton_scale, 0.01f, 0.05, 5.0, "%.2f x");
+    drag("m per s", &s.scene.time_scale, 0.01f, kMinTimeScale, kMaxTimeScale, "%.2f");
+    drag("skeleton", &s.scene.skeleton_scale, 0.01f, kMinSkeletonScale, kMaxSkeletonScale, "%.2f x");
     camera_buttons(ui);
     char path[256];
     std::snprintf(path, sizeof path, "%s", ui.save_path.c_str());

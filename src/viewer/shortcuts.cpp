@@ -75,9 +75,13 @@ void run_command(Command command, State& s, Ui& ui) {
 
 void shortcuts_window(Ui& ui) {
     if (!ui.show_help) return;
-    const ImVec2 centre(0.5f * float(ui.window_size.x), 0.5f * float(ui.window_size.y));
-    ImGui::SetNextWindowPos(centre, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    if (ImGui::Begin("Shortcuts", &ui.show_help, ImGuiWindowFlags_AlwaysAutoResize)) {
+    // Centred below the menu bar every frame: placed once, before its first frame has measured its size,
+    // it hung from the window's middle and ran past the bottom. Within the window (a short one scrolls).
+    const float top = ui.menu_height, height = float(ui.window_size.y) - top;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * float(ui.window_size.x), top + 0.5f * height), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(float(ui.window_size.x), height));
+    if (ImGui::Begin("Shortcuts", &ui.show_help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) {
         if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
             for (const Shortcut& k : shortcuts()) {
                 ImGui::TableNextColumn();

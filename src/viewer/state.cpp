@@ -8,6 +8,7 @@
 #include "grid_layer.h"
 #include "random_walk.h"
 #include "renderer.h"
+#include "space.h"
 
 namespace mobb::viewer {
 
@@ -106,11 +107,20 @@ void frame_all(State& s, float aspect) {
     const render::Frame f = frame_of(s);
     const render::Bounds b = render::scene_bounds(f);
     if (b.empty) return;
+    // The scene's space-time box and the time axis, which stands at the grid's corner (grid_bounds, up to
+    // a metre past the scene), rather than the whole grid.
     glm::vec3 lo, hi;
-    render::gl_bounds(render::grid_bounds(b), s.scene.time_scale, lo, hi);
-    // The grid's labels and the time axis's stand a little outside it.
+    render::gl_bounds(b, s.scene.time_scale, lo, hi);
+    std::vector<glm::vec3> points;
+    points.reserve(10);
+    for (int k = 0; k < 8; ++k)
+        points.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    const render::Bounds grid = render::grid_bounds(b);
+    for (const double t : {grid.lo.z, grid.hi.z})
+        points.push_back(render::to_gl(grid.lo.x, grid.lo.y, t, s.scene.time_scale));
+    // The axis's labels and title stand a little outside it.
     constexpr float kLabelRoom = 1.08f;
-    s.camera.frame(lo, hi, aspect);
+    s.camera.frame(points, aspect);
     s.camera.distance *= kLabelRoom;
 }
 

@@ -174,8 +174,9 @@ TEST(Golden, ShortcutsWindow) {
 
 /// The window's first frame headless: the panels of `start` (null: those the state opens by default)
 /// in their columns, everything framed in the viewport they leave. With `check_cut`, a failure for each
-/// window whose text is cut.
-render::Image render_ui(State& s, int width, int height, const viewer::Ui* start = nullptr, bool check_cut = true) {
+/// window whose text is cut; `windows` receives the panels' rectangles.
+render::Image render_ui(State& s, int width, int height, const viewer::Ui* start = nullptr, bool check_cut = true,
+                        std::vector<viewer::ImageRect>* windows = nullptr) {
     viewer::Ui ui;
     if (start)
         ui = *start;
@@ -183,7 +184,7 @@ render::Image render_ui(State& s, int width, int height, const viewer::Ui* start
         ui.panels = viewer::default_panels(s);
     ui.request_frame_all = true;
     std::vector<std::string> cut;
-    render::Image image = viewer::render_headless(s, {width, height, true, false, &ui, &cut});
+    render::Image image = viewer::render_headless(s, {width, height, true, false, &ui, &cut, nullptr, windows});
     for (const std::string& line : cut)
         if (check_cut) ADD_FAILURE() << width << "x" << height << ": " << line;
     return image;
@@ -307,8 +308,8 @@ TEST(Golden, CrowdChoicePoint) {
     s.scene.cursor = double(c.frame) * s.crowd->record.dt;
     s.scene.layers.disks_translucent = true;
     s.camera.top();  // the "top" preset: the candidates fan out from the agent's disk
-    // Not checked for cut text: the candidates' rows are wider than the column, and scroll.
-    check_image("crowd_choice", render_ui(s, 1280, 720, nullptr, false));
+    // The candidates' rows are wider than the column: their list scrolls sideways (not cut text).
+    check_image("crowd_choice", render_ui(s, 1280, 720));
 }
 
 /// A rejected candidate's first colliding query opened in the trace debugger, seen from above: the
@@ -339,8 +340,26 @@ TEST(Golden, CrowdQueryOpened) {
     EXPECT_TRUE(s.answer) << message;
     s.scene.cursor = double(c.frame) * r.dt;
     s.camera.top();
-    // Query, Trace and Recursion open with the query; at 720 rows the right column's panels scroll.
-    check_image("crowd_query", render_ui(s, 1280, 720, nullptr, false));
+    // Query, Trace and Recursion open with the query. Trace stands in the left column, under Scene and
+    // over Recursion, so that at 720 rows both columns fit without a panel scrolling (text cut fails).
+    std::vector<viewer::ImageRect> windows;
+    check_image("crowd_query", render_ui(s, 1280, 720, nullptr, true, &windows));
+    auto x_of = [&](const std::string& name) {
+        const auto w = std::find_if(windows.begin(), windows.end(), [&](const auto& win) { return win.name == name; });
+        return w == windows.end() ? -1.0f : w->rect.x;
+    };
+    EXPECT_EQ(x_of("Scene"), 0.0f);
+    EXPECT_EQ(x_of("Trace"), 0.0f);
+    EXPECT_EQ(x_of("Recursion"), 0.0f);
+    EXPECT_GT(x_of("Query"), 640.0f);
+    EXPECT_GT(x_of("Crowd"), 640.0f);
+    // With the left column collapsed nothing moves: Trace is back in its own column, which scrolls.
+    viewer::Ui collapsed;
+    collapsed.panels = viewer::default_panels(s);
+    collapsed.columns.left_collapsed = true;
+    render_ui(s, 1280, 720, &collapsed, false, &windows);
+    EXPECT_GT(x_of("Trace"), 640.0f);
+    EXPECT_EQ(x_of("Scene"), -1.0f);
 }
 
 /// Moves agent 1 onto agent 0 at a third of the run (one contact); returns that frame.

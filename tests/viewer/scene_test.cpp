@@ -42,12 +42,15 @@ TEST(Scene, Errors) {
               "s.json.clips[0].place: expected an array of 4 numbers");
     EXPECT_EQ(error_of_json(R"({"clips": [{}]})"),
               "s.json.clips[0]: expected exactly one of \"file\" and \"random_walk\"");
-    EXPECT_EQ(error_of_json(R"({"query": {"a": 0, "b": 5}})"), "s.json.query: clip index out of range");
-    EXPECT_EQ(error_of_json(R"({"time": {"window": -1}})"), "s.json.time.window: expected a number >= 0");
+    EXPECT_EQ(error_of_json(R"({"clips": [{"file": "a.bvh"}, {"file": "b.bvh"}], "query": {"a": 0, "b": 5}})"),
+              "s.json.query.b: clip 5 past the scene's 2 clips (-1 for none)");
+    EXPECT_EQ(error_of_json(R"({"time": {"window": -1}})"),
+              "s.json.time.window: expected a number in 0..10000, got -1");
     EXPECT_EQ(error_of_json(R"({"tree": {"type": "octree"}})"),
               "s.json.tree.type: expected one of mobb, umobb, hybrid1, hybrid2, mobb1, umobb1");
-    EXPECT_NE(error_of_json(R"({"clips": [{"file": "a.bvh", "frames": "9:3"}]})").find("s.json.clips[0]: --frames"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of_json(R"({"clips": [{"file": "a.bvh", "frames": "9:3"}]})").find("s.json.clips[0].frames: --frames"),
+        std::string::npos);
 }
 
 TEST(Scene, MissingClipFileNamesTheFile) {

@@ -365,8 +365,24 @@ TEST(PanelLayout, TimelineInTheBottomStrip) {
     EXPECT_EQ(viewer::strip_height(scene, scene_ui), 0.0f);
 }
 
-/// In a headless image with the panels, frame all fits the grid and the time axis into the viewport the
-/// columns leave: their box's corners project inside it and reach across most of it.
+/// The span in normalised device coordinates of `points` under the camera, for the viewport's aspect.
+struct Span {
+    float x0 = 1, x1 = -1, y0 = 1, y1 = -1;
+};
+Span ndc_span(const viewer::State& s, const viewer::Rect& v, const std::vector<glm::vec3>& points) {
+    const glm::mat4 m = s.camera.projection(v.aspect()) * s.camera.view();
+    Span out;
+    for (const glm::vec3& q : points) {
+        const glm::vec4 p = m * glm::vec4(q, 1.0f);
+        out.x0 = std::min(out.x0, p.x / p.w), out.x1 = std::max(out.x1, p.x / p.w);
+        out.y0 = std::min(out.y0, p.y / p.w), out.y1 = std::max(out.y1, p.y / p.w);
+    }
+    return out;
+}
+
+/// In a headless image with the panels, frame all fits the scene's space-time box and the time axis
+/// (at the grid's corner) into the viewport the columns leave: they project inside it, and the scene's
+/// box reaches across most of it.
 TEST(PanelLayout, FrameAllFillsTheViewport) {
     viewer::State s = load("walks.json");
     viewer::Ui start;
@@ -376,21 +392,22 @@ TEST(PanelLayout, FrameAllFillsTheViewport) {
     start.window_size = {1280, 720};
     start.menu_height = 19;
     const viewer::Rect v = viewer::viewport(s, start);
-    const render::Bounds b = render::grid_bounds(render::scene_bounds(viewer::frame_of(s)));
+    const render::Bounds b = render::scene_bounds(viewer::frame_of(s));
     glm::vec3 lo, hi;
     render::gl_bounds(b, s.scene.time_scale, lo, hi);
-    const glm::mat4 m = s.camera.projection(v.aspect()) * s.camera.view();
-    float x0 = 1, x1 = -1, y0 = 1, y1 = -1;
-    for (int k = 0; k < 8; ++k) {
-        const glm::vec4 p = m * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f);
-        x0 = std::min(x0, p.x / p.w), x1 = std::max(x1, p.x / p.w);
-        y0 = std::min(y0, p.y / p.w), y1 = std::max(y1, p.y / p.w);
-    }
-    EXPECT_GE(x0, -1.0f);
-    EXPECT_LE(x1, 1.0f);
-    EXPECT_GE(y0, -1.0f);
-    EXPECT_LE(y1, 1.0f);
-    EXPECT_GT(std::max(x1 - x0, y1 - y0), 1.7f) << "the scene fills most of the viewport";
+    std::vector<glm::vec3> box;
+    for (int k = 0; k < 8; ++k) box.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    const render::Bounds grid = render::grid_bounds(b);
+    std::vector<glm::vec3> all = box;
+    for (const double t : {grid.lo.z, grid.hi.z})
+        all.push_back(render::to_gl(grid.lo.x, grid.lo.y, t, s.scene.time_scale));
+    const Span a = ndc_span(s, v, all);
+    EXPECT_GE(a.x0, -1.0f);
+    EXPECT_LE(a.x1, 1.0f);
+    EXPECT_GE(a.y0, -1.0f);
+    EXPECT_LE(a.y1, 1.0f);
+    const Span scene = ndc_span(s, v, box);
+    EXPECT_GT(std::max(scene.x1 - scene.x0, scene.y1 - scene.y0), 1.6f) << "the scene fills most of the viewport";
 }
 
 }  // namespace
