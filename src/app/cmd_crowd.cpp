@@ -167,8 +167,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
                                             crowd::PoseBlend{}.window, opt.threads);
                     metrics_json = crowd::with_motion(metrics_json, m);
                     motion = crowd::motion_text(m);
-                } catch (const io::LoadError& e) {
-                    motion = std::string("motion: not measured (") + e.what() + ")\n";  // no motion capture here
+                } catch (const io::LoadError& e) {  // no motion capture here
+                    motion = std::string("motion: not measured (") + e.what() + ")\n";
+                } catch (const crowd::GraphError& e) {  // a source not as the graph was built from it
+                    motion = std::string("motion: not measured (") + e.what() + ")\n";
                 }
             }
             if (!record->empty())

@@ -33,8 +33,10 @@ std::optional<crowd::CrowdMotion> measure_motion(const crowd::Record& r,
         return crowd::crowd_motion(r, g, crowd::PoseBlend{}.window, util::WorkerPool::hardware_threads());
     } catch (const io::LoadError& e) {
         note = std::string("not measured: ") + e.what();
-        return std::nullopt;
+    } catch (const crowd::GraphError& e) {
+        note = std::string("not measured: ") + e.what();
     }
+    return std::nullopt;
 }
 
 WanderRow run_wander(const std::shared_ptr<const crowd::MotionGraph>& g, const crowd::NarrowPhase& narrow,
