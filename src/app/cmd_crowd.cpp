@@ -9,6 +9,7 @@
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/motion_metrics.h"
 #include "mobb/crowd/record_file.h"
 #include "mobb/crowd/scenario.h"
 #include "mobb/util/worker_pool.h"
@@ -80,6 +81,7 @@ void add_crowd(CLI::App& app, int& exit_code) {
     o->threads = util::WorkerPool::hardware_threads();
     auto tree = std::make_shared<TreeArgs>();
     auto quiet = std::make_shared<bool>(false);
+    auto no_motion = std::make_shared<bool>(false);
     cmd->add_option("--graph", *graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
     cmd->add_option("--agents", o->agents, "Number of agents")->check(CLI::Range(1, 1000000))->capture_default_str();
     cmd->add_option("--world", *world, "World rectangle WxH (metres)")->capture_default_str();
@@ -120,6 +122,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
                     "Set a field of CrowdTuning, NAME=VALUE (repeatable; include/mobb/crowd/tuning.h), e.g. "
                     "--tune look_ahead_budget=192");
     cmd->add_flag("--quiet", *quiet, "No progress bar");
+    cmd->add_flag("--no-motion", *no_motion,
+                  "Skip the motion metrics (joint jumps, foot sliding: they pose every agent from the mocap)");
     tree->add_to(*cmd, false);
     cmd->callback([=, &exit_code] {
         // A scenario brings its own world, agents, policy and time limit.
@@ -168,15 +172,28 @@ void add_crowd(CLI::App& app, int& exit_code) {
             run.record.graph = file;
             run.record.scenario = s.name;
             const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);
+            std::string metrics_json = crowd::metrics_json(metrics), motion;
+            if (!*no_motion) {
+                try {
+                    const crowd::CrowdMotion m =
+                        crowd::crowd_motion(run.record, std::make_shared<const crowd::MotionGraph>(g),
+                                            crowd::PoseBlend{}.window, opt.threads);
+                    metrics_json = crowd::with_motion(metrics_json, m);
+                    motion = crowd::motion_text(m);
+                } catch (const io::LoadError& e) {  // no motion capture here
+                    motion = std::string("motion: not measured (") + e.what() + ")\n";
+                } catch (const crowd::GraphError& e) {  // a source not as the graph was built from it
+                    motion = std::string("motion: not measured (") + e.what() + ")\n";
+                }
+            }
             if (!record->empty())
-                crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary),
-                                         crowd::metrics_json(metrics));
+                crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary), metrics_json);
             if (!s.name.empty()) out << "scenario " << s.name << ": ";
             out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, "
                 << opt.seconds << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase "
                 << narrow.name() << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size()
                 << " clips)\n"
-                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics);
+                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics) << motion;
         });
     });
 }

@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "mobb/crowd/crowd_export.h"
+#include "mobb/crowd/motion_metrics.h"
 
 namespace mobb::app {
 
@@ -95,11 +96,11 @@ void run_export(const ExportArgs& a, std::ostream& out) {
         for (std::size_t k = 0; k < scene.skeletons.size(); ++k) agents.push_back(o.agent_begin + int(k));
         const auto k0 = std::int64_t(std::llround(scene.start / record.dt));
         const auto k1 = k0 + std::int64_t(std::llround((scene.frames - 1) * scene.dt / record.dt)) + 1;
-        const crowd::PoseJumps j = crowd::pose_jumps(*poser, agents, k0, k1);
+        const crowd::MotionMetrics j = crowd::motion_metrics(*poser, agents, k0, k1).blended;
         out << std::setprecision(4)
-            << "pose jumps p99 (largest joint move relative to the root per frame, m): " << j.p99_start << " at "
-            << j.starts << " clip starts, " << j.p99_within << " within clips (" << j.within << " frames), ratio "
-            << (j.p99_within > 0 ? j.p99_start / j.p99_within : 0.0) << "\n";
+            << "pose jumps p99 (largest joint move relative to the root per frame, m): " << j.jump_start.p99 << " at "
+            << j.jump_start.count << " clip starts, " << j.jump_within.p99 << " within clips (" << j.jump_within.count
+            << " frames), ratio " << j.jump_ratio() << "\n";
     }
 }
 

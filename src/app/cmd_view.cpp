@@ -203,11 +203,13 @@ void add_render(CLI::App& app, int& exit_code) {
         std::vector<std::string> inputs, picks, panels;
         int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
         double time = -1, window = -1;
-        bool ui = false, help = false, bench = false, top = false, no_msaa = false;
+        bool ui = false, help = false, bench = false, top = false, no_msaa = false, bodies = false;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("SCENE_OR_FILES", a->inputs, "A scene (.json) or clip files: BVH, glTF, FBX, ...");
     cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
+    cmd->add_flag("--bodies", a->bodies,
+                  "Crowd agents as bodies, a capsule per bone, not lines (the scene's layers.bodies; Scene panel)");
     cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--window", a->window,
@@ -273,6 +275,7 @@ void add_render(CLI::App& app, int& exit_code) {
                 apply_colouring(s, a->disk_colour, a->box_colour);
                 if (a->window >= 0) s.scene.window = a->window;
                 if (a->no_msaa) s.scene.multisample = false;
+                if (a->bodies) s.scene.layers.bodies = true;
                 if (a->top) {
                     s.camera.top();
                     viewer::frame_all(s, aspect(w, h));
@@ -296,6 +299,7 @@ void add_render(CLI::App& app, int& exit_code) {
             apply_colouring(s, a->disk_colour, a->box_colour);
             if (a->window >= 0) s.scene.window = a->window;
             if (a->no_msaa) s.scene.multisample = false;
+            if (a->bodies) s.scene.layers.bodies = true;
             if (a->bench) {
                 const viewer::BenchResult r = viewer::bench_headless(s, w, h, a->bench_frames);
                 print_bench(out, std::to_string(s.clips.size()) + " clips", r, w, h);

@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mobb/crowd/metrics.h"
+#include "mobb/crowd/motion_metrics.h"
 #include "targets.h"
 
 namespace mobb::bench {
@@ -24,6 +26,10 @@ struct CrowdQualityOptions {
     };
     std::vector<Wander> wander = {{100, 30, 40, 120}, {1000, 94.9, 126.5, 120}, {10000, 300, 400, 60}};
     int threads = 1;  ///< per run (CD cost is measured on one thread)
+    /// Motion metrics (motion_metrics.h: joint jumps and foot sliding, blended and raw) for runs of at most
+    /// this many agents: they pose every agent at every frame from the mocap (about 10 s for 1,000 agents x
+    /// 120 s on 2 threads; bench/results/crowd.md). 0: none.
+    int motion_agents = 1000;
     /// CD microseconds per agent per simulated second of the crowd before the escapes, MOBB tree, at
     /// 10,000 agents on this machine (bench/results/README.md); the cost target is at most twice it.
     double baseline_us = 3.77;
@@ -36,6 +42,7 @@ struct WanderRow {
     crowd::CrowdMetrics metrics;
     std::uint64_t escapes = 0;
     double cd_us_per_agent_second = 0;
+    std::optional<crowd::CrowdMotion> motion;
 };
 
 struct ScenarioRow {
@@ -44,6 +51,7 @@ struct ScenarioRow {
     double time_limit = 0;
     std::uint64_t seed = 0;
     crowd::CrowdMetrics metrics;
+    std::optional<crowd::CrowdMotion> motion;
 };
 
 struct CrowdQualityTable {

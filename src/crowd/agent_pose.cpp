@@ -168,14 +168,17 @@ bool CrowdPoser::raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>&
     return true;
 }
 
-bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) {
+bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) { return pose(agent, k, out, c_); }
+
+bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw_out) {
     const MotionGraph& g = sources_->graph();
     if (agent < 0 || std::size_t(agent) >= record_.tracks.size() || k < 0 || k >= record_.frames) return false;
     const std::int64_t last = last_frame(record_, g, agent);
     if (last < 0) return false;
     k = std::min(k, last);
     AgentClipAt at;
-    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, out)) return false;
+    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, raw_out)) return false;
+    out = raw_out;
     const AgentTrack& track = record_.tracks[std::size_t(agent)];
     if (!(blend_.window > 0)) return true;
     const double window = blend_.window / record_.dt;  // frames
@@ -227,49 +230,6 @@ bool CrowdPoser::pose_at(int agent, double t, std::vector<glm::dvec3>& out) {
     if (!pose(agent, k, out) || !pose(agent, k + 1, next)) return false;
     for (std::size_t j = 0; j < out.size(); ++j) out[j] += u * (next[j] - out[j]);
     return true;
-}
-
-namespace {
-double p99(std::vector<double>& v) {
-    if (v.empty()) return 0;
-    const std::size_t n = std::min(v.size() - 1, std::size_t(std::ceil(0.99 * double(v.size()))) - 1);
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(n), v.end());
-    return v[n];
-}
-}  // namespace
-
-PoseJumps pose_jumps(CrowdPoser& poser, const std::vector<int>& agents, std::int64_t begin, std::int64_t end) {
-    const Record& r = poser.record();
-    std::vector<double> starts, within;
-    std::vector<glm::dvec3> a, b;
-    for (int agent : agents) {
-        std::int64_t next_start = -1;
-        std::size_t c = 0;
-        const auto& clips = r.tracks.at(std::size_t(agent)).clips;
-        bool have = false;
-        for (std::int64_t k = std::max<std::int64_t>(begin, 0); k < std::min(end, r.frames); ++k) {
-            while (c < clips.size() && clips[c].start < k) ++c;
-            next_start = c < clips.size() ? clips[c].start : -1;
-            if (!poser.pose(agent, k, b)) {
-                have = false;
-                continue;
-            }
-            if (have) {
-                double jump = 0;
-                for (std::size_t j = 1; j < b.size(); ++j)
-                    jump = std::max(jump, glm::length((b[j] - b[0]) - (a[j] - a[0])));
-                (k == next_start ? starts : within).push_back(jump);
-            }
-            std::swap(a, b);
-            have = true;
-        }
-    }
-    PoseJumps out;
-    out.starts = starts.size();
-    out.within = within.size();
-    out.p99_start = p99(starts);
-    out.p99_within = p99(within);
-    return out;
 }
 
 }  // namespace mobb::crowd

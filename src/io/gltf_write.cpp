@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include "mobb/io/capsule.h"
 #include "mobb/io/export.h"
 
 namespace mobb::io {
@@ -96,7 +97,7 @@ private:
     tinygltf::Model model_;
 };
 
-/// Triangles of skinned capsules, in the rest pose.
+/// Triangles of skinned capsules (capsule.h), in the rest pose.
 struct BodyMesh {
     std::vector<glm::vec3> positions, normals;
     std::vector<std::array<std::uint16_t, 4>> joints;
@@ -105,44 +106,17 @@ struct BodyMesh {
 
     /// A capsule from joint p at a to joint j at b (glTF coordinates), weights moving from p to j along it.
     void capsule(const glm::vec3& a, const glm::vec3& b, int p, int j) {
-        const glm::vec3 d = b - a;
-        const float len = glm::length(d);
-        if (len < 1e-4f) return;
-        const glm::vec3 axis = d / len;
-        const glm::vec3 other = std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-        const glm::vec3 u = glm::normalize(glm::cross(axis, other)), v = glm::cross(axis, u);
-        const float rad = std::clamp(0.25f * len, 0.01f, 0.06f);
-        // Rings along the axis: (offset from a, ring radius); the ends are rounded.
-        const std::array<std::array<float, 2>, 6> rings = {{{-rad, 0},
-                                                            {-0.7f * rad, 0.7f * rad},
-                                                            {0, rad},
-                                                            {len, rad},
-                                                            {len + 0.7f * rad, 0.7f * rad},
-                                                            {len + rad, 0}}};
-        constexpr int kSides = 8;
-        const std::uint32_t base = std::uint32_t(positions.size());
-        for (const auto& ring : rings) {
-            const float s = std::clamp(ring[0] / len, 0.0f, 1.0f);
-            for (int k = 0; k < kSides; ++k) {
-                const float ang = 6.2831853f * float(k) / kSides;
-                const glm::vec3 radial = std::cos(ang) * u + std::sin(ang) * v;
-                const glm::vec3 centre = a + ring[0] * axis;
-                positions.push_back(centre + ring[1] * radial);
-                glm::vec3 n = ring[1] * radial + (ring[0] < 0 ? ring[0] : ring[0] > len ? ring[0] - len : 0.0f) * axis;
-                normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : axis);
-                // Slots of weight 0 name joint 0, as glTF-Validator asks.
-                joints.push_back({std::uint16_t(s < 1 ? p : 0), std::uint16_t(s > 0 ? j : 0), 0, 0});
-                weights.emplace_back(1.0f - s, s, 0.0f, 0.0f);
-            }
+        CapsuleMesh c;
+        add_capsule(c, a, b, capsule_radius(glm::length(b - a)));
+        const auto base = std::uint32_t(positions.size());
+        positions.insert(positions.end(), c.positions.begin(), c.positions.end());
+        normals.insert(normals.end(), c.normals.begin(), c.normals.end());
+        for (float s : c.along) {
+            // Slots of weight 0 name joint 0, as glTF-Validator asks.
+            joints.push_back({std::uint16_t(s < 1 ? p : 0), std::uint16_t(s > 0 ? j : 0), 0, 0});
+            weights.emplace_back(1.0f - s, s, 0.0f, 0.0f);
         }
-        for (std::uint32_t r = 0; r + 1 < rings.size(); ++r)
-            for (std::uint32_t k = 0; k < kSides; ++k) {
-                const std::uint32_t k1 = (k + 1) % kSides;
-                const std::uint32_t a0 = base + r * kSides + k, a1 = base + r * kSides + k1;
-                const std::uint32_t b0 = a0 + kSides, b1 = a1 + kSides;
-                if (rings[r][1] > 0) indices.insert(indices.end(), {a0, b0, a1});
-                if (rings[r + 1][1] > 0) indices.insert(indices.end(), {a1, b0, b1});
-            }
+        for (std::uint32_t i : c.indices) indices.push_back(base + i);
     }
 };
 

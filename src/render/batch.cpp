@@ -31,6 +31,14 @@ void Batch::line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color)
     dirty_ = true;
 }
 
+void Batch::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec4& ca,
+                     const glm::vec4& cb, const glm::vec4& cc) {
+    vertices_.push_back({a, ca});
+    vertices_.push_back({b, cb});
+    vertices_.push_back({c, cc});
+    dirty_ = true;
+}
+
 void Batch::triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec4& color) {
     vertices_.push_back({a, color});
     vertices_.push_back({b, color});

@@ -28,6 +28,9 @@ public:
     }
     void line(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color);
     void triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec4& color);
+    /// A colour per vertex (shaded surfaces), interpolated across the triangle.
+    void triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec4& ca, const glm::vec4& cb,
+                  const glm::vec4& cc);
     void quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d, const glm::vec4& color);
     bool empty() const { return vertices_.empty(); }
 

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/geometric.hpp>
+
+#include "mobb/io/capsule.h"
+
 namespace mobb::render {
 
 int frame_at(const ClipView& clip, double t) {
@@ -37,15 +41,48 @@ void CursorLayer::skeletons(const Frame& frame) {
 void CursorLayer::draw_posed(const Frame& frame, const DrawContext& ctx) {
     if (!frame.layers.skeletons || frame.posed.empty()) return;
     posed_.clear();
+    bodies_.clear();
     for (const PosedSkeleton& p : frame.posed)
         if (!p.joints.empty() && p.parents && p.parents->size() == p.joints.size())
-            joints(posed_, p, frame);
+            frame.layers.bodies ? body(bodies_, p, frame) : joints(posed_, p, frame);
         else if (p.animation && p.frame >= 0 && p.frame < p.animation->frames())
             skeleton(posed_, *p.animation, p.up, p.frame, Rigid2::of(p.place), p.floor, frame, p.color);
     ctx.use(*ctx.color);
+    if (!bodies_.empty()) {
+        // Over the stacks like the lines, but solid among themselves: a fresh depth buffer for the bodies.
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        bodies_.draw();
+        glDisable(GL_DEPTH_TEST);
+    }
     glLineWidth(2.0f);
     posed_.draw();
     glLineWidth(1.0f);
+}
+
+void CursorLayer::body(Batch& out, const PosedSkeleton& p, const Frame& frame) {
+    const double base = frame.cursor * frame.time_scale;
+    auto at = [&](std::size_t j) {
+        const glm::dvec3& g = p.joints[j];
+        return glm::vec3(float(g.x), float(base + g.z * frame.skeleton_scale), float(-g.y));
+    };
+    io::CapsuleMesh mesh;
+    for (std::size_t j = 0; j < p.joints.size(); ++j) {
+        const int parent = (*p.parents)[j];
+        if (parent < 0) continue;
+        const glm::vec3 a = at(std::size_t(parent)), b = at(j);
+        io::add_capsule(mesh, a, b, io::capsule_radius(glm::length(b - a)));
+    }
+    // One light from above and in front (GL y up), and some ambient, computed per vertex: the colour
+    // shader has no lighting of its own.
+    const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.6f));
+    std::vector<glm::vec4> shade(mesh.normals.size());
+    for (std::size_t v = 0; v < shade.size(); ++v)
+        shade[v] = glm::vec4(p.color * (0.45f + 0.75f * std::max(0.0f, glm::dot(mesh.normals[v], light))), 1.0f);
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+        out.triangle(mesh.positions[a], mesh.positions[b], mesh.positions[c], shade[a], shade[b], shade[c]);
+    }
 }
 
 void CursorLayer::skeleton(Batch& out, const io::Animation& anim, io::UpAxis up, int f, const Rigid2& m, double floor,

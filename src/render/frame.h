@@ -65,6 +65,7 @@ struct Layers {
     int levels = 1;         ///< how many levels from `level` down are drawn
     bool cursor = true;     ///< the time-cursor plane
     bool skeletons = true;  ///< skeletons at the cursor time
+    bool bodies = false;    ///< posed skeletons (crowd agents) as shaded capsules per bone (io/capsule.h), not lines
     bool trace = true;      ///< the current trace step
     DiskColour disk_colour = DiskColour::Clip;
     BoxColour box_colour = BoxColour::Level;

@@ -157,7 +157,7 @@ SceneClip clip_of(const json& j, const std::string& where) {
 void layers_of(const json& j, const std::string& where, render::Layers& l) {
     Reader r(j, where,
              {"grid", "labels", "disks", "disks_translucent", "boxes", "box_faces", "all_levels", "level", "levels",
-              "cursor", "skeletons", "trace", "disk_colour", "box_colour", "colour_bar"});
+              "cursor", "skeletons", "bodies", "trace", "disk_colour", "box_colour", "colour_bar"});
     l.grid = r.boolean("grid", l.grid);
     l.labels = r.boolean("labels", l.labels);
     l.disks = r.boolean("disks", l.disks);
@@ -169,6 +169,7 @@ void layers_of(const json& j, const std::string& where, render::Layers& l) {
     l.levels = r.integer("levels", l.levels, 1, 64);
     l.cursor = r.boolean("cursor", l.cursor);
     l.skeletons = r.boolean("skeletons", l.skeletons);
+    l.bodies = r.boolean("bodies", l.bodies);
     l.trace = r.boolean("trace", l.trace);
     try {
         if (r.has("disk_colour"))
@@ -326,6 +327,7 @@ json scene_json(const Scene& s) {
                 {"levels", l.levels},
                 {"cursor", l.cursor},
                 {"skeletons", l.skeletons},
+                {"bodies", l.bodies},
                 {"trace", l.trace},
                 {"disk_colour", to_string(l.disk_colour)},
                 {"box_colour", to_string(l.box_colour)},

@@ -63,6 +63,7 @@ void layer_checkboxes(State& s) {
     ImGui::Checkbox("skeletons", &l.skeletons);
     ImGui::SameLine();
     ImGui::Checkbox("trace", &l.trace);
+    ImGui::Checkbox("skeletons as bodies", &l.bodies);  // crowd agents: a capsule per bone
 }
 
 void camera_buttons(Ui& ui) {

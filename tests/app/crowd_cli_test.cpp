@@ -9,6 +9,7 @@
 
 #include "files.h"
 #include "mobb/crowd/record.h"
+#include "mobb/io/load.h"
 #include "query_set.h"
 #include "run.h"
 
@@ -75,6 +76,33 @@ TEST(CrowdCli, CrowdPrintsSummaryAndRecord) {
     EXPECT_NE(r.out.find("0 outside fallbacks"), std::string::npos) << r.out;
     EXPECT_EQ(crowd::load_record(rec).tracks.size(), 10u);
     std::remove(rec.c_str());
+}
+
+// The motion metrics pose every agent from the mocap: printed and recorded when it is there, left out
+// with the reason when a source cannot be read, and skipped on request - the run itself succeeds.
+TEST(CrowdCli, MotionMetricsNeedTheMocap) {
+    const std::string rec = temp_file("motion.json"), graph = temp_file("no_mocap_graph.json");
+    nlohmann::json g = nlohmann::json::parse(test::slurp(kGraph));
+    for (auto& source : g["sources"]) source["file"] = "no/such/folder/" + source["file"].get<std::string>();
+    std::ofstream(graph) << g.dump();
+    const std::string args = " --agents 4 --seconds 3 --world 10x10 --record " + rec;
+    const Result missing = run("crowd --quiet --graph " + graph + args);
+    ASSERT_EQ(missing.code, 0) << missing.err;
+    EXPECT_NE(missing.out.find("motion: not measured ("), std::string::npos) << missing.out;
+    EXPECT_FALSE(nlohmann::json::parse(test::slurp(rec))["metrics"].contains("motion"));
+    const Result skipped = run("crowd --quiet --no-motion --graph " + kGraph + args);
+    ASSERT_EQ(skipped.code, 0) << skipped.err;
+    EXPECT_EQ(skipped.out.find("\nmotion"), std::string::npos) << skipped.out;  // the graph is "locomotion"
+    if (!io::data_dir().empty()) {
+        const Result r = run("crowd --quiet --graph " + kGraph + args);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("blended 0.25 s: joint jump median / p99"), std::string::npos) << r.out;
+        const nlohmann::json m = nlohmann::json::parse(test::slurp(rec))["metrics"]["motion"];
+        EXPECT_EQ(m["foot_contact"]["height"].get<double>(), 0.05);
+        EXPECT_GT(m["raw"]["jump_start"]["p99"].get<double>(), m["blended"]["jump_start"]["p99"].get<double>());
+    }
+    std::remove(rec.c_str());
+    std::remove(graph.c_str());
 }
 
 // The record file is the same, byte for byte, for another run and another thread count (wall times
@@ -145,7 +173,7 @@ TEST(CrowdCli, BenchCrowdWritesItsTables) {
     const Result r = run("bench crowd --quick --quiet --graph " + kGraph + " --json " + json + " --png " + png);
     ASSERT_EQ(r.code, 0) << r.err;
     for (const char* part :
-         {"### Wandering crowds", "### Scenarios", "Targets (issues 10 and 28)", "fallbacks <= 0.5 %",
+         {"### Wandering crowds", "### Scenarios", "Targets (issues 10, 28 and 30)", "### Motion", "fallbacks <= 0.5 %",
           "time to goal <= 1.5x the straight line", "time to goal / straight at walking speed"})
         EXPECT_NE(r.out.find(part), std::string::npos) << part;
     const nlohmann::json j = nlohmann::json::parse(test::slurp(json));

@@ -10,11 +10,13 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "data.h"
 #include "files.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/crowd_export.h"
+#include "mobb/crowd/motion_metrics.h"
 #include "mobb/crowd/narrow_phase.h"
 
 namespace mobb::crowd {
@@ -90,14 +92,55 @@ TEST(AgentPose, BlendingRemovesThePopsAtClipStarts) {
     PoseBlend off;
     off.window = 0;
     CrowdPoser raw = poser(off), blended = poser();
-    const PoseJumps before = pose_jumps(raw, agents, 0, record().frames);
-    const PoseJumps after = pose_jumps(blended, agents, 0, record().frames);
-    EXPECT_GT(before.starts, 200u);
-    EXPECT_EQ(before.starts, after.starts);
+    const CrowdMotion both = motion_metrics(blended, agents, 0, record().frames, 2);
+    const MotionMetrics before = motion_metrics(raw, agents, 0, record().frames).blended, after = both.blended;
+    // One posing gives the raw clips' metrics too, as a poser without blending does.
+    EXPECT_EQ(both.raw.jump_start.p99, before.jump_start.p99);
+    EXPECT_EQ(both.raw.jump_within.median, before.jump_within.median);
+    EXPECT_EQ(both.raw.sliding[0].contact, before.sliding[0].contact);
+    EXPECT_GT(before.jump_start.count, 200u);
+    EXPECT_EQ(before.jump_start.count, after.jump_start.count);
+    EXPECT_EQ(before.jump_within.count, after.jump_within.count);
     // The raw clips jump at their starts; blended, a start moves no more than a frame within a clip
     // (issue 30's target: p99 at starts <= 1.2 x p99 within).
-    EXPECT_GT(before.p99_start, 2.0 * before.p99_within);
-    EXPECT_LE(after.p99_start, 1.2 * after.p99_within) << after.p99_start << " vs " << after.p99_within;
+    EXPECT_GT(before.jump_start.p99, 2.0 * before.jump_within.p99);
+    EXPECT_LE(after.jump_start.p99, 1.2 * after.jump_within.p99)
+        << after.jump_start.p99 << " vs " << after.jump_within.p99;
+    EXPECT_LE(after.jump_start.median, after.jump_start.p99);
+}
+
+TEST(MotionMetrics, SpreadIsTheMedianAndTheP99) {
+    std::vector<double> v;
+    for (int i = 100; i >= 1; --i) v.push_back(i);
+    const Spread s = spread_of(v);
+    EXPECT_EQ(s.count, 100u);
+    EXPECT_EQ(s.median, 50);
+    EXPECT_EQ(s.p99, 99);
+    std::vector<double> none;
+    EXPECT_EQ(spread_of(none).p99, 0);
+}
+
+// Walking clips plant their feet: a toe is in contact for part of each stride and then barely moves;
+// the record's metrics carry both kinds of poses.
+TEST(MotionMetrics, WalkingFeetArePlantedInContact) {
+    MOBB_REQUIRE_MOCAP();
+    std::vector<int> agents;
+    for (int a = 0; a < int(record().tracks.size()); ++a) agents.push_back(a);
+    CrowdPoser p = poser();
+    const CrowdMotion m = motion_metrics(p, agents, 0, record().frames, 2);
+    ASSERT_TRUE(m.raw.feet);
+    const FootSliding& walk = m.raw.sliding[std::size_t(ClipKind::Walk)];
+    ASSERT_GT(walk.steps, 1000u);
+    EXPECT_GT(double(walk.contact), 0.2 * double(walk.steps));
+    EXPECT_LT(double(walk.contact), 0.8 * double(walk.steps));
+    EXPECT_LT(walk.speed.median, 0.2);  // m/s: planted, where a walker's root moves at about 1 m/s
+    EXPECT_LT(walk.skate_share, 0.3);
+    EXPECT_GT(walk.speed.p99, FootContact::kSkateSpeed);  // a toe passing low in swing counts too (GMD's rule)
+    const auto j = nlohmann::json::parse(with_motion("{\"passed\": true}", m));
+    EXPECT_TRUE(j["passed"].get<bool>());
+    EXPECT_EQ(j["motion"]["joints"].get<int>(), p.rig().size());
+    EXPECT_EQ(j["motion"]["raw"]["jump_start"]["count"].get<std::size_t>(), m.raw.jump_start.count);
+    EXPECT_TRUE(j["motion"]["blended"]["foot_sliding"].contains("walk"));
 }
 
 TEST(AgentPose, TimesBetweenFramesInterpolate) {

@@ -2,11 +2,13 @@
 // compares it with tests/golden/NAME.png. MOBB_UPDATE_GOLDENS=1 rewrites the goldens instead
 // (cmake --build BUILD --target update_goldens).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "crowd_view.h"
 #include "headless.h"
@@ -275,6 +277,79 @@ TEST(Golden, CrowdSkeletons) {
     viewer::frame_all(s, 800.0f / 500.0f);
     check_image("crowd_skeletons_top", viewer::render_headless(s, {800, 500, false}));
     EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// Looks at agent `agent` at the cursor from `distance` metres: its body fills the image.
+void look_at_agent(State& s, int agent, float distance) {
+    const auto& sample = s.crowd->record.tracks[std::size_t(agent)].samples;
+    const auto k = std::size_t(std::floor(s.scene.cursor / s.crowd->record.dt + 1e-9));
+    const auto& at = sample[std::min(k, sample.size() - 1)];
+    s.camera.target = glm::vec3(float(at[1]), float(s.scene.cursor * s.scene.time_scale + 0.8), float(-at[2]));
+    s.camera.distance = distance;
+    s.camera.pitch = 15.0f;
+}
+
+/// Bodies (Layers::bodies): a shaded capsule per bone, so the crowd reads as people; near one agent,
+/// a thin slice of the stacks around the cursor.
+TEST(Golden, CrowdBodies) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 800.0f / 500.0f);
+    viewer::select_choice(s, 0, -1);
+    s.scene.cursor = 3.0;
+    s.scene.window = 0.3;
+    s.scene.layers.bodies = true;
+    look_at_agent(s, 0, 9.0f);
+    check_image("crowd_bodies", viewer::render_headless(s, {800, 500, false}));
+    EXPECT_EQ(viewer::skeleton_problem(*s.crowd), "");
+}
+
+/// The clip start whose blend moves a pose the most two frames in (of the 7.5 a 0.25 s window lasts):
+/// agent and frame, and that largest joint offset between the blended and the raw pose (metres).
+struct BlendMoment {
+    int agent = -1;
+    std::int64_t frame = 0;
+    double offset = 0;
+};
+BlendMoment largest_blend(crowd::CrowdPoser& blended, crowd::CrowdPoser& raw) {
+    BlendMoment best;
+    const crowd::Record& r = blended.record();
+    std::vector<glm::dvec3> a, b;
+    for (int agent = 0; agent < int(r.tracks.size()); ++agent)
+        for (std::size_t c = 1; c < r.tracks[std::size_t(agent)].clips.size(); ++c) {
+            const std::int64_t k = r.tracks[std::size_t(agent)].clips[c].start + 2;
+            if (!blended.pose(agent, k, a) || !raw.pose(agent, k, b)) continue;
+            for (std::size_t j = 0; j < a.size(); ++j)
+                if (glm::length(a[j] - b[j]) > best.offset) best = {agent, k, glm::length(a[j] - b[j])};
+        }
+    return best;
+}
+
+/// A blend under way: the agent whose clip start is eased the most, two frames in, blended (what the
+/// viewer shows) and the raw clip at the same moment (the pose it eases into) - the pair shows the offset.
+TEST(Golden, CrowdBlendUnderWay) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
+    State s = viewer::load_crowd_state(record, 800.0f / 500.0f);
+    viewer::select_choice(s, 0, -1);
+    ASSERT_FALSE(viewer::agent_skeletons(*s.crowd, 0.0, {}).empty()) << viewer::skeleton_problem(*s.crowd);
+    crowd::PoseBlend off;
+    off.window = 0;
+    auto raw = std::make_shared<crowd::CrowdPoser>(s.crowd->record, s.crowd->poses, crowd::RigJoints::All, off);
+    const BlendMoment m = largest_blend(*s.crowd->poser, *raw);
+    ASSERT_GE(m.agent, 0);
+    EXPECT_GT(m.offset, 0.1) << "agent " << m.agent << " frame " << m.frame;  // visibly under way
+    s.scene.cursor = (double(m.frame) + 0.5) * s.crowd->record.dt;
+    s.scene.window = 0.3;
+    s.scene.layers.bodies = true;
+    look_at_agent(s, m.agent, 4.0f);
+    const render::Image blended = viewer::render_headless(s, {400, 500, false});
+    s.crowd->poser = raw;
+    const render::Image unblended = viewer::render_headless(s, {400, 500, false});
+    check_image("crowd_blend", blended);
+    check_image("crowd_blend_raw", unblended);
 }
 
 /// Whether a query of a candidate is its clip hitting another agent's clip (one the trace can open).

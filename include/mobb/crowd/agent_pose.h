@@ -101,6 +101,8 @@ public:
                PoseBlend blend = {});
     const Rig& rig() const { return rig_; }
     const Record& record() const { return record_; }
+    PoseSources& sources() const { return *sources_; }
+    const PoseBlend& blend() const { return blend_; }
     /// Joint positions of agent `agent` at global frame k: world ground coordinates (x, y, h), metres, h
     /// above the source's lowest joint (so feet stand on h = 0); out[0] is the root's ground point: the
     /// clip's path point (x, y) on the record's track, h = 0 (sources root their skeletons at the hips or
@@ -108,6 +110,9 @@ public:
     /// An agent past the end of its clips (it left the run) keeps its last pose. False for an agent or frame
     /// outside the record.
     bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out);
+    /// Both at once (one posing for the two): `out` as pose() gives it, `raw` the same frame unblended
+    /// (as a poser with window 0 gives it).
+    bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw);
     /// At time t (seconds, 0 <= t <= frames * dt): linear between the poses of the frames around t, so a
     /// frame's own time gives that frame's pose.
     bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
@@ -121,16 +126,7 @@ private:
     std::shared_ptr<PoseSources> sources_;
     Rig rig_;
     PoseBlend blend_;
-    std::vector<glm::dvec3> a_, b_;
+    std::vector<glm::dvec3> a_, b_, c_;
 };
-
-/// Pops: per agent and frame k >= 1 the largest move of a joint relative to the root between frames k - 1
-/// and k (metres), split into frames where a clip starts and frames within clips; p99 of each.
-struct PoseJumps {
-    double p99_start = 0, p99_within = 0;
-    std::size_t starts = 0, within = 0;
-};
-PoseJumps pose_jumps(CrowdPoser& poser, const std::vector<int>& agents, std::int64_t frame_begin,
-                     std::int64_t frame_end);
 
 }  // namespace mobb::crowd
