@@ -1,8 +1,10 @@
 // mobb graph build / crowd: the crowd layer's subcommands (src/crowd).
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "cli.h"
@@ -145,17 +147,28 @@ void add_crowd(CLI::App& app, int& exit_code) {
             const bool trees = cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit");
             const crowd::NarrowPhase narrow =
                 trees ? crowd::NarrowPhase::trees(g, tree->options()) : crowd::NarrowPhase::sweep(g);
+            // An HDF5 record streams as the run goes; a JSON one (small runs) is written at the end. Without a
+            // record the run streams to nowhere, keeping only its summary and metrics: memory stays flat.
+            const bool at_end = !record->empty() && !crowd::is_h5_record(*record);
+            crowd::RecordSink nowhere;
+            std::unique_ptr<crowd::H5RecordWriter> writer;
+            if (!record->empty() && !at_end) writer = std::make_unique<crowd::H5RecordWriter>(*record, file, s.name);
+            if (!at_end) opt.sink = writer ? writer.get() : &nowhere;
             crowd::CrowdRun run;
             try {
                 run = crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
             } catch (const std::invalid_argument& e) {
+                if (writer) writer.reset(), std::remove(record->c_str());  // bad options: no frame, no file
                 if (scenario->empty()) throw;
                 throw InputError(*scenario + ": " + e.what());  // its agents cannot start where it puts them
             }
             run.record.graph = file;
             run.record.scenario = s.name;
-            const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);
-            if (!record->empty())
+            const crowd::CrowdMetrics metrics =
+                run.metrics ? *run.metrics : crowd::crowd_metrics(run.record, g, opt.goal_radius);
+            if (writer)
+                writer->finish(run.record, crowd::summary_json(run.summary), crowd::metrics_json(metrics));
+            else if (at_end)
                 crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary),
                                          crowd::metrics_json(metrics));
             if (!s.name.empty()) out << "scenario " << s.name << ": ";

@@ -48,9 +48,16 @@ Id open_attribute(hid_t object, const char* name) {
     return Id(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
 }
 
+// Removes attribute `name` if the object has one, so that it can be written anew.
+void replace(hid_t object, const char* name) {
+    if (H5Aexists(object, name) > 0 && H5Adelete(object, name) < 0)
+        throw Error(std::string("attribute ") + name + ": cannot write");
+}
+
 }  // namespace
 
 void write_text(hid_t object, const char* name, const std::string& text) {
+    replace(object, name);
     const Id type = text_type();
     const Id space(H5Screate(H5S_SCALAR), H5Sclose);
     const Id a(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
@@ -60,6 +67,7 @@ void write_text(hid_t object, const char* name, const std::string& text) {
 
 template <class T>
 void write_numbers(hid_t object, const char* name, const std::vector<T>& values) {
+    replace(object, name);
     const hsize_t n = values.size();
     const Id space(values.size() == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose);
     const Id a(H5Acreate2(object, name, native<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
@@ -121,7 +129,7 @@ Appender::Appender(hid_t file, const std::string& path, hid_t type, const Layout
     if (!set_.valid()) throw Error(path + ": cannot create");
 }
 
-void Appender::append(const void* data, hsize_t rows) {
+void Appender::append(const void* data, hsize_t rows, bool flush) {
     if (rows == 0) return;
     std::vector<hsize_t> dims{rows_ + rows}, start{rows_}, counts{rows};
     for (hsize_t d : layout_.inner) dims.push_back(d), start.push_back(0), counts.push_back(d);
@@ -132,7 +140,7 @@ void Appender::append(const void* data, hsize_t rows) {
     H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
     const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
     if (H5Dwrite(set_.get(), type_, mem.get(), file_space.get(), H5P_DEFAULT, data) < 0 ||
-        H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0)
+        (flush && H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0))
         throw Error(block + ": cannot write");
     rows_ += rows;
 }
@@ -159,7 +167,8 @@ void write_rows(hid_t file, const std::string& path, const std::vector<T>& data,
 }
 
 template <class T>
-std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner) {
+std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
+                                        hsize_t limit) {
     if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
     const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
     if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
@@ -177,6 +186,7 @@ std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, con
     hsize_t block = dims[0];
     if (H5Pget_layout(dcpl.get()) == H5D_CHUNKED && H5Pget_chunk(dcpl.get(), rank, chunk.data()) == rank)
         block = std::max<hsize_t>(1, chunk[0]);
+    dims[0] = std::min(dims[0], limit);
     hsize_t size = 1;
     for (hsize_t d : inner) size *= d;
     if (dims[0] > (hsize_t(1) << 40) / std::max<hsize_t>(1, size)) throw Error(path + ": too large");
@@ -233,7 +243,8 @@ template void write_rows(hid_t, const std::string&, hsize_t, const Layout&,
                          const std::function<void(hsize_t, hsize_t, double*)>&);
 template void write_rows(hid_t, const std::string&, const std::vector<std::int64_t>&, const Layout&);
 template void write_rows(hid_t, const std::string&, const std::vector<double>&, const Layout&);
-template std::optional<std::vector<std::int64_t>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
-template std::optional<std::vector<double>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
+template std::optional<std::vector<std::int64_t>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&,
+                                                            hsize_t);
+template std::optional<std::vector<double>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t);
 
 }  // namespace mobb::crowd::h5
