@@ -225,7 +225,12 @@ H5RecordWriter::H5RecordWriter(const std::string& file, const std::string& graph
     impl_->graph = graph;
     impl_->scenario = scenario;
     guarded(file, [&] {
-        impl_->f = h5::Id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        // Space a block held is never given to another while the file is written: a table's last block is
+        // written again, larger, at each mark, and the file as of the last mark points at the old copy -
+        // which a kill before the next flush would otherwise find overwritten.
+        const h5::Id fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+        H5Pset_file_space_strategy(fcpl.get(), H5F_FSPACE_STRATEGY_NONE, 0, 1);
+        impl_->f = h5::Id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT), H5Fclose);
         if (!impl_->f.valid()) throw h5::Error("cannot create");
         h5::write_numbers<std::int64_t>(impl_->f.get(), "complete", {0});
         impl_->tables = std::make_unique<Tables>(impl_->f.get());
