@@ -90,14 +90,16 @@ template <class T>
 void write_rows(hid_t file, const std::string& path, const std::vector<T>& data, const Layout& layout);
 
 /// Reads dataset `path` whole - or its first `limit` rows - block by block (an error names the block);
-/// checks its shape against `inner` (the dims after the rows). Nothing when the file has no such dataset.
+/// checks its shape against `inner` (the dims after the rows) and its chunks against the writer's, `block`
+/// rows (libhdf5 1.10 copies a chunk as large as its layout says, whatever the chunk holds). Nothing when
+/// the file has no such dataset.
 template <class T>
 std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
-                                        hsize_t limit = ~hsize_t(0));
+                                        hsize_t limit = ~hsize_t(0), hsize_t block = 4096);
 
 /// Rows first .. first + count - 1 of dataset `path` (shape checked as read_rows does), read alone.
 template <class T>
 std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
-                           hsize_t count);
+                           hsize_t count, hsize_t block);
 
 }  // namespace mobb::crowd::h5

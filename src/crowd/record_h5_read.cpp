@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "frame_stream.h"
 #include "h5.h"
 #include "mobb/util/json_text.h"
 #include "record_json.h"
@@ -168,8 +169,9 @@ I left_frames(const D& samples, std::int64_t frames, std::size_t agents) {
 }
 
 J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held) {
-    const auto read = h5::read_rows<double>(f, "/tracks/samples", {hsize_t(agents), 4},
-                                            held.complete ? ~hsize_t(0) : hsize_t(frames));  // those of the mark
+    const auto read =
+        h5::read_rows<double>(f, "/tracks/samples", {hsize_t(agents), 4}, held.complete ? ~hsize_t(0) : hsize_t(frames),
+                              hsize_t(block_frames(agents)));  // an incomplete file: the frames of the mark
     if (!read) throw h5::Error("/tracks/samples: missing");
     const D& samples = *read;
     if (std::int64_t(samples.size() / (4 * std::max<std::size_t>(1, agents))) != frames)
@@ -388,7 +390,7 @@ SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::in
         w.first = std::clamp<std::int64_t>(first, 0, w.frames);
         w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
         const D v = h5::read_window<double>(f.get(), "/tracks/samples", {hsize_t(agents), 4}, hsize_t(w.first),
-                                            hsize_t(w.last - w.first));
+                                            hsize_t(w.last - w.first), hsize_t(block_frames(w.agents)));
         w.samples.resize(v.size() / 4);
         for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
         w.summary_json = j["summary"].dump();
