@@ -22,6 +22,7 @@ py::dict read_record(const std::string& file, std::int64_t first, const std::opt
     } catch (const std::runtime_error& e) {
         throw std::invalid_argument(e.what());  // ValueError, with the message `mobb` prints
     }
+    if (!w.note.empty()) py::module_::import("warnings").attr("warn")(w.note);  // read up to its last mark
     const auto frames = py::ssize_t(w.last - w.first), agents = py::ssize_t(w.agents);
     py::array_t<double> samples({frames, agents, py::ssize_t(4)});
     std::copy_n(w.samples.data()->data(), w.samples.size() * 4, samples.mutable_data());
@@ -46,7 +47,8 @@ void add_record(py::module_& m) {
 of a long run comes back in the time its own size takes; a JSON record is read whole.
 
 Returns a dict: samples (frames, agents, 4) float64, each agent's disk t, x, y, r (seconds, metres) at
-frames first, first + 1, ..., NaN from the frame an agent left the run on; first (the window's first
+frames first, first + 1, ..., NaN from the frame an agent left the run on; of an incomplete HDF5 record
+(its writing stopped: killed, a full disk) the frames up to its last mark, with a warning saying so; first (the window's first
 frame), dt (seconds per frame), frames and agents (the run's), summary and metrics (dicts, as `mobb crowd`
 stores them; empty when the file has none). Raises ValueError "FILE: PLACE: message" for a file that
 cannot be read, as `mobb record convert` says it.)");

@@ -45,7 +45,8 @@ def test_a_window_of_frames(records):
 def test_h5py_reads_it(records):
     h5py = pytest.importorskip("h5py")
     with h5py.File(records["h5"], "r") as f:
-        assert f.attrs["format"] == "mobb crowd record"
+        fmt = f.attrs["format"]  # fixed-length text: bytes in h5py
+        assert (fmt.decode() if isinstance(fmt, bytes) else fmt) == "mobb crowd record"
         np.testing.assert_array_equal(f["tracks/samples"][20:30], mobb.read_record(str(records["h5"]), 20, 30)["samples"])
         assert len(f["choices/agent"]) == json.loads(records["json"].read_text())["summary"]["choice_points"]
 

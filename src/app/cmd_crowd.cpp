@@ -1,8 +1,10 @@
 // mobb graph build / crowd: the crowd layer's subcommands (src/crowd).
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "cli.h"
@@ -67,6 +69,26 @@ void add_graph(CLI::App& app, int& exit_code) {
                 << edges << " edges, " << g.transitions << " transition points, built in " << secs << " s\n";
         });
     });
+}
+
+// Runs without a record larger than this stream rather than keep their clips to pose for the motion
+// metrics (1,000 agents x 120 s take some 17 s to pose on two threads: docs/export.md).
+constexpr int kMotionAgents = 1000;
+
+// The motion metrics of a run's record (joint jumps, foot sliding; motion_metrics.h) into the record's
+// metrics JSON and the summary's text; without the motion capture, a line saying why not.
+void measure_motion(const crowd::Record& record, const crowd::MotionGraph& g, int threads, std::string& metrics_json,
+                    std::string& text) {
+    try {
+        const crowd::CrowdMotion m = crowd::crowd_motion(record, std::make_shared<const crowd::MotionGraph>(g),
+                                                         crowd::PoseBlend{}.window, threads);
+        metrics_json = crowd::with_motion(metrics_json, m);
+        text = crowd::motion_text(m);
+    } catch (const io::LoadError& e) {  // no motion capture here
+        text = std::string("motion: not measured (") + e.what() + ")\n";
+    } catch (const crowd::GraphError& e) {  // a source not as the graph was built from it
+        text = std::string("motion: not measured (") + e.what() + ")\n";
+    }
 }
 
 void add_crowd(CLI::App& app, int& exit_code) {
@@ -162,38 +184,43 @@ void add_crowd(CLI::App& app, int& exit_code) {
             const bool trees = cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit");
             const crowd::NarrowPhase narrow =
                 trees ? crowd::NarrowPhase::trees(g, tree->options()) : crowd::NarrowPhase::sweep(g);
+            // An HDF5 record streams as the run goes; a JSON one (small runs) is written at the end. Without a
+            // record the run streams to nowhere, keeping only its summary and metrics (memory stays flat) -
+            // unless its motion is measured, which poses the clips the run keeps (kMotionAgents at most).
+            const bool at_end = !record->empty() && !crowd::is_h5_record(*record);
+            const bool motion = !*no_motion && (at_end || (record->empty() && opt.agents <= kMotionAgents));
+            crowd::RecordSink nowhere;
+            std::unique_ptr<crowd::H5RecordWriter> writer;
+            if (!record->empty() && !at_end) writer = std::make_unique<crowd::H5RecordWriter>(*record, file, s.name);
+            if (!at_end && !motion) opt.sink = writer ? writer.get() : &nowhere;
             crowd::CrowdRun run;
             try {
                 run = crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
             } catch (const std::invalid_argument& e) {
+                if (writer) writer.reset(), std::remove(record->c_str());  // bad options: no frame, no file
                 if (scenario->empty()) throw;
                 throw InputError(*scenario + ": " + e.what());  // its agents cannot start where it puts them
             }
             run.record.graph = file;
             run.record.scenario = s.name;
-            const crowd::CrowdMetrics metrics = crowd::crowd_metrics(run.record, g, opt.goal_radius);
-            std::string metrics_json = crowd::metrics_json(metrics), motion;
-            if (!*no_motion) {
-                try {
-                    const crowd::CrowdMotion m =
-                        crowd::crowd_motion(run.record, std::make_shared<const crowd::MotionGraph>(g),
-                                            crowd::PoseBlend{}.window, opt.threads);
-                    metrics_json = crowd::with_motion(metrics_json, m);
-                    motion = crowd::motion_text(m);
-                } catch (const io::LoadError& e) {  // no motion capture here
-                    motion = std::string("motion: not measured (") + e.what() + ")\n";
-                } catch (const crowd::GraphError& e) {  // a source not as the graph was built from it
-                    motion = std::string("motion: not measured (") + e.what() + ")\n";
-                }
-            }
-            if (!record->empty())
+            const crowd::CrowdMetrics metrics =
+                run.metrics ? *run.metrics : crowd::crowd_metrics(run.record, g, opt.goal_radius);
+            std::string metrics_json = crowd::metrics_json(metrics), motion_text;
+            if (motion)
+                measure_motion(run.record, g, opt.threads, metrics_json, motion_text);
+            else if (!*no_motion)
+                motion_text = "motion: not measured (a streamed run keeps no clips to pose: a JSON record, or " +
+                              std::to_string(kMotionAgents) + " agents or fewer)\n";
+            if (writer)
+                writer->finish(run.record, crowd::summary_json(run.summary), metrics_json);
+            else if (at_end)
                 crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary), metrics_json);
             if (!s.name.empty()) out << "scenario " << s.name << ": ";
             out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, "
                 << opt.seconds << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase "
                 << narrow.name() << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size()
                 << " clips)\n"
-                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics) << motion;
+                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics) << motion_text;
         });
     });
 }

@@ -17,6 +17,7 @@ void add_record_commands(CLI::App& app, int& exit_code) {
     convert->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
             const crowd::RecordFile r = crowd::read_record_file(*from);
+            if (!r.note.empty()) std::cerr << r.note << "\n";
             crowd::write_record_file(*to, r.record, r.summary_json, r.metrics_json);
             out << *to << ": " << r.record.tracks.size() << " agents, " << r.record.frames << " frames, "
                 << r.record.choices.size() << " choice points\n";

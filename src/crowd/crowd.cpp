@@ -123,7 +123,7 @@ void Simulation::flush() {
 }
 
 void Simulation::log_queries(const Choice& c) {
-    const int choice = int(out_.record.choices.size());
+    const int choice = int(out_.summary.choice_points);
     for (LoggedQuery q : c.log()) {
         q.choice = choice;
         out_.queries.push_back(q);
@@ -248,10 +248,11 @@ void Simulation::commit(Choice& c) {
     cp.pruned = pairs > c.near_total() ? pairs - c.near_total() : 0;
     out_.summary.time_pairs += pairs;
     if (o_.log_queries) log_queries(c);
-    const int commit = int(out_.record.choices.size());
+    const int commit = int(out_.summary.choice_points);  // the choice points committed so far
     Agent& a = agents_[std::size_t(c.agent())];
     const BoxedClip& t = c.taken();
     a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, commit});
+    if (stream_) stream_->clip(c.agent(), a.clips.back()), a.clips.erase(a.clips.begin(), a.clips.end() - 1);
     Piece clip;
     clip.agent = c.agent();
     clip.commit = commit;
@@ -279,8 +280,8 @@ void Simulation::commit(Choice& c) {
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
-    if (o_.sink) o_.sink->choice(out_.record.choices.size(), cp);
-    if (o_.record_queries && !o_.sink) return out_.record.choices.push_back(std::move(cp));
+    if (o_.sink) return o_.sink->choice(std::size_t(commit), cp);  // streamed: the record keeps none
+    if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
     std::vector<Candidate> candidates = std::move(cp.candidates);
     out_.record.choices.push_back(std::move(cp));
@@ -337,6 +338,7 @@ void Simulation::leave(int agent, std::int64_t frame) {
     for (int id : a.reserved) released_.push_back(id);
     a.reserved.clear();
     a.plan = {};
+    if (stream_) stream_->left(agent, frame);
     if (in_waiting_[std::size_t(agent)]) wait_changes_.push_back({agent, false});
 }
 
@@ -352,9 +354,10 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
     for (const GraphClip& c : g_.clips) samples += c.path.size();
     const double expected = double(agents_.size()) *
                             (double(frames) * double(g_.clips.size()) / double(std::max<std::size_t>(1, samples)) + 1);
-    out_.record.choices.reserve(std::size_t(expected * 1.2));
+    if (!o_.sink) out_.record.choices.reserve(std::size_t(expected * 1.2));
     std::int64_t reported = -1;
     for (std::int64_t f = 0; f < frames; ++f) {
+        if (stream_) stream_->until(f);  // every agent's clips cover the frames before f
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
         if (batch.empty()) continue;
         std::sort(batch.begin(), batch.end());  // commit order: agent ids within a frame
@@ -414,7 +417,9 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     s.simulated_seconds = double(r.frames) * r.dt;
     s.threads = o_.threads;
     if (policy_->avoids()) reserve_starts();
+    if (o_.sink) start_stream();
     run_frames(progress);
+    if (stream_) return finish_stream(start, progress);
     fill_samples();
     s.seconds = since(start);
     for (const Contact& c : frame_contacts(r)) {

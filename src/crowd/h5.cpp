@@ -32,9 +32,11 @@ hid_t native<double>() {
 
 namespace {
 
-Id text_type() {
+// UTF-8 text of `size` bytes, padded with nulls.
+Id text_type(std::size_t size) {
     Id t(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(t.get(), H5T_VARIABLE);
+    H5Tset_size(t.get(), size);
+    H5Tset_strpad(t.get(), H5T_STR_NULLPAD);
     H5Tset_cset(t.get(), H5T_CSET_UTF8);
     return t;
 }
@@ -48,18 +50,41 @@ Id open_attribute(hid_t object, const char* name) {
     return Id(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
 }
 
+// Removes attribute `name` if the object has one, so that it can be written anew.
+void replace(hid_t object, const char* name) {
+    if (H5Aexists(object, name) > 0 && H5Adelete(object, name) < 0)
+        throw Error(std::string("attribute ") + name + ": cannot write");
+}
+
+// A dataset chunked as the writer chunks it: `block` rows and the whole of every inner dimension.
+void check_chunks(hid_t set, const std::string& path, const std::vector<hsize_t>& dims, hsize_t block) {
+    const Id dcpl(H5Dget_create_plist(set), H5Pclose);
+    std::vector<hsize_t> chunk(dims.size(), 0);
+    const int rank = int(dims.size());
+    bool same = H5Pget_layout(dcpl.get()) == H5D_CHUNKED && H5Pget_chunk(dcpl.get(), rank, chunk.data()) == rank &&
+                chunk[0] == block;
+    for (std::size_t k = 1; k < dims.size(); ++k) same = same && chunk[k] == dims[k];
+    if (!same) throw Error(path + ": not chunked as a record's (" + std::to_string(block) + " rows a block)");
+}
+
 }  // namespace
 
+// Text is stored fixed-length, inside the attribute: a variable-length one lives in the file's global heap,
+// and libhdf5 reads a damaged heap reference out of bounds (the record fuzzer's find), so the reader takes
+// fixed-length text alone.
 void write_text(hid_t object, const char* name, const std::string& text) {
-    const Id type = text_type();
+    replace(object, name);
+    const Id type = text_type(std::max<std::size_t>(1, text.size()));
     const Id space(H5Screate(H5S_SCALAR), H5Sclose);
     const Id a(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    const char* p = text.c_str();
-    check(a.valid() ? H5Awrite(a.get(), type.get(), &p) : -1, std::string("attribute ") + name, "write");
+    std::string padded = text;
+    padded.resize(std::max<std::size_t>(1, text.size()), '\0');
+    check(a.valid() ? H5Awrite(a.get(), type.get(), padded.data()) : -1, std::string("attribute ") + name, "write");
 }
 
 template <class T>
 void write_numbers(hid_t object, const char* name, const std::vector<T>& values) {
+    replace(object, name);
     const hsize_t n = values.size();
     const Id space(values.size() == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose);
     const Id a(H5Acreate2(object, name, native<T>(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
@@ -72,14 +97,15 @@ std::optional<std::string> read_text(hid_t object, const char* name) {
     const Id type(H5Aget_type(a.get()), H5Tclose);
     const Id space(H5Aget_space(a.get()), H5Sclose);
     const std::string place = std::string("attribute ") + name;
-    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) <= 0 ||
-        H5Sget_simple_extent_npoints(space.get()) != 1)
+    const std::size_t size = H5Tget_size(type.get());
+    if (H5Tget_class(type.get()) != H5T_STRING || H5Sget_simple_extent_npoints(space.get()) != 1)
         throw Error(place + ": expected one text");
-    const Id mem = text_type();
-    char* p = nullptr;
-    check(H5Aread(a.get(), mem.get(), &p), place, "read");
-    std::string out = p ? p : "";
-    H5free_memory(p);
+    if (H5Tis_variable_str(type.get()) != 0 || size < 1 || size > (std::size_t(1) << 26))
+        throw Error(place + ": expected a fixed-length text of at most 64 MB");
+    const Id mem = text_type(size);
+    std::string out(size, '\0');
+    check(H5Aread(a.get(), mem.get(), out.data()), place, "read");
+    out.resize(std::strlen(out.c_str()));
     return out;
 }
 
@@ -121,7 +147,7 @@ Appender::Appender(hid_t file, const std::string& path, hid_t type, const Layout
     if (!set_.valid()) throw Error(path + ": cannot create");
 }
 
-void Appender::append(const void* data, hsize_t rows) {
+void Appender::append(const void* data, hsize_t rows, bool flush) {
     if (rows == 0) return;
     std::vector<hsize_t> dims{rows_ + rows}, start{rows_}, counts{rows};
     for (hsize_t d : layout_.inner) dims.push_back(d), start.push_back(0), counts.push_back(d);
@@ -132,7 +158,7 @@ void Appender::append(const void* data, hsize_t rows) {
     H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
     const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
     if (H5Dwrite(set_.get(), type_, mem.get(), file_space.get(), H5P_DEFAULT, data) < 0 ||
-        H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0)
+        (flush && H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0))
         throw Error(block + ": cannot write");
     rows_ += rows;
 }
@@ -159,7 +185,8 @@ void write_rows(hid_t file, const std::string& path, const std::vector<T>& data,
 }
 
 template <class T>
-std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner) {
+std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
+                                        hsize_t limit, hsize_t block_rows) {
     if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
     const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
     if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
@@ -172,11 +199,9 @@ std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, con
     const Id type(H5Dget_type(set.get()), H5Tclose);
     const H5T_class_t c = H5Tget_class(type.get());
     if (c != H5T_INTEGER && c != H5T_FLOAT) throw Error(path + ": expected numbers");
-    const Id dcpl(H5Dget_create_plist(set.get()), H5Pclose);
-    std::vector<hsize_t> chunk(dims.size(), 0);
-    hsize_t block = dims[0];
-    if (H5Pget_layout(dcpl.get()) == H5D_CHUNKED && H5Pget_chunk(dcpl.get(), rank, chunk.data()) == rank)
-        block = std::max<hsize_t>(1, chunk[0]);
+    check_chunks(set.get(), path, dims, block_rows);
+    const hsize_t block = block_rows;
+    dims[0] = std::min(dims[0], limit);
     hsize_t size = 1;
     for (hsize_t d : inner) size *= d;
     if (dims[0] > (hsize_t(1) << 40) / std::max<hsize_t>(1, size)) throw Error(path + ": too large");
@@ -195,7 +220,7 @@ std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, con
 
 template <class T>
 std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
-                           hsize_t count) {
+                           hsize_t count, hsize_t block) {
     if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) throw Error(path + ": missing");
     const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
     if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
@@ -205,6 +230,7 @@ std::vector<T> read_window(hid_t file, const std::string& path, const std::vecto
     if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
         !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
         throw Error(path + ": unexpected shape");
+    check_chunks(set.get(), path, dims, block);
     if (first + count > dims[0])
         throw Error(path + ": rows " + std::to_string(first) + " to " + std::to_string(first + count) + ", it has " +
                     std::to_string(dims[0]));
@@ -220,7 +246,8 @@ std::vector<T> read_window(hid_t file, const std::string& path, const std::vecto
     return out;
 }
 
-template std::vector<double> read_window(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t, hsize_t);
+template std::vector<double> read_window(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t, hsize_t,
+                                         hsize_t);
 template void write_numbers(hid_t, const char*, const std::vector<std::int64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<std::uint64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<double>&);
@@ -233,7 +260,9 @@ template void write_rows(hid_t, const std::string&, hsize_t, const Layout&,
                          const std::function<void(hsize_t, hsize_t, double*)>&);
 template void write_rows(hid_t, const std::string&, const std::vector<std::int64_t>&, const Layout&);
 template void write_rows(hid_t, const std::string&, const std::vector<double>&, const Layout&);
-template std::optional<std::vector<std::int64_t>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
-template std::optional<std::vector<double>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&);
+template std::optional<std::vector<std::int64_t>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&,
+                                                            hsize_t, hsize_t);
+template std::optional<std::vector<double>> read_rows(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t,
+                                                      hsize_t);
 
 }  // namespace mobb::crowd::h5

@@ -42,7 +42,7 @@ void quiet();
 template <class T>
 hid_t native();  // std::int64_t, std::uint64_t, double
 
-// Attributes: text (variable-length UTF-8), numbers and arrays of numbers.
+// Attributes: text (variable-length UTF-8), numbers and arrays of numbers; writing one replaces it.
 void write_text(hid_t object, const char* name, const std::string& text);
 template <class T>
 void write_numbers(hid_t object, const char* name, const std::vector<T>& values);  ///< one value: a scalar
@@ -62,12 +62,12 @@ struct Layout {
 hsize_t row_size(const Layout& l);
 
 /// A new dataset `path` of rows (Layout) that grows as rows are appended: each append writes its rows,
-/// whole blocks at a time but for the last, and flushes the file.
+/// whole blocks at a time but for the last, and flushes the file unless told not to.
 class Appender {
 public:
     Appender(hid_t file, const std::string& path, hid_t type, const Layout& layout);
     /// Appends `rows` rows (rows * row_size values of the dataset's type at `data`).
-    void append(const void* data, hsize_t rows);
+    void append(const void* data, hsize_t rows, bool flush = true);
     hsize_t rows() const { return rows_; }
     const Layout& layout() const { return layout_; }
 
@@ -89,14 +89,17 @@ void write_rows(hid_t file, const std::string& path, hsize_t rows, const Layout&
 template <class T>
 void write_rows(hid_t file, const std::string& path, const std::vector<T>& data, const Layout& layout);
 
-/// Reads dataset `path` whole, block by block (an error names the block); checks its shape against
-/// `inner` (the dims after the rows). Nothing when the file has no such dataset.
+/// Reads dataset `path` whole - or its first `limit` rows - block by block (an error names the block);
+/// checks its shape against `inner` (the dims after the rows) and its chunks against the writer's, `block`
+/// rows (libhdf5 1.10 copies a chunk as large as its layout says, whatever the chunk holds). Nothing when
+/// the file has no such dataset.
 template <class T>
-std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner);
+std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
+                                        hsize_t limit = ~hsize_t(0), hsize_t block = 4096);
 
 /// Rows first .. first + count - 1 of dataset `path` (shape checked as read_rows does), read alone.
 template <class T>
 std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
-                           hsize_t count);
+                           hsize_t count, hsize_t block);
 
 }  // namespace mobb::crowd::h5

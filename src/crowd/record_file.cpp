@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <stdexcept>
 
@@ -21,7 +22,11 @@ RecordFile read_record_file(const std::string& file) {
     return is_h5_record(file) ? read_h5_record(file) : read_json_record(file);
 }
 
-Record load_record(const std::string& file) { return read_record_file(file).record; }
+Record load_record(const std::string& file) {
+    RecordFile r = read_record_file(file);
+    if (!r.note.empty()) std::cerr << r.note << "\n";
+    return std::move(r.record);
+}
 
 SampleWindow read_sample_window(const std::string& file, std::int64_t first, std::int64_t last) {
     if (is_h5_record(file)) return read_h5_window(file, first, last);

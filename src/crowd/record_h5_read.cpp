@@ -3,7 +3,11 @@
 // hold a record to the same rules and name a bad field the same way.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
+#include <string>
 
+#include "frame_stream.h"
 #include "h5.h"
 #include "mobb/util/json_text.h"
 #include "record_json.h"
@@ -38,11 +42,33 @@ J object(hid_t f, const char* name) {
     return j;
 }
 
+// What a file holds: all of it once finished; up to its last mark ("written") when its writing stopped.
+struct Held {
+    bool complete = true;
+    std::int64_t frames = 0, planned = 0;     // frames held; of the run
+    std::map<std::string, std::size_t> rows;  // per table (group): the rows held
+
+    // The rows of dataset `path` to read.
+    hsize_t limit(const std::string& path) const {
+        const auto it = rows.find(path.substr(0, path.rfind('/')));
+        return it == rows.end() ? ~hsize_t(0) : hsize_t(it->second);
+    }
+};
+
 template <class T>
-std::vector<T> rows(hid_t f, const std::string& path, std::vector<hsize_t> inner = {}) {
-    auto v = h5::read_rows<T>(f, path, inner);
+std::vector<T> rows(hid_t f, const std::string& path, const Held& held, std::vector<hsize_t> inner = {}) {
+    auto v = h5::read_rows<T>(f, path, inner, held.limit(path));
     if (!v) throw h5::Error(path + ": missing");
     return std::move(*v);
+}
+
+// The rows of a nested table to take: all `n` of a finished file; of an incomplete one, those whose owner
+// is one of the `owners` taken (the rows come in their owners' order).
+std::size_t taken(const std::vector<std::int64_t>& owner, std::size_t owners, const Held& held, std::size_t n) {
+    if (held.complete) return n;
+    std::size_t k = 0;
+    while (k < n && owner[k] >= 0 && std::size_t(owner[k]) < owners) ++k;
+    return k;
 }
 
 // A table's columns, all of one length `n` (the first column's): the rows of the table.
@@ -66,17 +92,44 @@ std::size_t owner(const I& column, std::size_t k, std::size_t owners, const std:
     return std::size_t(column[k]);
 }
 
-J header(hid_t f) {
+// The tables in the order of the "written" mark (record_h5_write.cpp).
+const char* const kMarked[] = {"/choices",  "/clips",           "/escapes",    "/intended",
+                               "/reroutes", "/reroute_escapes", "/candidates", "/queries"};
+
+// An incomplete file's mark: the frames and each table's rows it holds for sure.
+Held held_of(hid_t f, std::int64_t planned) {
+    Held h;
+    h.planned = planned;
+    h.frames = planned;
+    if (one<std::int64_t>(f, "complete") == 1) return h;
+    h.complete = false;
+    const auto w = h5::read_numbers<std::int64_t>(f, "written");
+    if (!w || w->size() != 1 + std::size(kMarked))
+        throw h5::Error("incomplete: the writing stopped before its first mark (attribute written)");
+    h.frames = w->front();
+    if (h.frames < 1 || h.frames > planned)
+        throw h5::Error("incomplete: attribute written: " + std::to_string(h.frames) + " frames, the run has " +
+                        std::to_string(planned) + (h.frames < 1 ? " (none written before it stopped)" : ""));
+    for (std::size_t k = 0; k < std::size(kMarked); ++k) {
+        if ((*w)[k + 1] < 0) throw h5::Error("attribute written: a negative row count");
+        h.rows[kMarked[k]] = std::size_t((*w)[k + 1]);
+    }
+    return h;
+}
+
+J header(hid_t f, Held& held) {
+    const auto complete = h5::read_numbers<std::int64_t>(f, "complete");
+    if (complete && complete->size() == 1 && complete->front() != 1 && H5Aexists(f, "written") <= 0)
+        throw h5::Error("incomplete: the writing stopped before its first mark (attribute written)");
     if (h5::read_text(f, "format") != "mobb crowd record")
         throw h5::Error("attribute format: expected \"mobb crowd record\"");
-    if (one<std::int64_t>(f, "complete") != 1)
-        throw h5::Error("incomplete: the writing stopped before the end (the run was killed, or the disk was full)");
+    held = held_of(f, one<std::int64_t>(f, "frames"));
     J j;
     j["format"] = "mobb crowd record";
     j["version"] = one<std::int64_t>(f, "version");
     j["graph"] = text(f, "graph");
     j["dt"] = one<double>(f, "dt");
-    j["frames"] = one<std::int64_t>(f, "frames");
+    j["frames"] = held.frames;
     j["agents"] = one<std::int64_t>(f, "agents");
     j["seed"] = one<std::uint64_t>(f, "seed");
     j["tree"] = text(f, "tree");
@@ -92,8 +145,9 @@ J header(hid_t f) {
 }
 
 J obstacles(hid_t f) {
-    const I polygon = rows<std::int64_t>(f, "/obstacles/polygon");
-    const D vertex = rows<double>(f, "/obstacles/vertex", {2});
+    const Held all;
+    const I polygon = rows<std::int64_t>(f, "/obstacles/polygon", all);
+    const D vertex = rows<double>(f, "/obstacles/vertex", all, {2});
     const std::size_t n = same_rows("/obstacles", {{"polygon", polygon.size()}, {"vertex", vertex.size() / 2}});
     J out = J::array();
     for (std::size_t k = 0; k < n; ++k) {
@@ -104,8 +158,28 @@ J obstacles(hid_t f) {
     return out;
 }
 
-J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
-    const I left = rows<std::int64_t>(f, "/tracks/left_frame"), at_goal = rows<std::int64_t>(f, "/tracks/at_goal");
+// An incomplete file's agents that left: the first frame of NaN in its samples (finish() writes the
+// frames they left at).
+I left_frames(const D& samples, std::int64_t frames, std::size_t agents) {
+    I left(agents, -1);
+    for (std::size_t a = 0; a < agents; ++a)
+        for (std::int64_t k = 0; k < frames && left[a] < 0; ++k)
+            if (std::isnan(samples[(std::size_t(k) * agents + a) * 4])) left[a] = k;
+    return left;
+}
+
+J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held) {
+    const auto read =
+        h5::read_rows<double>(f, "/tracks/samples", {hsize_t(agents), 4}, held.complete ? ~hsize_t(0) : hsize_t(frames),
+                              hsize_t(block_frames(agents)));  // an incomplete file: the frames of the mark
+    if (!read) throw h5::Error("/tracks/samples: missing");
+    const D& samples = *read;
+    if (std::int64_t(samples.size() / (4 * std::max<std::size_t>(1, agents))) != frames)
+        throw h5::Error("/tracks/samples: " + std::to_string(samples.size() / (4 * agents)) +
+                        " frames, the record has " + std::to_string(frames));
+    const I left =
+        held.complete ? rows<std::int64_t>(f, "/tracks/left_frame", held) : left_frames(samples, frames, agents);
+    const I at_goal = rows<std::int64_t>(f, "/tracks/at_goal", held);
     same_rows("/tracks", {{"left_frame", left.size()}, {"at_goal", at_goal.size()}, {"(agents)", agents}});
     J out = J::array();
     for (std::size_t a = 0; a < agents; ++a) {
@@ -116,16 +190,17 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
         t["samples"] = J::array();
         out.push_back(std::move(t));
     }
-    const I goal_agent = rows<std::int64_t>(f, "/goals/agent");
-    const D goal = rows<double>(f, "/goals/xy", {2});
+    const I goal_agent = rows<std::int64_t>(f, "/goals/agent", held);
+    const D goal = rows<double>(f, "/goals/xy", held, {2});
     for (std::size_t k = 0; k < same_rows("/goals", {{"agent", goal_agent.size()}, {"xy", goal.size() / 2}}); ++k)
         out[owner(goal_agent, k, agents, "/goals/agent")]["goals"].push_back({goal[2 * k], goal[2 * k + 1]});
     for (J& t : out)
         if (t.contains("goals") && t["goals"].size() == 1) t["goal"] = t["goals"][0], t.erase("goals");
-    const I agent = rows<std::int64_t>(f, "/clips/agent"), clip = rows<std::int64_t>(f, "/clips/clip"),
-            start = rows<std::int64_t>(f, "/clips/start"), fallback = rows<std::int64_t>(f, "/clips/fallback"),
-            commit = rows<std::int64_t>(f, "/clips/commit");
-    const D place = rows<double>(f, "/clips/place", {4});
+    const I agent = rows<std::int64_t>(f, "/clips/agent", held), clip = rows<std::int64_t>(f, "/clips/clip", held),
+            start = rows<std::int64_t>(f, "/clips/start", held),
+            fallback = rows<std::int64_t>(f, "/clips/fallback", held),
+            commit = rows<std::int64_t>(f, "/clips/commit", held);
+    const D place = rows<double>(f, "/clips/place", held, {4});
     const std::size_t n = same_rows("/clips", {{"agent", agent.size()},
                                                {"clip", clip.size()},
                                                {"start", start.size()},
@@ -133,16 +208,13 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
                                                {"commit", commit.size()},
                                                {"place", place.size() / 4}});
     for (std::size_t k = 0; k < n; ++k)
-        out[owner(agent, k, agents, "/clips/agent")]["clips"].push_back(
-            {{"clip", clip[k]},
-             {"start", start[k]},
-             {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
-             {"fallback", fallback[k] != 0},
-             {"commit", commit[k]}});
-    const D samples = rows<double>(f, "/tracks/samples", {hsize_t(agents), 4});
-    if (std::int64_t(samples.size() / (4 * std::max<std::size_t>(1, agents))) != frames)
-        throw h5::Error("/tracks/samples: " + std::to_string(samples.size() / (4 * agents)) +
-                        " frames, the record has " + std::to_string(frames));
+        if (held.complete || start[k] < frames)  // an incomplete file: the clips of the frames it holds
+            out[owner(agent, k, agents, "/clips/agent")]["clips"].push_back(
+                {{"clip", clip[k]},
+                 {"start", start[k]},
+                 {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
+                 {"fallback", fallback[k] != 0},
+                 {"commit", commit[k]}});
     for (std::size_t a = 0; a < agents; ++a) {
         const std::int64_t until = left[a] >= 0 ? std::min(left[a], frames) : frames;
         for (std::int64_t k = 0; k < until; ++k) {
@@ -155,12 +227,16 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents) {
 
 // Clips placed from a frame on, nested by owner: [clip, frame, x, y, theta] rows added to `into(owner)`.
 template <class Into>
-void framed(hid_t f, const std::string& group, const char* owner_name, std::size_t owners, Into into) {
-    const I own = rows<std::int64_t>(f, group + "/" + owner_name), clip = rows<std::int64_t>(f, group + "/clip"),
-            frame = rows<std::int64_t>(f, group + "/frame");
-    const D place = rows<double>(f, group + "/place", {3});
-    const std::size_t n = same_rows(
-        group, {{owner_name, own.size()}, {"clip", clip.size()}, {"frame", frame.size()}, {"place", place.size() / 3}});
+void framed(hid_t f, const std::string& group, const char* owner_name, std::size_t owners, const Held& held,
+            Into into) {
+    const I own = rows<std::int64_t>(f, group + "/" + owner_name, held),
+            clip = rows<std::int64_t>(f, group + "/clip", held), frame = rows<std::int64_t>(f, group + "/frame", held);
+    const D place = rows<double>(f, group + "/place", held, {3});
+    const std::size_t n = taken(
+        own, owners, held,
+        same_rows(
+            group,
+            {{owner_name, own.size()}, {"clip", clip.size()}, {"frame", frame.size()}, {"place", place.size() / 3}}));
     for (std::size_t k = 0; k < n; ++k)
         into(owner(own, k, owners, group + "/" + owner_name))
             .push_back({clip[k], frame[k], place[3 * k], place[3 * k + 1], place[3 * k + 2]});
@@ -171,15 +247,19 @@ J count(std::int64_t v) { return v >= 0 ? J(std::uint64_t(v)) : J(v); }
 
 const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback", "right of way"};
 
-J choices(hid_t f, double dt) {
+J choices(hid_t f, double dt, const Held& held) {
     static const char* const kNames[] = {"agent",   "frame",   "taken",   "outcome", "fallback",  "queries",
                                          "tests2d", "tests3d", "samples", "pruned",  "hold_frame"};
     std::vector<I> c;
-    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/choices/") + name));
-    const D hold = rows<double>(f, "/choices/hold", {3});
+    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/choices/") + name, held));
+    const D hold = rows<double>(f, "/choices/hold", held, {3});
     std::size_t n = c[0].size();
     for (std::size_t k = 0; k < c.size(); ++k) same_rows("/choices", {{"agent", n}, {kNames[k], c[k].size()}});
     same_rows("/choices", {{"agent", n}, {"hold", hold.size() / 3}});
+    if (!held.complete)  // the choice points of the frames held (they come in frame order)
+        n = std::size_t(std::find_if(c[1].begin(), c[1].begin() + std::ptrdiff_t(n),
+                                     [&](std::int64_t frame) { return frame >= held.frames; }) -
+                        c[1].begin());
     J out = J::array();
     for (std::size_t k = 0; k < n; ++k) {
         if (c[3][k] < 0 || c[3][k] > 4)
@@ -200,13 +280,15 @@ J choices(hid_t f, double dt) {
                        {"plan", plan},
                        {"candidates", J::array()}});
     }
-    framed(f, "/escapes", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["escape"]; });
-    framed(f, "/intended", "choice", n, [&](std::size_t k) -> J& { return out[k]["plan"]["intended"]; });
-    const I rc = rows<std::int64_t>(f, "/reroutes/choice"), ra = rows<std::int64_t>(f, "/reroutes/agent"),
-            rf = rows<std::int64_t>(f, "/reroutes/hold_frame");
-    const D rh = rows<double>(f, "/reroutes/hold", {3});
-    const std::size_t nr = same_rows(
-        "/reroutes", {{"choice", rc.size()}, {"agent", ra.size()}, {"hold_frame", rf.size()}, {"hold", rh.size() / 3}});
+    framed(f, "/escapes", "choice", n, held, [&](std::size_t k) -> J& { return out[k]["plan"]["escape"]; });
+    framed(f, "/intended", "choice", n, held, [&](std::size_t k) -> J& { return out[k]["plan"]["intended"]; });
+    const I rc = rows<std::int64_t>(f, "/reroutes/choice", held), ra = rows<std::int64_t>(f, "/reroutes/agent", held),
+            rf = rows<std::int64_t>(f, "/reroutes/hold_frame", held);
+    const D rh = rows<double>(f, "/reroutes/hold", held, {3});
+    const std::size_t nr = taken(
+        rc, n, held,
+        same_rows("/reroutes",
+                  {{"choice", rc.size()}, {"agent", ra.size()}, {"hold_frame", rf.size()}, {"hold", rh.size() / 3}}));
     std::vector<std::pair<std::size_t, std::size_t>> reroute_at;  // (choice, index in its reroutes)
     for (std::size_t k = 0; k < nr; ++k) {
         J& list = out[owner(rc, k, n, "/reroutes/choice")]["plan"]["reroutes"];
@@ -214,29 +296,30 @@ J choices(hid_t f, double dt) {
             {{"agent", ra[k]}, {"escape", J::array()}, {"hold", {rh[3 * k], rh[3 * k + 1], rh[3 * k + 2], rf[k]}}});
         reroute_at.emplace_back(std::size_t(rc[k]), list.size() - 1);
     }
-    framed(f, "/reroute_escapes", "reroute", nr, [&](std::size_t k) -> J& {
+    framed(f, "/reroute_escapes", "reroute", nr, held, [&](std::size_t k) -> J& {
         return out[reroute_at[k].first]["plan"]["reroutes"][reroute_at[k].second]["escape"];
     });
     return out;
 }
 
 // The candidates of each choice point, with their queries ("against").
-void candidates(hid_t f, J& choices) {
+void candidates(hid_t f, J& choices, const Held& held) {
     static const char* const kNames[] = {"choice", "clip", "outside", "queries", "hits", "crowded"};
     std::vector<I> c;
-    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name));
+    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name, held));
     for (std::size_t k = 0; k < c.size(); ++k)
         same_rows("/candidates", {{"choice", c[0].size()}, {kNames[k], c[k].size()}});
     static const char* const kQuery[] = {"candidate", "agent", "commit", "piece", "mine", "hit"};
     std::vector<I> q;
-    for (const char* name : kQuery) q.push_back(rows<std::int64_t>(f, std::string("/queries/") + name));
+    for (const char* name : kQuery) q.push_back(rows<std::int64_t>(f, std::string("/queries/") + name, held));
     for (std::size_t k = 0; k < q.size(); ++k)
         same_rows("/queries", {{"candidate", q[0].size()}, {kQuery[k], q[k].size()}});
-    std::vector<J> against(c[0].size(), J::array());
-    for (std::size_t k = 0; k < q[0].size(); ++k)
+    const std::size_t nc = taken(c[0], choices.size(), held, c[0].size());
+    std::vector<J> against(nc, J::array());
+    for (std::size_t k = 0; k < taken(q[0], nc, held, q[0].size()); ++k)
         against[owner(q[0], k, against.size(), "/queries/candidate")].push_back(
             {q[1][k], q[2][k], q[3][k], q[4][k], q[5][k]});
-    for (std::size_t k = 0; k < c[0].size(); ++k) {
+    for (std::size_t k = 0; k < nc; ++k) {
         J& list = choices[owner(c[0], k, choices.size(), "/candidates/choice")]["candidates"];
         list.push_back({{"clip", c[1][k]},
                         {"outside", c[2][k] != 0},
@@ -247,6 +330,14 @@ void candidates(hid_t f, J& choices) {
     }
 }
 
+// One line for an incomplete file, nothing for a finished one.
+std::string note(const std::string& file, const Held& held) {
+    if (held.complete) return "";
+    return file + ": incomplete (its writing stopped before the end: killed, or a full disk): read up to its " +
+           "last mark, frames 0 to " + std::to_string(held.frames - 1) + " (" + std::to_string(held.frames) +
+           " of the run's " + std::to_string(held.planned) + ")";
+}
+
 }  // namespace
 
 RecordFile read_h5_record(const std::string& file) {
@@ -254,17 +345,18 @@ RecordFile read_h5_record(const std::string& file) {
     if (H5Fis_hdf5(file.c_str()) <= 0)
         throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
     J j;
+    Held held;
     try {
         const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
         if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
-        j = header(f.get());
+        j = header(f.get(), held);
         j["obstacles"] = obstacles(f.get());
         const std::int64_t agents = j["agents"].get<std::int64_t>(), frames = j["frames"].get<std::int64_t>();
         if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
         if (frames < 1 || frames > 100'000'000) throw h5::Error("attribute frames: expected 1 to 100,000,000");
-        j["tracks"] = tracks(f.get(), frames, std::size_t(agents));
-        j["choices"] = choices(f.get(), j["dt"].get<double>());
-        candidates(f.get(), j["choices"]);
+        j["tracks"] = tracks(f.get(), frames, std::size_t(agents), held);
+        j["choices"] = choices(f.get(), j["dt"].get<double>(), held);
+        candidates(f.get(), j["choices"], held);
     } catch (const h5::Error& e) {
         throw std::runtime_error(file + ": " + e.what());
     }
@@ -272,6 +364,7 @@ RecordFile read_h5_record(const std::string& file) {
     out.record = record_from_json(j, file);
     out.summary_json = j["summary"].dump();
     if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
+    out.note = note(file, held);
     return out;
 }
 
@@ -284,10 +377,11 @@ SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::in
     if (H5Fis_hdf5(file.c_str()) <= 0)
         throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
     SampleWindow w;
+    Held held;
     try {
         const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
         if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
-        const J j = header(f.get());
+        const J j = header(f.get(), held);
         w.dt = j["dt"].get<double>();
         w.frames = j["frames"].get<std::int64_t>();
         const std::int64_t agents = j["agents"].get<std::int64_t>();
@@ -296,11 +390,12 @@ SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::in
         w.first = std::clamp<std::int64_t>(first, 0, w.frames);
         w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
         const D v = h5::read_window<double>(f.get(), "/tracks/samples", {hsize_t(agents), 4}, hsize_t(w.first),
-                                            hsize_t(w.last - w.first));
+                                            hsize_t(w.last - w.first), hsize_t(block_frames(w.agents)));
         w.samples.resize(v.size() / 4);
         for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
         w.summary_json = j["summary"].dump();
         if (j.contains("metrics")) w.metrics_json = j["metrics"].dump();
+        w.note = note(file, held);
     } catch (const h5::Error& e) {
         throw std::runtime_error(file + ": " + e.what());
     }

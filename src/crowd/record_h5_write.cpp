@@ -6,7 +6,10 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
+#include <utility>
 
+#include "frame_stream.h"
 #include "h5.h"
 #include "mobb/crowd/record_file.h"
 #include "record_json.h"
@@ -21,22 +24,25 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 const h5::Layout kColumn{};
 const h5::Layout kPair{{2}}, kTriple{{3}}, kPlace{{4}};
 
-// Frames per block of samples: about 64 k disks (2 MB) a block, 1 to 256 frames.
-hsize_t block_frames(std::size_t agents) {
-    return hsize_t(std::clamp<std::size_t>(65536 / std::max<std::size_t>(1, agents), 1, 256));
-}
+// A streamed file is marked readable (its "written" attribute) after a block of samples once this many
+// frames went out since the last mark: each mark writes every table's last, partial block again
+// (compressed), so marking every block of a large crowd (6 frames at 10,000 agents) would cost more than
+// it saves. 30 frames: one second of a 30 fps graph is what a killed run loses at most.
+constexpr std::int64_t kMarkFrames = 30;
 
-void write_header(hid_t f, const Record& r, const std::string& summary, const std::string& metrics) {
+// The root's attributes; the graph and the scenario from `names`.
+void write_header(hid_t f, const Record& r, const Record& names, const std::string& summary,
+                  const std::string& metrics) {
     h5::write_text(f, "format", "mobb crowd record");
     h5::write_numbers<std::int64_t>(f, "version", {2});
-    h5::write_text(f, "graph", r.graph);
+    h5::write_text(f, "graph", names.graph);
     h5::write_numbers<double>(f, "dt", {r.dt});
     h5::write_numbers<std::int64_t>(f, "frames", {r.frames});
     h5::write_numbers<std::int64_t>(f, "agents", {std::int64_t(r.tracks.size())});
     h5::write_numbers<std::uint64_t>(f, "seed", {r.seed});
     h5::write_text(f, "tree", r.tree);
     h5::write_text(f, "select", r.select);
-    if (!r.scenario.empty()) h5::write_text(f, "scenario", r.scenario);
+    if (!names.scenario.empty()) h5::write_text(f, "scenario", names.scenario);
     h5::write_numbers<double>(f, "world", {r.world.x0, r.world.y0, r.world.x1, r.world.y1});
     h5::write_numbers<std::int64_t>(f, "walls", {r.world.walls});
     h5::write_text(f, "summary", summary.empty() ? "{}" : summary);
@@ -53,45 +59,24 @@ void write_obstacles(hid_t f, const World& w) {
     h5::write_rows(f, "/obstacles/vertex", vertex, kPair);
 }
 
-void write_tracks(hid_t f, const Record& r) {
-    I left, at_goal, goal_agent, agent, clip, start, fallback, commit;
-    D goal, place;
+// What is known of the agents before the run: their goals and what they do at the last.
+void write_goals(hid_t f, const Record& r) {
+    I at_goal, goal_agent;
+    D goal;
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         const AgentTrack& t = r.tracks[a];
-        left.push_back(t.left_frame.value_or(-1));
         at_goal.push_back(t.at_goal == AtGoal::Leave);
         for (const auto& g : t.goals) goal_agent.push_back(std::int64_t(a)), goal.insert(goal.end(), {g[0], g[1]});
-        for (const PlacedClip& c : t.clips) {
-            agent.push_back(std::int64_t(a)), clip.push_back(c.clip), start.push_back(c.start);
-            fallback.push_back(c.fallback), commit.push_back(c.commit);
-            place.insert(place.end(), {c.place.x, c.place.y, c.place.theta, c.place.t0});
-        }
     }
-    h5::write_rows(f, "/tracks/left_frame", left, kColumn);
     h5::write_rows(f, "/tracks/at_goal", at_goal, kColumn);
     h5::write_rows(f, "/goals/agent", goal_agent, kColumn);
     h5::write_rows(f, "/goals/xy", goal, kPair);
-    for (const auto& [name, column] :
-         {std::pair{"agent", &agent}, {"clip", &clip}, {"start", &start}, {"fallback", &fallback}, {"commit", &commit}})
-        h5::write_rows(f, std::string("/clips/") + name, *column, kColumn);
-    h5::write_rows(f, "/clips/place", place, kPlace);
 }
 
-// [frames, agents, 4]: agent a's disk [t, x, y, r] at frame k, NaN once it left.
-void write_samples(hid_t f, const Record& r) {
-    const std::size_t n = r.tracks.size();
-    const h5::Layout layout{{hsize_t(n), 4}, block_frames(n), false};
-    h5::write_rows<double>(f, "/tracks/samples", hsize_t(r.frames), layout,
-                           [&](hsize_t first, hsize_t count, double* out) {
-                               for (hsize_t k = first; k < first + count; ++k)
-                                   for (std::size_t a = 0; a < n; ++a, out += 4) {
-                                       const auto& s = r.tracks[a].samples;
-                                       if (k < s.size())
-                                           std::copy(s[k].begin(), s[k].end(), out);
-                                       else
-                                           std::fill(out, out + 4, kNone);
-                                   }
-                           });
+void write_left(hid_t f, const Record& r) {
+    I left;
+    for (const AgentTrack& t : r.tracks) left.push_back(t.left_frame.value_or(-1));
+    h5::write_rows(f, "/tracks/left_frame", left, kColumn);
 }
 
 // A table written as it grows: named columns of int64 (one value a row) and float64 (`width` a row),
@@ -108,12 +93,13 @@ public:
     I& i(std::size_t k) { return ints_[k].second; }
     D& d(std::size_t k) { return reals_[k].second; }
     std::size_t rows() const { return std::size_t(ints_[0].first.rows()) + ints_[0].second.size(); }
-    /// Writes the rows gathered when a block is full (`all`: whatever there is).
+    /// Writes the rows gathered when a block is full (`all`: whatever there is); the file is flushed by
+    /// the caller.
     void flush(bool all) {
         if (!all && ints_[0].second.size() < kColumn.block) return;
-        for (auto& [out, rows] : ints_) out.append(rows.data(), rows.size()), rows.clear();
+        for (auto& [out, rows] : ints_) out.append(rows.data(), rows.size(), false), rows.clear();
         for (auto& [out, rows] : reals_)
-            out.append(rows.data(), rows.size() / h5::row_size(out.layout())), rows.clear();
+            out.append(rows.data(), rows.size() / h5::row_size(out.layout()), false), rows.clear();
     }
 
 private:
@@ -140,7 +126,8 @@ struct Tables {
           reroutes(f, "/reroutes", {"choice", "agent", "hold_frame"}, {{"hold", 3}}),
           reroute_escapes(f, "/reroute_escapes", {"reroute", "clip", "frame"}, {{"place", 3}}),
           candidates(f, "/candidates", {"choice", "clip", "outside", "queries", "hits", "crowded"}, {}),
-          queries(f, "/queries", {"candidate", "agent", "commit", "piece", "mine", "hit"}, {}) {}
+          queries(f, "/queries", {"candidate", "agent", "commit", "piece", "mine", "hit"}, {}),
+          clips(f, "/clips", {"agent", "clip", "start", "fallback", "commit"}, {{"place", 4}}) {}
 
     static void framed(Table& t, std::size_t owner, const std::vector<FramedClip>& clips) {
         for (const FramedClip& c : clips) {
@@ -182,72 +169,168 @@ struct Tables {
         for (Table* t : all()) t->flush(false);
     }
 
-    std::array<Table*, 7> all() {
-        return {&choices, &escapes, &intended, &reroutes, &reroute_escapes, &candidates, &queries};
+    void add(int agent, const PlacedClip& c) {
+        const std::int64_t row[] = {agent, c.clip, c.start, c.fallback, c.commit};
+        for (std::size_t k = 0; k < std::size(row); ++k) clips.i(k).push_back(row[k]);
+        clips.d(0).insert(clips.d(0).end(), {c.place.x, c.place.y, c.place.theta, c.place.t0});
+        clips.flush(false);
     }
 
-    Table choices, escapes, intended, reroutes, reroute_escapes, candidates, queries;
+    /// In the order of the "written" attribute (docs/formats.md).
+    std::array<Table*, 8> all() {
+        return {&choices, &clips, &escapes, &intended, &reroutes, &reroute_escapes, &candidates, &queries};
+    }
+
+    Table choices, escapes, intended, reroutes, reroute_escapes, candidates, queries, clips;
 };
 
 }  // namespace
 
 struct H5RecordWriter::Impl {
-    std::string file;
+    std::string file, graph, scenario;
     h5::Id f;
     std::unique_ptr<Tables> tables;
-    std::size_t choices = 0;
+    std::optional<h5::Appender> samples;  // from begin()
+    std::size_t agents = 0, choices = 0;
+    std::int64_t frames = 0, marked = 0;  // frames written; at the last mark
+
+    // Every table's rows so far, then the mark: the frames a reader may take, and each table's rows.
+    void mark() {
+        std::vector<std::int64_t> written{frames};
+        for (Table* t : tables->all()) t->flush(true), written.push_back(std::int64_t(t->rows()));
+        h5::write_numbers<std::int64_t>(f.get(), "written", written);
+        if (H5Fflush(f.get(), H5F_SCOPE_GLOBAL) < 0) throw h5::Error("cannot write");
+        marked = frames;
+    }
 };
 
-H5RecordWriter::H5RecordWriter(const std::string& file) : impl_(std::make_unique<Impl>()) {
-    h5::quiet();
-    impl_->file = file;
+namespace {
+
+// Runs `write`, an h5::Error becoming "FILE: PLACE: message".
+template <class F>
+void guarded(const std::string& file, F&& write) {
     try {
-        impl_->f = h5::Id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-        if (!impl_->f.valid()) throw h5::Error("cannot create");
-        h5::write_numbers<std::int64_t>(impl_->f.get(), "complete", {0});
-        impl_->tables = std::make_unique<Tables>(impl_->f.get());
+        write();
     } catch (const h5::Error& e) {
         throw std::runtime_error(file + ": " + e.what());
     }
 }
 
+}  // namespace
+
+H5RecordWriter::H5RecordWriter(const std::string& file, const std::string& graph, const std::string& scenario)
+    : impl_(std::make_unique<Impl>()) {
+    h5::quiet();
+    impl_->file = file;
+    impl_->graph = graph;
+    impl_->scenario = scenario;
+    guarded(file, [&] {
+        // Space a block held is never given to another while the file is written: a table's last block is
+        // written again, larger, at each mark, and the file as of the last mark points at the old copy -
+        // which a kill before the next flush would otherwise find overwritten.
+        const h5::Id fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+        H5Pset_file_space_strategy(fcpl.get(), H5F_FSPACE_STRATEGY_NONE, 0, 1);
+        impl_->f = h5::Id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT), H5Fclose);
+        if (!impl_->f.valid()) throw h5::Error("cannot create");
+        h5::write_numbers<std::int64_t>(impl_->f.get(), "complete", {0});
+        impl_->tables = std::make_unique<Tables>(impl_->f.get());
+    });
+}
+
 H5RecordWriter::~H5RecordWriter() = default;
 
+void H5RecordWriter::begin(const Record& header) {
+    guarded(impl_->file, [&] {
+        if (impl_->samples) throw h5::Error("begun twice");
+        Record named;  // the names the writer was given, where the header has none
+        named.graph = header.graph.empty() ? impl_->graph : header.graph;
+        named.scenario = header.scenario.empty() ? impl_->scenario : header.scenario;
+        const hid_t f = impl_->f.get();
+        write_header(f, header, named, "", "");
+        write_obstacles(f, header.world);
+        write_goals(f, header);
+        impl_->agents = header.tracks.size();
+        const h5::Layout layout{{hsize_t(impl_->agents), 4}, hsize_t(block_frames(impl_->agents)), false};
+        impl_->samples.emplace(f, "/tracks/samples", H5T_NATIVE_DOUBLE, layout);
+        impl_->mark();
+    });
+}
+
 void H5RecordWriter::choice(std::size_t index, const ChoicePoint& choice) {
-    try {
+    guarded(impl_->file, [&] {
         if (index != impl_->choices) throw h5::Error("choice point " + std::to_string(index) + " sent out of order");
         impl_->tables->add(index, choice);
         ++impl_->choices;
-    } catch (const h5::Error& e) {
-        throw std::runtime_error(impl_->file + ": " + e.what());
-    }
+    });
+}
+
+void H5RecordWriter::clip(int agent, const PlacedClip& clip) {
+    guarded(impl_->file, [&] { impl_->tables->add(agent, clip); });
+}
+
+void H5RecordWriter::frames(const FrameBlock& block) {
+    guarded(impl_->file, [&] {
+        if (!impl_->samples || block.first != impl_->frames || block.agents != impl_->agents)
+            throw h5::Error("/tracks/samples: frames " + std::to_string(block.first) + " sent out of order");
+        impl_->samples->append(block.disks->data(), hsize_t(block.count), false);
+        impl_->frames += block.count;
+        if (impl_->frames - impl_->marked >= kMarkFrames) impl_->mark();
+    });
 }
 
 void H5RecordWriter::finish(const Record& r, const std::string& summary_json, const std::string& metrics_json) {
-    try {
-        if (impl_->choices != r.choices.size())
+    guarded(impl_->file, [&] {
+        if (!impl_->samples) throw h5::Error("finished before it began");
+        if (!r.choices.empty() && impl_->choices != r.choices.size())
             throw h5::Error(std::to_string(impl_->choices) + " choice points sent, the record has " +
                             std::to_string(r.choices.size()));
-        for (Table* t : impl_->tables->all()) t->flush(true);
+        if (impl_->frames != r.frames)
+            throw h5::Error("/tracks/samples: " + std::to_string(impl_->frames) + " frames sent, the record has " +
+                            std::to_string(r.frames));
         const hid_t f = impl_->f.get();
-        write_header(f, r, summary_json, metrics_json);
-        write_obstacles(f, r.world);
-        write_tracks(f, r);
-        write_samples(f, r);
+        Record named;
+        named.graph = r.graph.empty() ? impl_->graph : r.graph;
+        named.scenario = r.scenario.empty() ? impl_->scenario : r.scenario;
+        write_header(f, r, named, summary_json, metrics_json);
+        write_left(f, r);
+        impl_->mark();
         // Last: a reader tells a finished file from one whose writing stopped (killed, disk full).
         const h5::Id done(H5Aopen(f, "complete", H5P_DEFAULT), H5Aclose);
         const std::int64_t one = 1;
         if (H5Awrite(done.get(), H5T_NATIVE_INT64, &one) < 0 || H5Fflush(f, H5F_SCOPE_GLOBAL) < 0)
             throw h5::Error("cannot write");
-    } catch (const h5::Error& e) {
-        throw std::runtime_error(impl_->file + ": " + e.what());
-    }
+    });
 }
 
 void write_h5_record(const std::string& file, const Record& r, const std::string& summary_json,
                      const std::string& metrics_json) {
     H5RecordWriter out(file);
+    out.begin(r);
     for (std::size_t c = 0; c < r.choices.size(); ++c) out.choice(c, r.choices[c]);
+    // The clips in commit order, as a streamed run sends them (each choice point commits one).
+    std::vector<std::pair<int, const PlacedClip*>> clips;
+    for (std::size_t a = 0; a < r.tracks.size(); ++a)
+        for (const PlacedClip& c : r.tracks[a].clips) clips.emplace_back(int(a), &c);
+    std::stable_sort(clips.begin(), clips.end(),
+                     [](const auto& x, const auto& y) { return x.second->commit < y.second->commit; });
+    for (const auto& [agent, c] : clips) out.clip(agent, *c);
+    const std::size_t n = r.tracks.size();
+    const std::int64_t block = block_frames(n);
+    std::vector<std::array<double, 4>> disks(std::size_t(block) * n);
+    for (std::int64_t first = 0; first < r.frames; first += block) {
+        FrameBlock b;
+        b.first = first;
+        b.count = std::min(block, r.frames - first);
+        b.agents = n;
+        b.disks = disks.data();
+        for (std::int64_t k = 0; k < b.count; ++k)
+            for (std::size_t a = 0; a < n; ++a) {
+                const auto& s = r.tracks[a].samples;
+                const auto f = std::size_t(first + k);
+                disks[std::size_t(k) * n + a] = f < s.size() ? s[f] : std::array<double, 4>{kNone, kNone, kNone, kNone};
+            }
+        out.frames(b);
+    }
     out.finish(r, summary_json, metrics_json);
 }
 

@@ -2,11 +2,14 @@
 // crowd.cpp (frames, batches, commits, goals) and starts.cpp (where agents start and the ground they hold
 // there). Private to src/crowd.
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "choice.h"
+#include "frame_stream.h"
 #include "mobb/crowd/broad_phase.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/util/worker_pool.h"
@@ -50,6 +53,9 @@ private:
     void flush();
     void log_queries(const Choice& c);
     void fill_samples();
+    // A streamed run (CrowdOptions::sink; frame_stream.cpp): its frames go out as they become final.
+    void start_stream();
+    CrowdRun finish_stream(std::chrono::steady_clock::time_point start, const std::function<void(double)>& progress);
 
     const MotionGraph& g_;
     const std::vector<ClipOutline> outlines_;
@@ -87,6 +93,7 @@ private:
     std::vector<WayAsked> way_changes_;  // this frame's asks to make way, applied after it
     std::vector<char> in_waiting_;       // per agent: in waiting_
     CrowdRun out_;
+    std::optional<FrameStream> stream_;
 };
 
 }  // namespace mobb::crowd

@@ -26,6 +26,7 @@ const MotionGraph& graph() {
 struct Written {
     Record record;
     std::string summary, metrics;
+    CrowdOptions options;  // of the run
 };
 
 // A wandering crowd in a room with an obstacle (queries against agents, ground, walls, the obstacle).
@@ -40,7 +41,7 @@ const Written& wandering() {
         o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
         CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
         const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
-        return Written{std::move(run.record), summary_json(run.summary), metrics};
+        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
     }();
     return w;
 }
@@ -53,7 +54,8 @@ const Written& leaving() {
         o.seconds = 20;
         CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
         run.record.scenario = s.name;
-        return Written{std::move(run.record), summary_json(run.summary), ""};
+        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
+        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
     }();
     return w;
 }
@@ -82,12 +84,32 @@ std::string error_of(const std::string& file) {
     return "";
 }
 
+// The same run streamed to an HDF5 file as it goes (CrowdOptions::sink), its metrics computed on the
+// stream: the file read back.
+RecordFile streamed(const Written& w, const std::string& file, int threads = 1) {
+    CrowdOptions o = w.options;
+    o.threads = threads;
+    H5RecordWriter out(file, w.record.graph, w.record.scenario);
+    o.sink = &out;
+    CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
+    EXPECT_TRUE(run.record.choices.empty() && run.record.tracks[0].samples.empty());  // nothing kept
+    run.record.scenario = w.record.scenario;
+    out.finish(run.record, summary_json(run.summary), metrics_json(run.metrics.value()));
+    return read_record_file(file);
+}
+
 TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
     for (const Written* w : {&wandering(), &leaving()}) {
         const std::string json = record_to_text(w->record, w->summary, w->metrics);
         const std::string h5 = temp("run.h5");
         write_record_file(h5, w->record, w->summary, w->metrics);
         EXPECT_EQ(text_of(read_record_file(h5)), json);
+        // Streamed as the run goes, on one thread and on two.
+        for (int threads : {1, 2}) {
+            const RecordFile s = streamed(*w, h5, threads);
+            EXPECT_EQ(s.note, "");
+            EXPECT_EQ(text_of(s), json) << threads << " threads";
+        }
         // And back: the JSON file read and written as HDF5 again, then as JSON.
         const std::string j = temp("run.json"), h5b = temp("again.h5"), j2 = temp("again.json");
         write_record_file(j, w->record, w->summary, w->metrics);

@@ -10,6 +10,7 @@
 #include "mobb/core/path.h"
 #include "mobb/core/query.h"
 #include "mobb/core/tree.h"
+#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/motion_graph.h"
 #include "mobb/crowd/narrow_phase.h"
 #include "mobb/crowd/policy.h"
@@ -39,9 +40,11 @@ struct CrowdOptions {
     /// digests; off, the record's choice points keep only their counts, not their candidates (the runs are
     /// otherwise the same).
     bool record_queries = true;
-    /// When set, each choice point goes there as it is committed, its candidates (with record_queries)
-    /// included, and the record's choice points keep only their counts, plan and outcome - a long run's
-    /// candidates and queries are not held in memory.
+    /// When set, the run streams: its choice points (candidates included with record_queries), clips and
+    /// frames go there as they are committed and become final (RecordSink), the contact check and the
+    /// metrics run on the frames as they come (CrowdRun::metrics), and the run keeps none of them - the
+    /// returned record has only its header and its tracks' goals, at_goal and left_frame. Memory then does
+    /// not grow with the run's length.
     RecordSink* sink = nullptr;
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
@@ -98,6 +101,8 @@ struct CrowdRun {
     Record record;
     CrowdSummary summary;
     std::vector<LoggedQuery> queries;  ///< when options.log_queries
+    /// A streamed run's metrics (options.sink set), equal to crowd_metrics of its whole record.
+    std::optional<CrowdMetrics> metrics;
 };
 
 /// One tree per graph clip, built once.

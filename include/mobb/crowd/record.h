@@ -145,13 +145,29 @@ struct Record {
     std::vector<ChoicePoint> choices;
 };
 
-/// Where a run sends its choice points as it commits them (CrowdOptions::sink): a record file written as
-/// the run goes (record_file.h). Called from the simulation's thread, in commit order, the index being the
-/// choice point's in Record::choices.
+/// Frames first .. first + count - 1 of a run, once final (every agent's committed clips cover them):
+/// every agent's disk then, frame-major.
+struct FrameBlock {
+    std::int64_t first = 0, count = 0;
+    std::size_t agents = 0;
+    /// count x agents disks [t, x, y, r] (seconds, metres): agent a at frame first + k is
+    /// disks[k * agents + a]; NaN from the frame it left the run on.
+    const std::array<double, 4>* disks = nullptr;
+};
+
+/// Where a run streams its record (CrowdOptions::sink): a record file written as the run goes
+/// (record_file.h). Called from the simulation's thread: begin() first, then choice points and clips in
+/// commit order (a choice point's index is its place in Record::choices) and frame blocks in frame order,
+/// as they come. The base takes them and keeps nothing: a run that needs only its summary and metrics.
 class RecordSink {
 public:
     virtual ~RecordSink() = default;
-    virtual void choice(std::size_t index, const ChoicePoint& choice) = 0;
+    /// The run's header (dt, frames, world, seed, ...) and its tracks' goals and at_goal, before frame 0.
+    virtual void begin(const Record& /*header*/) {}
+    virtual void choice(std::size_t /*index*/, const ChoicePoint& /*choice*/) {}
+    /// A clip agent `agent` committed (PlacedClip::commit names its choice point).
+    virtual void clip(int /*agent*/, const PlacedClip& /*clip*/) {}
+    virtual void frames(const FrameBlock& /*block*/) {}
 };
 
 /// Two agents' disks overlapping at one global frame: |p_a - p_b| < r_a + r_b (the core's sample test).
@@ -194,7 +210,8 @@ std::string record_to_text(const Record& record, const std::string& summary_json
 /// finite escape places and held ground (r >= 0), reroutes of existing agents, candidates with
 /// 0 <= hits <= queries and no more queries listed than run, each naming a wall or obstacle of the world, an
 /// agent's starting ground or an earlier choice point. Clip ids are checked against a graph by
-/// check_graph_clips.
+/// check_graph_clips. An incomplete HDF5 record (record_file.h) is read up to its last mark, its note
+/// printed on stderr.
 Record load_record(const std::string& file);
 
 /// Throws std::runtime_error "PLACE: clip N is not in the graph GRAPH (M clips)" for the first clip id of the

@@ -18,12 +18,17 @@ namespace mobb::crowd {
 struct RecordFile {
     Record record;
     std::string summary_json, metrics_json;
+    /// One line when the file is incomplete (its writing stopped: killed, a full disk) and was read up to
+    /// its last mark: "FILE: incomplete ...: N of M frames"; empty for a finished file.
+    std::string note;
 };
 
 /// Whether `file` names an HDF5 record (extension .h5 or .hdf5).
 bool is_h5_record(const std::string& file);
 
-/// Reads a record file of either kind, every field checked as load_record says. Throws
+/// Reads a record file of either kind, every field checked as load_record says; an incomplete HDF5 file
+/// (RecordFile::note) up to its last mark: its frames so far, the choice points and clips of those
+/// frames. Throws
 /// std::runtime_error, one line naming the file and the place: "FILE: PLACE: message" (a JSON place like
 /// tracks[2].samples[7][3], an HDF5 one like /choices/agent block 3).
 RecordFile read_record_file(const std::string& file);
@@ -33,17 +38,26 @@ RecordFile read_record_file(const std::string& file);
 void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,
                        const std::string& metrics_json = "");
 
-/// An HDF5 record written as the run goes (CrowdOptions::sink): each choice point - candidates and queries
-/// included - appended to the file's tables, a block (4,096 rows) at a time, flushed after each; the rest
-/// (header, tracks, samples, summary, metrics) by finish() when the run ends. A writer stopped before
-/// finish() (killed, a full disk) leaves a file HDF5 opens, its tables as at the last block, marked
-/// incomplete (read_record_file refuses it in one line). Errors: std::runtime_error "FILE: PLACE: ...".
+/// An HDF5 record written as the run goes (CrowdOptions::sink): the header and goals when the run begins,
+/// each choice point (candidates and queries included) and each clip appended to the file's tables as they
+/// are committed, a block (4,096 rows) at a time, and the samples a block of frames at a time as the frames
+/// become final; the rest (the agents' left_frame, summary, metrics) by finish(). At least every 30 frames
+/// the file is flushed and marked readable up to there (its "written" attribute, docs/formats.md): a
+/// writer stopped before finish() (killed, a full disk) leaves a file that read_record_file reads up to
+/// that mark, with a note. write_record_file uses it for a whole record too. Errors: std::runtime_error
+/// "FILE: PLACE: ...".
 class H5RecordWriter : public RecordSink {
 public:
-    explicit H5RecordWriter(const std::string& file);  ///< creates (replaces) the file
+    /// Creates (replaces) the file; `graph` and `scenario` name them in the header until the record
+    /// given to begin() or finish() names its own.
+    explicit H5RecordWriter(const std::string& file, const std::string& graph = "", const std::string& scenario = "");
     ~H5RecordWriter() override;
+    void begin(const Record& header) override;
     void choice(std::size_t index, const ChoicePoint& choice) override;
-    /// Writes the rest of `record`, whose choice points are those sent (their count is checked).
+    void clip(int agent, const PlacedClip& clip) override;
+    void frames(const FrameBlock& block) override;
+    /// Writes the rest of `record`: its header, left frames, summary and metrics; its choice points, if it
+    /// holds any, must be those sent, and its frames those sent.
     void finish(const Record& record, const std::string& summary_json, const std::string& metrics_json);
 
 private:
@@ -61,6 +75,7 @@ struct SampleWindow {
     /// samples[(f - first) * agents + a]; NaN from the frame it left the run on.
     std::vector<std::array<double, 4>> samples;
     std::string summary_json, metrics_json;
+    std::string note;  ///< as RecordFile::note (frames: those the incomplete file holds)
 };
 
 /// Reads frames first .. last - 1 (clamped to the run) of a record file: of an HDF5 file only those
