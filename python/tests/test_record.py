@@ -59,3 +59,18 @@ def test_bad_files(tmp_path, records):
         mobb.read_record(str(cut))
     with pytest.raises(ValueError, match="missing.json: cannot open"):
         mobb.read_record(str(tmp_path / "missing.json"))
+
+
+@pytest.mark.parametrize("name, value, field", [("dt", 0.0, "dt"), ("frames", 0, "frames"), ("world", [0, 0, -1, 5], "world")])
+def test_an_hdf5_field_out_of_range_names_itself(tmp_path, records, mobb_exe, name, value, field):
+    # An HDF5 record goes through the same field checks as a JSON one: a well-formed file holding a
+    # value that makes no sense is refused in one line naming the file and the field, exit 1.
+    h5py = pytest.importorskip("h5py")
+    bad = tmp_path / ("bad_" + name + ".h5")
+    bad.write_bytes(records["h5"].read_bytes())
+    with h5py.File(bad, "r+") as f:
+        f.attrs.modify(name, np.array(value, dtype=f.attrs[name].dtype))
+    code, out, err = run_cli(mobb_exe, "record", "convert", str(bad), str(tmp_path / "out.json"))
+    assert code == 1 and out == "" and err.count("\n") == 1, err
+    assert str(bad) in err and field in err, err
+    assert not (tmp_path / "out.json").exists()
