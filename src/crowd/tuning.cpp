@@ -91,12 +91,17 @@ void set_tuning(CrowdTuning& tuning, const std::string& assignment) {
             if (const auto* i = std::get_if<int CrowdTuning::*>(&f.member)) tuning.*(*i) = parse_int(value);
             if (const auto* d = std::get_if<double CrowdTuning::*>(&f.member)) tuning.*(*d) = parse_double(value);
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument(name + ": '" + value + "' " + e.what());
+            std::string what = name;
+            what.append(": '").append(value).append("' ").append(e.what());
+            throw std::invalid_argument(what);
         }
         return;
     }
     std::string fields;
-    for (const Field& f : kFields) fields += std::string(fields.empty() ? "" : ", ") + f.name;
+    for (const Field& f : kFields) {
+        if (!fields.empty()) fields += ", ";
+        fields += f.name;
+    }
     throw std::invalid_argument("'" + name + "' is not a field of CrowdTuning (" + fields + ")");
 }
 
