@@ -1,6 +1,7 @@
 // Each crowd rule on a situation built for it, with the rule on and switched off (CrowdTuning): the
 // look-ahead gets an agent out of a ring of standing agents through its gap; the right of way, giving way
-// and the standing gap act in a dense wandering crowd, and leave no trace when off; making way ends the
+// and the standing gap act in a dense wandering crowd, and leave no trace when off (each on a small
+// situation of its own: rule_situations_test.cpp); making way ends the
 // standoff of two agents meeting in a door; the policies decide
 // what is theirs (whether choices reserve anything, who keeps the standing gap).
 #include <gtest/gtest.h>
