@@ -24,11 +24,12 @@ struct Entry {
     bool operator<(const Entry& o) const { return ix != o.ix ? ix < o.ix : iy != o.iy ? iy < o.iy : agent < o.agent; }
 };
 
-// Every agent's disk and commit order at every frame its clips cover, from the clips themselves.
+// Every agent's disk at every frame its clips cover, and the choice point that took the clip (its index is
+// the order of the commits), from the clips themselves.
 struct Positions {
     std::int64_t frames = 0;
     std::vector<Sample> disk;          // [agent * frames + f]
-    std::vector<std::int64_t> commit;  // same layout; -1 where no clip
+    std::vector<std::int64_t> choice;  // same layout; -1 where no clip
 };
 
 Positions positions(const MotionGraph& g, const Record& r) {
@@ -38,7 +39,7 @@ Positions positions(const MotionGraph& g, const Record& r) {
             p.frames = std::max(p.frames, c.start + std::int64_t(g.clips[std::size_t(c.clip)].path.size()));
     const std::size_t n = r.tracks.size() * std::size_t(p.frames);
     p.disk.assign(n, {});
-    p.commit.assign(n, -1);
+    p.choice.assign(n, -1);
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (const PlacedClip& c : r.tracks[a].clips) {
             const Rigid2 m = Rigid2::of(c.place);
@@ -47,7 +48,7 @@ Positions positions(const MotionGraph& g, const Record& r) {
                 const Sample& s = path.samples[i];
                 const std::size_t at = a * std::size_t(p.frames) + std::size_t(c.start) + i;
                 p.disk[at] = {m.apply_x(s.x, s.y), m.apply_y(s.x, s.y), s.r};
-                p.commit[at] = c.commit;
+                p.choice[at] = c.choice;
             }
         }
     return p;
@@ -74,7 +75,7 @@ FrameSteppingResult frame_stepping(const MotionGraph& g, const Record& r) {
         const std::size_t begin = grid.size();
         for (std::size_t a = 0; a < agents; ++a) {
             const std::size_t at = a * std::size_t(pos.frames) + std::size_t(f);
-            if (pos.commit[at] < 0) continue;
+            if (pos.choice[at] < 0) continue;
             grid.push_back({cell_of(pos.disk[at].x), cell_of(pos.disk[at].y), int(a)});
         }
         std::sort(grid.begin() + std::ptrdiff_t(begin), grid.end());
@@ -84,7 +85,7 @@ FrameSteppingResult frame_stepping(const MotionGraph& g, const Record& r) {
 
     std::vector<Placement> placement_of(r.choices.size());
     for (const AgentTrack& t : r.tracks)
-        for (const PlacedClip& c : t.clips) placement_of[std::size_t(c.commit)] = c.place;
+        for (const PlacedClip& c : t.clips) placement_of[std::size_t(c.choice)] = c.place;
     for (std::size_t ci = 0; ci < r.choices.size(); ++ci) {
         const ChoicePoint& cp = r.choices[ci];
         const Rigid2 m = Rigid2::of(placement_of[ci]);
@@ -105,7 +106,7 @@ FrameSteppingResult frame_stepping(const MotionGraph& g, const Record& r) {
                         for (auto it = std::lower_bound(first, last, Entry{ix + dx, iy + dy, -1});
                              it != last && it->ix == ix + dx && it->iy == iy + dy; ++it) {
                             const std::size_t at = std::size_t(it->agent) * std::size_t(pos.frames) + std::size_t(f);
-                            if (it->agent == cp.agent || pos.commit[at] >= std::int64_t(ci)) continue;
+                            if (it->agent == cp.agent || pos.choice[at] >= std::int64_t(ci)) continue;
                             ++out.disk_tests;
                             const Sample& o = pos.disk[at];
                             const double ddx = x - o.x, ddy = y - o.y, rr = s.r + o.r;

@@ -45,10 +45,10 @@ void hash_choice(Fnv& f, const ChoicePoint& cp) {
     f.add(cp.pruned);
     for (const Candidate& c : cp.candidates) {
         f.add(std::uint64_t(c.clip));
-        f.add(std::uint64_t(c.outside));
+        f.add(std::uint64_t(c.leaves_world || c.meets_solid));  // one bit, as bench/results/scale.json has it
         f.add(std::uint64_t(c.hits));
         for (const CandidateQuery& q : c.against)
-            f.add((std::uint64_t(std::uint32_t(q.agent)) << 40) ^ (std::uint64_t(std::uint32_t(q.commit)) << 8) ^
+            f.add((std::uint64_t(std::uint32_t(q.agent)) << 40) ^ (std::uint64_t(std::uint32_t(query_index(q))) << 8) ^
                   (std::uint64_t(q.piece + 1) << 1) ^ std::uint64_t(q.hit));
     }
 }
@@ -198,7 +198,7 @@ std::string record_digest(const Record& r) {
             f.add(c.place.y);
             f.add(c.place.theta);
             f.add(std::uint64_t(c.fallback));
-            f.add(std::uint64_t(c.commit));
+            f.add(std::uint64_t(c.choice));
         }
     char buf[20];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));

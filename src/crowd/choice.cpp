@@ -188,7 +188,7 @@ PlacedCandidate place_clip(const ClipOutline& outline, int clip, std::int64_t fr
     out.box.y0 -= outline.r_max;
     out.box.x1 += outline.r_max;
     out.box.y1 += outline.r_max;
-    out.outside = out.excess > 0;
+    out.leaves_world = out.excess > 0;
     return out;
 }
 
@@ -338,9 +338,11 @@ bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits 
     bool free = true;
     for (int i : near_) {
         const bool hit = meets_solid(s, mine, i);
-        record_query(s, k, mine, {-1, i, 0, 0, hit}, {});
+        CandidateQuery q;
+        q.agent = -1, q.solid = i, q.hit = hit;
+        record_query(s, k, mine, q, {});
         if (!hit) continue;
-        point_.candidates[std::size_t(k)].outside = true;
+        point_.candidates[std::size_t(k)].meets_solid = true;
         free = false;
         if (hits != Hits::Count) return false;
     }
@@ -370,7 +372,9 @@ bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits 
         if (!hit && mine.kind == Piece::Clip && other.kind == Piece::Clip && st.tests2d + st.tests3d <= 1 &&
             st.samples == 0)
             ++root_rejected_;
-        record_query(s, k, mine, {other.agent, other.commit, other.index, 0, hit}, st);
+        CandidateQuery q;
+        q.agent = other.agent, q.choice = other.choice, q.piece = other.index, q.hit = hit;
+        record_query(s, k, mine, q, st);
         if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
             log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
         if (!hit) continue;
@@ -428,12 +432,13 @@ void Choice::fall_back(const CrowdState& s) {
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
         if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
-        point_.candidates[std::size_t(k)] = {c.clip, false, 0, 0, {}};
+        point_.candidates[std::size_t(k)] = Candidate{};
+        point_.candidates[std::size_t(k)].clip = c.clip;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         free_of_others(s, k, mine, Hits::Count);
         const Candidate& cand = point_.candidates[std::size_t(k)];
-        const std::pair<int, int> key{cand.outside ? 1 : 0, cand.hits};
+        const std::pair<int, int> key{cand.meets_solid ? 1 : 0, cand.hits};
         if (key < best_key) best = k, best_key = key;
     }
     take(best, Outcome::Fallback);
@@ -445,11 +450,11 @@ void Choice::fall_back(const CrowdState& s) {
 void Choice::evaluate_random(const CrowdState& s) {
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        point_.candidates.push_back({c.clip, c.outside, 0, 0, {}});
+        point_.candidates.emplace_back().clip = c.clip;
+        point_.candidates.back().leaves_world = c.leaves_world;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         free_of_others(s, k, mine, Hits::Count);
-        point_.candidates.back().outside = c.outside;  // the random mode's meaning: leaves the world
     }
     take(random_pick_, Outcome::Candidate);
     plan_ = Plan{};
@@ -492,7 +497,7 @@ void Choice::evaluate(const CrowdState& s) {
             if (take_right_of_way(s, k)) return;
             right_of_way = false;
         }
-        point_.candidates.push_back({c.clip, false, 0, 0, {}});
+        point_.candidates.emplace_back().clip = c.clip;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, Hits::Stop)) continue;

@@ -46,8 +46,8 @@ struct PlacedCandidate {
     int clip = 0;
     Placement place;
     SpaceTimeBox box;
-    bool outside = false;
-    double excess = 0;  ///< metres farther outside than at the start (the random mode's "leaves the world")
+    bool leaves_world = false;  ///< excess > 0 (Candidate::leaves_world)
+    double excess = 0;          ///< metres farther outside than at the start (the random mode's "leaves the world")
 };
 
 /// Places graph clip `clip` (outline `outline`, `frames` long) at `p` (rotation m = Rigid2::of(p)) from
@@ -83,7 +83,7 @@ struct Plan {
 struct Piece {
     enum Kind : std::uint8_t { Clip, Held } kind = Clip;
     int agent = -1;        ///< owner
-    int commit = 0;        ///< the choice point (record order) whose plan holds it
+    int choice = 0;        ///< the choice point (record order) whose plan holds it
     int index = 0;         ///< 0: the clip committed to; 1, 2, ...: its escape clips; -1: the held ground
     std::int64_t seq = 0;  ///< pieces placed before it have smaller ones (broad-phase ids are reused)
     BoxedClip clip;        ///< Clip

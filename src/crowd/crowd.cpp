@@ -170,15 +170,15 @@ void Simulation::count(const Choice& c, const ChoicePoint& cp) {
     if (cp.fallback) {
         ++s.fallbacks;
         for (const Candidate& k : cp.candidates)
-            if (k.clip == cp.taken && k.outside) {
-                ++s.outside;
+            if (k.clip == cp.taken && k.meets_solid) {
+                ++s.fallbacks_meeting_solids;
                 break;
             }
     }
 }
 
-// Agent `agent`'s plan from now on, by choice point `commit`: what it reserved before is released.
-void Simulation::reserve(int agent, int commit, const Plan& plan) {
+// Agent `agent`'s plan from now on, by choice point `choice`: what it reserved before is released.
+void Simulation::reserve(int agent, int choice, const Plan& plan) {
     MOBB_ASSERT(agent >= 0 && std::size_t(agent) < agents_.size());
     MOBB_ASSERT(plan.escape.empty() || plan.hold);  // an escape ends on held ground
     Agent& a = agents_[std::size_t(agent)];
@@ -186,7 +186,7 @@ void Simulation::reserve(int agent, int commit, const Plan& plan) {
     a.reserved.clear();
     Piece p;
     p.agent = agent;
-    p.commit = commit;
+    p.choice = choice;
     for (std::size_t i = 0; i < plan.escape.size(); ++i) {
         p.index = int(i) + 1;
         p.clip = plan.escape[i];
@@ -248,19 +248,19 @@ void Simulation::commit(Choice& c) {
     cp.pruned = pairs > c.near_total() ? pairs - c.near_total() : 0;
     out_.summary.time_pairs += pairs;
     if (o_.log_queries) log_queries(c);
-    const int commit = int(out_.summary.choice_points);  // the choice points committed so far
+    const int choice = int(out_.summary.choice_points);  // its index: the choice points committed so far
     Agent& a = agents_[std::size_t(c.agent())];
     const BoxedClip& t = c.taken();
-    a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, commit});
+    a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, choice});
     if (stream_) stream_->clip(c.agent(), a.clips.back()), a.clips.erase(a.clips.begin(), a.clips.end() - 1);
     Piece clip;
     clip.agent = c.agent();
-    clip.commit = commit;
+    clip.choice = choice;
     clip.clip = t;
     add_piece(clip, true);
-    reserve(c.agent(), commit, c.plan());
+    reserve(c.agent(), choice, c.plan());
     for (const auto& [x, y, seconds] : c.learned()) a.learned.raise(x, y, seconds);
-    for (const Reroute& r : c.reroutes()) reserve(r.agent, commit, r.plan);
+    for (const Reroute& r : c.reroutes()) reserve(r.agent, choice, r.plan);
     if (c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold) {
         a.arrived = true;
         policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
@@ -280,7 +280,7 @@ void Simulation::commit(Choice& c) {
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
-    if (o_.sink) return o_.sink->choice(std::size_t(commit), cp);  // streamed: the record keeps none
+    if (o_.sink) return o_.sink->choice(std::size_t(choice), cp);  // streamed: the record keeps none
     if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
     std::vector<Candidate> candidates = std::move(cp.candidates);

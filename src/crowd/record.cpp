@@ -83,25 +83,25 @@ ReservedPlan reserved_plan(const ChoicePoint& cp, int agent) {
     }
     for (const ReroutedPlan& r : cp.reroutes)
         if (r.agent == agent) return {&r.escape, HeldGround{r.hold, r.hold_frame}};
-    throw std::out_of_range("no plan of that agent at that commit");
+    throw std::out_of_range("no plan of that agent at that choice point");
 }
 
 }  // namespace
 
 std::optional<FramedClip> query_clip(const Record& r, const CandidateQuery& q) {
     if (q.agent < 0 || q.piece < 0) return std::nullopt;
-    const ChoicePoint& cp = r.choices.at(std::size_t(q.commit));
+    const ChoicePoint& cp = r.choices.at(std::size_t(q.choice));
     if (q.piece > 0) return reserved_plan(cp, q.agent).escape->at(std::size_t(q.piece - 1));
     const auto& clips = r.tracks.at(std::size_t(q.agent)).clips;
-    const auto it = std::lower_bound(clips.begin(), clips.end(), std::int64_t(q.commit),
-                                     [](const PlacedClip& c, std::int64_t x) { return c.commit < x; });
-    if (it == clips.end() || it->commit != q.commit) throw std::out_of_range("no clip of that commit");
+    const auto it = std::lower_bound(clips.begin(), clips.end(), std::int64_t(q.choice),
+                                     [](const PlacedClip& c, std::int64_t x) { return c.choice < x; });
+    if (it == clips.end() || it->choice != q.choice) throw std::out_of_range("no clip of that choice point");
     return FramedClip{it->clip, it->start, it->place};
 }
 
 std::optional<HeldGround> query_hold(const Record& r, const CandidateQuery& q) {
-    if (q.agent < 0 || q.piece != -1 || q.commit < 0) return std::nullopt;
-    const std::optional<HeldGround> h = reserved_plan(r.choices.at(std::size_t(q.commit)), q.agent).hold;
+    if (q.agent < 0 || q.piece != -1 || q.choice < 0) return std::nullopt;
+    const std::optional<HeldGround> h = reserved_plan(r.choices.at(std::size_t(q.choice)), q.agent).hold;
     if (!h) throw std::out_of_range("no held ground in that plan");
     return h;
 }

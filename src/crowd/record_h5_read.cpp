@@ -168,7 +168,10 @@ I left_frames(const D& samples, std::int64_t frames, std::size_t agents) {
     return left;
 }
 
-J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held) {
+// `older`: a record of version 2, whose clips name their choice point "commit" (read as the JSON reader's
+// upgrade has it).
+J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held, bool older) {
+    const char* const choice = older ? "commit" : "choice";
     const auto read =
         h5::read_rows<double>(f, "/tracks/samples", {hsize_t(agents), 4}, held.complete ? ~hsize_t(0) : hsize_t(frames),
                               hsize_t(block_frames(agents)));  // an incomplete file: the frames of the mark
@@ -199,13 +202,13 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held) {
     const I agent = rows<std::int64_t>(f, "/clips/agent", held), clip = rows<std::int64_t>(f, "/clips/clip", held),
             start = rows<std::int64_t>(f, "/clips/start", held),
             fallback = rows<std::int64_t>(f, "/clips/fallback", held),
-            commit = rows<std::int64_t>(f, "/clips/commit", held);
+            taker = rows<std::int64_t>(f, std::string("/clips/") + choice, held);
     const D place = rows<double>(f, "/clips/place", held, {4});
     const std::size_t n = same_rows("/clips", {{"agent", agent.size()},
                                                {"clip", clip.size()},
                                                {"start", start.size()},
                                                {"fallback", fallback.size()},
-                                               {"commit", commit.size()},
+                                               {choice, taker.size()},
                                                {"place", place.size() / 4}});
     for (std::size_t k = 0; k < n; ++k)
         if (held.complete || start[k] < frames)  // an incomplete file: the clips of the frames it holds
@@ -214,7 +217,7 @@ J tracks(hid_t f, std::int64_t frames, std::size_t agents, const Held& held) {
                  {"start", start[k]},
                  {"place", {place[4 * k], place[4 * k + 1], place[4 * k + 2], place[4 * k + 3]}},
                  {"fallback", fallback[k] != 0},
-                 {"commit", commit[k]}});
+                 {choice, taker[k]}});
     for (std::size_t a = 0; a < agents; ++a) {
         const std::int64_t until = left[a] >= 0 ? std::min(left[a], frames) : frames;
         for (std::int64_t k = 0; k < until; ++k) {
@@ -302,14 +305,20 @@ J choices(hid_t f, double dt, const Held& held) {
     return out;
 }
 
-// The candidates of each choice point, with their queries ("against").
-void candidates(hid_t f, J& choices, const Held& held) {
-    static const char* const kNames[] = {"choice", "clip", "outside", "queries", "hits", "crowded"};
+// The candidates of each choice point, with their queries ("against"). `older`: version 2, one flag
+// "outside" for leaves_world and meets_solid, a query's index named "commit" (the JSON reader upgrades).
+void candidates(hid_t f, J& choices, const Held& held, bool older) {
+    static const std::vector<const char*> kNames = {"choice",  "clip", "leaves_world", "meets_solid",
+                                                    "queries", "hits", "crowded"};
+    static const std::vector<const char*> kOlder = {"choice", "clip", "outside", "queries", "hits", "crowded"};
+    const std::vector<const char*>& names = older ? kOlder : kNames;
+    const std::size_t flags = names.size() - 5;  // the flags, from column 2 on
     std::vector<I> c;
-    for (const char* name : kNames) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name, held));
+    c.reserve(names.size());
+    for (const char* name : names) c.push_back(rows<std::int64_t>(f, std::string("/candidates/") + name, held));
     for (std::size_t k = 0; k < c.size(); ++k)
-        same_rows("/candidates", {{"choice", c[0].size()}, {kNames[k], c[k].size()}});
-    static const char* const kQuery[] = {"candidate", "agent", "commit", "piece", "mine", "hit"};
+        same_rows("/candidates", {{"choice", c[0].size()}, {names[k], c[k].size()}});
+    const char* const kQuery[] = {"candidate", "agent", older ? "commit" : "index", "piece", "mine", "hit"};
     std::vector<I> q;
     for (const char* name : kQuery) q.push_back(rows<std::int64_t>(f, std::string("/queries/") + name, held));
     for (std::size_t k = 0; k < q.size(); ++k)
@@ -321,12 +330,13 @@ void candidates(hid_t f, J& choices, const Held& held) {
             {q[1][k], q[2][k], q[3][k], q[4][k], q[5][k]});
     for (std::size_t k = 0; k < nc; ++k) {
         J& list = choices[owner(c[0], k, choices.size(), "/candidates/choice")]["candidates"];
-        list.push_back({{"clip", c[1][k]},
-                        {"outside", c[2][k] != 0},
-                        {"queries", c[3][k]},
-                        {"hits", c[4][k]},
-                        {"against", std::move(against[k])}});
-        if (c[5][k]) list.back()["crowded"] = true;
+        J cand = {{"clip", c[1][k]}};
+        for (std::size_t i = 2; i < 2 + flags; ++i) cand[names[i]] = c[i][k] != 0;
+        cand["queries"] = c[2 + flags][k];
+        cand["hits"] = c[3 + flags][k];
+        cand["against"] = std::move(against[k]);
+        if (c[4 + flags][k]) cand["crowded"] = true;
+        list.push_back(std::move(cand));
     }
 }
 
@@ -354,15 +364,16 @@ RecordFile read_h5_record(const std::string& file) {
         const std::int64_t agents = j["agents"].get<std::int64_t>(), frames = j["frames"].get<std::int64_t>();
         if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
         if (frames < 1 || frames > 100'000'000) throw h5::Error("attribute frames: expected 1 to 100,000,000");
-        j["tracks"] = tracks(f.get(), frames, std::size_t(agents), held);
+        const bool older = j["version"].get<std::int64_t>() < kRecordVersion;
+        j["tracks"] = tracks(f.get(), frames, std::size_t(agents), held, older);
         j["choices"] = choices(f.get(), j["dt"].get<double>(), held);
-        candidates(f.get(), j["choices"], held);
+        candidates(f.get(), j["choices"], held, older);
     } catch (const h5::Error& e) {
         throw std::runtime_error(file + ": " + e.what());
     }
     RecordFile out;
     out.record = record_from_json(j, file);
-    out.summary_json = j["summary"].dump();
+    out.summary_json = stored_summary(j);
     if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
     out.note = note(file, held);
     return out;
@@ -393,7 +404,7 @@ SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::in
                                             hsize_t(w.last - w.first), hsize_t(block_frames(w.agents)));
         w.samples.resize(v.size() / 4);
         for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
-        w.summary_json = j["summary"].dump();
+        w.summary_json = stored_summary(j);
         if (j.contains("metrics")) w.metrics_json = j["metrics"].dump();
         w.note = note(file, held);
     } catch (const h5::Error& e) {

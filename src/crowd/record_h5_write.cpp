@@ -34,7 +34,7 @@ constexpr std::int64_t kMarkFrames = 30;
 void write_header(hid_t f, const Record& r, const Record& names, const std::string& summary,
                   const std::string& metrics) {
     h5::write_text(f, "format", "mobb crowd record");
-    h5::write_numbers<std::int64_t>(f, "version", {2});
+    h5::write_numbers<std::int64_t>(f, "version", {kRecordVersion});
     h5::write_text(f, "graph", names.graph);
     h5::write_numbers<double>(f, "dt", {r.dt});
     h5::write_numbers<std::int64_t>(f, "frames", {r.frames});
@@ -125,9 +125,10 @@ struct Tables {
           intended(f, "/intended", {"choice", "clip", "frame"}, {{"place", 3}}),
           reroutes(f, "/reroutes", {"choice", "agent", "hold_frame"}, {{"hold", 3}}),
           reroute_escapes(f, "/reroute_escapes", {"reroute", "clip", "frame"}, {{"place", 3}}),
-          candidates(f, "/candidates", {"choice", "clip", "outside", "queries", "hits", "crowded"}, {}),
-          queries(f, "/queries", {"candidate", "agent", "commit", "piece", "mine", "hit"}, {}),
-          clips(f, "/clips", {"agent", "clip", "start", "fallback", "commit"}, {{"place", 4}}) {}
+          candidates(f, "/candidates", {"choice", "clip", "leaves_world", "meets_solid", "queries", "hits", "crowded"},
+                     {}),
+          queries(f, "/queries", {"candidate", "agent", "index", "piece", "mine", "hit"}, {}),
+          clips(f, "/clips", {"agent", "clip", "start", "fallback", "choice"}, {{"place", 4}}) {}
 
     static void framed(Table& t, std::size_t owner, const std::vector<FramedClip>& clips) {
         for (const FramedClip& c : clips) {
@@ -160,17 +161,19 @@ struct Tables {
         }
         for (const Candidate& k : cp.candidates) {
             for (const CandidateQuery& q : k.against) {
-                const std::int64_t r[] = {std::int64_t(candidates.rows()), q.agent, q.commit, q.piece, q.mine, q.hit};
+                const std::int64_t r[] = {
+                    std::int64_t(candidates.rows()), q.agent, query_index(q), q.piece, q.mine, q.hit};
                 for (std::size_t j = 0; j < 6; ++j) queries.i(j).push_back(r[j]);
             }
-            const std::int64_t r[] = {std::int64_t(c), k.clip, k.outside, k.queries, k.hits, k.crowded};
-            for (std::size_t j = 0; j < 6; ++j) candidates.i(j).push_back(r[j]);
+            const std::int64_t r[] = {std::int64_t(c), k.clip, k.leaves_world, k.meets_solid,
+                                      k.queries,       k.hits, k.crowded};
+            for (std::size_t j = 0; j < std::size(r); ++j) candidates.i(j).push_back(r[j]);
         }
         for (Table* t : all()) t->flush(false);
     }
 
     void add(int agent, const PlacedClip& c) {
-        const std::int64_t row[] = {agent, c.clip, c.start, c.fallback, c.commit};
+        const std::int64_t row[] = {agent, c.clip, c.start, c.fallback, c.choice};
         for (std::size_t k = 0; k < std::size(row); ++k) clips.i(k).push_back(row[k]);
         clips.d(0).insert(clips.d(0).end(), {c.place.x, c.place.y, c.place.theta, c.place.t0});
         clips.flush(false);
@@ -312,7 +315,7 @@ void write_h5_record(const std::string& file, const Record& r, const std::string
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (const PlacedClip& c : r.tracks[a].clips) clips.emplace_back(int(a), &c);
     std::stable_sort(clips.begin(), clips.end(),
-                     [](const auto& x, const auto& y) { return x.second->commit < y.second->commit; });
+                     [](const auto& x, const auto& y) { return x.second->choice < y.second->choice; });
     for (const auto& [agent, c] : clips) out.clip(agent, *c);
     const std::size_t n = r.tracks.size();
     const std::int64_t block = block_frames(n);

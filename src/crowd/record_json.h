@@ -17,6 +17,10 @@ Record record_from_json(const nlohmann::ordered_json& j, const std::string& file
 /// The record as a JSON document; `summary` and `metrics` (JSON objects as text) inserted as given.
 nlohmann::ordered_json record_json(const Record& r, const std::string& summary_json, const std::string& metrics_json);
 
+/// The "summary" of a record document as text; a version 1 or 2 record's under this version's names
+/// ("fallbacks_outside_world" counted fallbacks meeting a wall or an obstacle).
+std::string stored_summary(const nlohmann::ordered_json& j);
+
 /// Reads a JSON record file (record_from_json) with its summary and metrics.
 RecordFile read_json_record(const std::string& file);
 

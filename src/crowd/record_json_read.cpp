@@ -119,7 +119,7 @@ void check_time(double t, std::int64_t frame, double dt, double slack, const std
 
 void check_header(const json& j) {
     if (j.contains("format") && j["format"] != "mobb crowd record") fail("format", "expected \"mobb crowd record\"");
-    if (j.contains("version")) integer(j["version"], "version", 1, 2);
+    if (j.contains("version")) integer(j["version"], "version", 1, kRecordVersion);
 }
 
 // "world": [W, H] for [0, W] x [0, H], or [x0, y0, x1, y1], a rectangle of positive area; "walls";
@@ -154,8 +154,8 @@ World world_of(const json& j) {
 }
 
 // A track's clips: graph clip ids, the first from frame 0, then starting in time order inside the run,
-// each placed at its start time (t0 = start * dt), committed by choice points in order (-1: none, the
-// agent's first clip; the choice points' count is checked once they are read).
+// each placed at its start time (t0 = start * dt), taken by choice points in order ("choice", -1: none,
+// the agent's first clip; the choice points' count is checked once they are read).
 PlacedClip placed_clip_of(const json& c, const Record& r, const PlacedClip* before, const std::string& w) {
     PlacedClip out;
     out.clip = index(need(c, "clip", w), dot(w, "clip"), 0, kNoLimit);
@@ -171,10 +171,10 @@ PlacedClip placed_clip_of(const json& c, const Record& r, const PlacedClip* befo
                  finite(p[3], at(wp, 3))};
     check_time(out.place.t0, out.start, r.dt, 1e-9, at(wp, 3));
     out.fallback = boolean(need(c, "fallback", w), dot(w, "fallback"));
-    out.commit = integer(need(c, "commit", w), dot(w, "commit"), -1, kNoLimit);
-    if (before && out.commit < before->commit)
-        fail(dot(w, "commit"),
-             std::to_string(out.commit) + ": commits in order, the clip before's is " + std::to_string(before->commit));
+    out.choice = integer(need(c, "choice", w), dot(w, "choice"), -1, kNoLimit);
+    if (before && out.choice < before->choice)
+        fail(dot(w, "choice"), std::to_string(out.choice) + ": choice points in order, the clip before's is " +
+                                   std::to_string(before->choice));
     return out;
 }
 
@@ -275,32 +275,38 @@ void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string&
     }
 }
 
-// A query [agent, commit, piece, mine, hit]: against a solid (agent -1, commit the solid's index: the
-// obstacles, then the four walls when walled), the ground an agent started on (commit -1, piece -1), or a
-// piece of an earlier choice point's plan; mine >= -1; hit 0 or 1.
+// A query [agent, index, piece, mine, hit]: against a solid (agent -1, index the solid's: the obstacles,
+// then the four walls when walled), the ground an agent started on (index -1, piece -1), or a piece of
+// the plan of an earlier choice point (index its place in "choices"); mine >= -1; hit 0 or 1.
 CandidateQuery query_of(const json& q, const Record& r, const std::string& w) {
-    const json& v = tuple(q, 5, w, "[agent, commit, piece, mine, hit]");
-    const CandidateQuery cq{index(v[0], at(w, 0), -1, std::int64_t(r.tracks.size()) - 1),
-                            index(v[1], at(w, 1), -1, kNoLimit), index(v[2], at(w, 2), -1, kNoLimit),
-                            index(v[3], at(w, 3), -1, kNoLimit), index(v[4], at(w, 4), 0, 1) != 0};
+    const json& v = tuple(q, 5, w, "[agent, index, piece, mine, hit]");
+    CandidateQuery cq;
+    cq.agent = index(v[0], at(w, 0), -1, std::int64_t(r.tracks.size()) - 1);
+    const int i = index(v[1], at(w, 1), -1, kNoLimit);
+    cq.piece = index(v[2], at(w, 2), -1, kNoLimit);
+    cq.mine = index(v[3], at(w, 3), -1, kNoLimit);
+    cq.hit = index(v[4], at(w, 4), 0, 1) != 0;
     if (cq.agent == -1) {
         const std::size_t solids = r.world.obstacles.size() + (r.world.walls ? 4 : 0);
         if (cq.piece != 0) fail(at(w, 2), "a wall or an obstacle (agent -1) is piece 0");
-        if (cq.commit < 0 || std::size_t(cq.commit) >= solids)
-            fail(at(w, 1), std::to_string(cq.commit) + ": no such wall or obstacle (" + std::to_string(solids) + ")");
+        if (i < 0 || std::size_t(i) >= solids)
+            fail(at(w, 1), std::to_string(i) + ": no such wall or obstacle (" + std::to_string(solids) + ")");
+        cq.solid = i;
         return cq;
     }
-    const bool start = cq.commit == -1 && cq.piece == -1;                         // the ground the agent started on
-    if (!start && (cq.commit < 0 || std::size_t(cq.commit) >= r.choices.size()))  // queries name earlier ones only
-        fail(at(w, 1), std::to_string(cq.commit) + ": names no earlier choice point (" +
-                           std::to_string(r.choices.size()) + " before this one)");
+    const bool start = i == -1 && cq.piece == -1;                 // the ground the agent started on
+    if (!start && (i < 0 || std::size_t(i) >= r.choices.size()))  // queries name earlier ones only
+        fail(at(w, 1), std::to_string(i) + ": names no earlier choice point (" + std::to_string(r.choices.size()) +
+                           " before this one)");
+    cq.choice = i;
     return cq;
 }
 
 Candidate candidate_of(const json& k, const Record& r, const std::string& w) {
     Candidate cand;
     cand.clip = index(need(k, "clip", w), dot(w, "clip"), 0, kNoLimit);
-    cand.outside = boolean(need(k, "outside", w), dot(w, "outside"));
+    cand.leaves_world = boolean(need(k, "leaves_world", w), dot(w, "leaves_world"));
+    cand.meets_solid = boolean(need(k, "meets_solid", w), dot(w, "meets_solid"));
     cand.queries = index(need(k, "queries", w), dot(w, "queries"), 0, kNoLimit);
     cand.hits = index(need(k, "hits", w), dot(w, "hits"), 0, cand.queries);
     const json& against = array(need(k, "against", w), dot(w, "against"), "an array of queries");
@@ -367,11 +373,45 @@ Record record_of(const json& j) {
     for (std::size_t k = 0; k < choices.size(); ++k) r.choices.push_back(choice_of(choices[k], r, at("choices", k)));
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
-            if (r.tracks[a].clips[k].commit >= std::int64_t(r.choices.size()))
-                fail(at(at("tracks", a) + ".clips", k) + ".commit",
-                     std::to_string(r.tracks[a].clips[k].commit) + ": the record has " +
+            if (r.tracks[a].clips[k].choice >= std::int64_t(r.choices.size()))
+                fail(at(at("tracks", a) + ".clips", k) + ".choice",
+                     std::to_string(r.tracks[a].clips[k].choice) + ": the record has " +
                          std::to_string(r.choices.size()) + " choice points");
     return r;
+}
+
+// A record of version 1 or 2 in this version's names: a clip's "commit" is its "choice"; a candidate's
+// one flag "outside" meant leaving the world in random mode (which queries no solids: meets_solid false)
+// and meeting a wall or an obstacle otherwise.
+json upgraded(const json& j) {
+    json out = j;
+    out["version"] = kRecordVersion;
+    const bool random = j.contains("select") && j["select"] == "random";
+    const auto rename = [](json& o, const char* from, const char* to) {
+        if (!o.is_object() || !o.contains(from)) return;
+        json v = std::move(o[from]);  // moved out first: inserting `to` may move the object's members
+        o.erase(from);
+        o[to] = std::move(v);
+    };
+    const auto each = [](json& parent, const char* key, const auto& f) {
+        if (parent.is_object() && parent.contains(key) && parent[key].is_array())
+            for (json& x : parent[key]) f(x);
+    };
+    each(out, "tracks", [&](json& t) { each(t, "clips", [&](json& c) { rename(c, "commit", "choice"); }); });
+    each(out, "choices", [&](json& c) {
+        each(c, "candidates", [&](json& k) {
+            if (!k.is_object() || !k.contains("outside")) return;
+            k[random ? "meets_solid" : "leaves_world"] = false;
+            rename(k, "outside", random ? "leaves_world" : "meets_solid");
+        });
+    });
+    return out;
+}
+
+bool older(const json& j) {
+    const auto it = j.find("version");
+    return it != j.end() && it->is_number_integer() && it->get<std::int64_t>() >= 1 &&
+           it->get<std::int64_t>() < kRecordVersion;
 }
 
 }  // namespace
@@ -379,7 +419,7 @@ Record record_of(const json& j) {
 Record record_from_json(const nlohmann::ordered_json& j, const std::string& file) {
     if (!j.is_object()) throw std::runtime_error(file + ": not valid JSON");
     try {
-        return record_of(j);
+        return older(j) ? record_of(upgraded(j)) : record_of(j);
     } catch (const Bad& e) {
         throw std::runtime_error(file + ": " + e.what());
     } catch (const nlohmann::json::exception& e) {
@@ -389,6 +429,15 @@ Record record_from_json(const nlohmann::ordered_json& j, const std::string& file
     }
 }
 
+std::string stored_summary(const nlohmann::ordered_json& j) {
+    const json& s = j["summary"];
+    if (!older(j) || !s.is_object()) return s.dump();
+    json out = json::object();  // in the same order
+    for (const auto& [key, value] : s.items())
+        out[key == "fallbacks_outside_world" ? "fallbacks_meeting_solids" : key] = value;
+    return out.dump();
+}
+
 RecordFile read_json_record(const std::string& file) {
     std::ifstream in(file);
     if (!in) throw std::runtime_error(file + ": cannot open");
@@ -396,7 +445,7 @@ RecordFile read_json_record(const std::string& file) {
     if (j.is_discarded() || !j.is_object()) throw std::runtime_error(file + ": not valid JSON");
     RecordFile out;
     out.record = record_from_json(j, file);
-    if (j.contains("summary")) out.summary_json = j["summary"].dump();
+    if (j.contains("summary")) out.summary_json = stored_summary(j);
     if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
     return out;
 }

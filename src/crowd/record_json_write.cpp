@@ -34,7 +34,7 @@ J track_json(const AgentTrack& t) {
                          {"start", c.start},
                          {"place", {c.place.x, c.place.y, c.place.theta, c.place.t0}},
                          {"fallback", c.fallback},
-                         {"commit", c.commit}});
+                         {"choice", c.choice}});
     J samples = J::array();
     for (const auto& s : t.samples) samples.push_back({s[0], s[1], s[2], s[3]});
     J out = J::object();
@@ -75,9 +75,14 @@ J choice_json(const ChoicePoint& c, double dt) {
     J cands = J::array();
     for (const Candidate& k : c.candidates) {
         J against = J::array();
-        for (const CandidateQuery& q : k.against) against.push_back({q.agent, q.commit, q.piece, q.mine, int(q.hit)});
-        cands.push_back(
-            {{"clip", k.clip}, {"outside", k.outside}, {"queries", k.queries}, {"hits", k.hits}, {"against", against}});
+        for (const CandidateQuery& q : k.against)
+            against.push_back({q.agent, query_index(q), q.piece, q.mine, int(q.hit)});
+        cands.push_back({{"clip", k.clip},
+                         {"leaves_world", k.leaves_world},
+                         {"meets_solid", k.meets_solid},
+                         {"queries", k.queries},
+                         {"hits", k.hits},
+                         {"against", against}});
         if (k.crowded) cands.back()["crowded"] = true;
     }
     return {{"agent", c.agent},     {"frame", c.frame},     {"t", util::rounded(double(c.frame) * dt, 9)},
@@ -92,7 +97,7 @@ J choice_json(const ChoicePoint& c, double dt) {
 nlohmann::ordered_json record_json(const Record& r, const std::string& summary_json, const std::string& metrics_json) {
     J j;
     j["format"] = "mobb crowd record";
-    j["version"] = 2;
+    j["version"] = kRecordVersion;
     j["graph"] = r.graph;
     j["dt"] = r.dt;
     j["frames"] = r.frames;

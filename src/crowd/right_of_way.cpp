@@ -19,7 +19,7 @@ namespace mobb::crowd {
 // clip or held ground, not the clip it plays nor where it started) of an agent that plays a clip moving
 // beyond this frame (not at a choice point now, not standing, not at its goal).
 bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
-    if (other.index == 0 || other.commit < 0) return false;
+    if (other.index == 0 || other.choice < 0) return false;
     const Agent& owner = s.agents[std::size_t(other.agent)];
     if (owner.arrived || owner.clips.empty()) return false;
     const PlacedClip& playing = owner.clips.back();

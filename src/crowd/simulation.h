@@ -46,7 +46,7 @@ private:
     void apply_ways();
     void gather(std::size_t n);
     int add_piece(const Piece& piece, bool pending);
-    void reserve(int agent, int commit, const Plan& plan);
+    void reserve(int agent, int choice, const Plan& plan);
     void commit(Choice& c);
     void record_plan(const Choice& c, ChoicePoint& cp) const;
     void count(const Choice& c, const ChoicePoint& cp);

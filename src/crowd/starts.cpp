@@ -119,7 +119,7 @@ void Simulation::reserve_starts() {
         Piece p;
         p.kind = Piece::Held;
         p.agent = a;
-        p.commit = -1;
+        p.choice = -1;
         p.index = -1;
         p.hold = h;
         agent.plan.hold = h;

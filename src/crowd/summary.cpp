@@ -34,7 +34,7 @@ std::string summary_json(const CrowdSummary& s) {
     j["right_of_way"] = s.right_of_way;
     j["reroutes"] = s.reroutes;
     j["fallbacks"] = s.fallbacks;
-    j["fallbacks_outside_world"] = s.outside;
+    j["fallbacks_meeting_solids"] = s.fallbacks_meeting_solids;
     j["contacts"] = s.contacts;
     j["contacts_outside_fallbacks"] = s.contacts_unexcused;
     j["reevaluated"] = s.reevaluated;
@@ -53,7 +53,7 @@ std::string summary_text(const CrowdSummary& s) {
         << " % of choice points)\n"
         << "right of way             " << s.right_of_way << " (" << s.reroutes << " plans of others gave way)\n"
         << "fallbacks                " << s.fallbacks << " (" << 100.0 * per(s.fallbacks, s.choice_points) << " %, "
-        << s.outside << " leaving the world)\n"
+        << s.fallbacks_meeting_solids << " meeting a wall or an obstacle)\n"
         << "contacts (frame check)   " << s.contacts << " agent-pair frames, " << s.contacts_unexcused
         << " outside fallbacks\n"
         << "re-evaluated choices     " << s.reevaluated << " (a commit earlier in the frame was near)\n"

@@ -38,7 +38,7 @@ float room_for_lists(const Ui& ui) {
 /// What a query was against, in words: another agent's clip (committed, or reserved to stop it), its
 /// held ground, or a wall or an obstacle.
 std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q) {
-    if (q.agent < 0) return "wall or obstacle " + std::to_string(q.commit);
+    if (q.agent < 0) return "wall or obstacle " + std::to_string(q.solid);
     if (q.piece < 0) return "agent " + std::to_string(q.agent) + ", held ground";
     try {
         const auto c = crowd::query_clip(r, q);
@@ -97,15 +97,20 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     CrowdView& v = *s.crowd;
     const crowd::Candidate& cand = c.candidates[std::size_t(k)];
     const bool taken = cand.clip == c.taken;
-    const bool ok = !cand.outside && cand.hits == 0 && !cand.crowded;
+    const bool ok = !cand.leaves_world && !cand.meets_solid && cand.hits == 0 && !cand.crowded;
     const glm::vec3 col = taken ? glm::vec3(0.95f, 0.85f, 0.2f)
                           : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
                                 : glm::vec3(0.9f, 0.2f, 0.2f);
     // Why it was refused, short enough for the row; hovering it gives the whole reason.
-    const char* why = cand.outside ? " (wall)" : cand.crowded ? " (too close)" : "";
-    const char* why_long = cand.outside   ? "Leaves the world (random mode) or meets a wall or an obstacle."
-                           : cand.crowded ? "Would stop too close to where another agent stands (the standing gap)."
-                                          : nullptr;
+    const char* why = cand.leaves_world  ? " (leaves the world)"
+                      : cand.meets_solid ? " (wall or obstacle)"
+                      : cand.crowded     ? " (too close)"
+                                         : "";
+    const char* why_long = cand.leaves_world
+                               ? "Its root goes farther outside the world than where it starts (random mode)."
+                           : cand.meets_solid ? "It meets a wall or an obstacle."
+                           : cand.crowded     ? "Would stop too close to where another agent stands (the standing gap)."
+                                              : nullptr;
     char label[128];
     std::snprintf(label, sizeof label, "clip %d: %s%s, %d queries, %d hits###cand%d", cand.clip,
                   taken ? "taken"

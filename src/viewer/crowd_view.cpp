@@ -139,7 +139,7 @@ void select_choice(State& s, int agent, int choice) {
         const crowd::PlacedClip* at = committed_at(v, c);
         if (v.graph && at) {
             for (const crowd::Candidate& cand : c.candidates) {
-                const bool ok = !cand.outside && cand.hits == 0 && !cand.crowded;
+                const bool ok = !cand.leaves_world && !cand.meets_solid && cand.hits == 0 && !cand.crowded;
                 const glm::vec3 color = cand.clip == c.taken ? kCommitted : ok ? kAccepted : kRejected;
                 v.accepted.push_back(ok);
                 if (cand.clip < 0 || std::size_t(cand.clip) >= v.graph->clips.size()) {

@@ -56,7 +56,7 @@ CrowdRun run(const CrowdOptions& o, const NarrowPhase& narrow = fixture().sweep)
 // Every counter of a summary but the times.
 std::vector<std::uint64_t> counters(const CrowdSummary& s) {
     return {s.choice_points, s.candidates,         s.queries,     s.hits,    s.tests2d,      s.tests3d,
-            s.samples,       s.root_rejected,      s.time_pairs,  s.pruned,  s.fallbacks,    s.outside,
+            s.samples,       s.root_rejected,      s.time_pairs,  s.pruned,  s.fallbacks,    s.fallbacks_meeting_solids,
             s.contacts,      s.contacts_unexcused, s.reevaluated, s.escapes, s.right_of_way, s.reroutes};
 }
 
@@ -205,7 +205,7 @@ TEST(Crowd, RecordedQueriesReplayByBruteForce) {
         const ChoicePoint& cp = r.choices[n];
         const auto& own = r.tracks[std::size_t(cp.agent)].clips;
         const auto at =
-            std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.commit == std::int64_t(n); });
+            std::find_if(own.begin(), own.end(), [&](const PlacedClip& p) { return p.choice == std::int64_t(n); });
         ASSERT_NE(at, own.end());
         ASSERT_EQ(at->start, cp.frame);
         for (const Candidate& k : cp.candidates) {
@@ -218,11 +218,11 @@ TEST(Crowd, RecordedQueriesReplayByBruteForce) {
                 if (q.piece >= 0) {
                     const std::optional<FramedClip> other = query_clip(r, q);
                     ASSERT_TRUE(other);
-                    EXPECT_LT(q.commit, int(n)) << "only what was committed before";
+                    EXPECT_LT(q.choice, int(n)) << "only what was committed before";
                     EXPECT_EQ(collide_brute(path_of(k.clip), at->place, path_of(other->clip), other->place), q.hit)
                         << "choice " << n;
                     ++replayed;
-                } else if (q.commit >= 0) {
+                } else if (q.choice >= 0) {
                     const std::optional<HeldGround> held_ground = query_hold(r, q);
                     ASSERT_TRUE(held_ground);
                     const auto& [disk, from] = *held_ground;
@@ -329,8 +329,8 @@ TEST(Crowd, RecordRoundTripsThroughAFile) {
             const auto &a = x.candidates[j].against, &b = y.candidates[j].against;
             ASSERT_EQ(a.size(), b.size());
             for (std::size_t q = 0; q < a.size(); ++q)
-                EXPECT_TRUE(a[q].agent == b[q].agent && a[q].commit == b[q].commit && a[q].piece == b[q].piece &&
-                            a[q].mine == b[q].mine && a[q].hit == b[q].hit);
+                EXPECT_TRUE(a[q].agent == b[q].agent && a[q].choice == b[q].choice && a[q].solid == b[q].solid &&
+                            a[q].piece == b[q].piece && a[q].mine == b[q].mine && a[q].hit == b[q].hit);
         }
     }
     EXPECT_EQ(frame_contacts(r).size(), c.summary.contacts);
@@ -436,8 +436,8 @@ TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
             const ChoicePoint& cp = r.choices[n];
             for (const Candidate& k : cp.candidates)
                 for (const CandidateQuery& q : k.against) {
-                    if (q.mine != 0 || q.agent < 0 || q.commit < 0) continue;
-                    const ChoicePoint& holder = r.choices[std::size_t(q.commit)];
+                    if (q.mine != 0 || q.agent < 0 || q.choice < 0) continue;
+                    const ChoicePoint& holder = r.choices[std::size_t(q.choice)];
                     if (holder.outcome != "right of way" || q.agent == holder.agent) continue;
                     if (const auto other = query_clip(r, q)) {
                         const auto& own = r.tracks[std::size_t(cp.agent)].clips;
@@ -454,7 +454,7 @@ TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
             EXPECT_TRUE(moves(cp.taken));
             std::int64_t moved_until = 0;
             for (const PlacedClip& p : r.tracks[std::size_t(cp.agent)].clips)
-                if (p.commit < std::int64_t(n) && moves(p.clip))
+                if (p.choice < std::int64_t(n) && moves(p.clip))
                     moved_until = p.start + std::int64_t(path_of(p.clip).size());
             EXPECT_GE(double(cp.frame - moved_until) * r.dt, 2.0 - 1e-9) << "choice " << n;
             if (cp.reroutes.empty()) {  // free but for the standing gap, which the right of way passes
@@ -497,7 +497,7 @@ std::vector<std::optional<std::array<double, 2>>> waiting_at(const Record& r, st
             if (moves(p.clip)) moved_until = end;
         }
         if (!last || double(end - moved_until) * r.dt < 2.0 - 1e-9) continue;
-        const ChoicePoint& own = r.choices[std::size_t(last->commit)];
+        const ChoicePoint& own = r.choices[std::size_t(last->choice)];
         if (own.holds) out[w] = std::array<double, 2>{own.hold[0], own.hold[1]};
     }
     return out;

@@ -132,6 +132,33 @@ TEST(RecordFile, TheRunsKeepWhatTheLayoutNeeds) {
     EXPECT_TRUE(left && intended && queries);
 }
 
+// A version 2 HDF5 record (fuzz/corpus-record/small.h5, an avoiding run written before the names of one
+// meaning): its clips' "commit" column reads as the choice point that took each, its candidates' one flag
+// "outside" as meets_solid - which is then just where a query met a wall.
+TEST(RecordFile, Version2Hdf5ReadsInTodaysNames) {
+    const Record r = read_record_file(std::string(MOBB_SOURCE_DIR) + "/fuzz/corpus-record/small.h5").record;
+    ASSERT_EQ(r.select, "avoid");
+    int meets = 0;
+    for (const ChoicePoint& cp : r.choices)
+        for (const Candidate& k : cp.candidates) {
+            bool solid_hit = false;
+            for (const CandidateQuery& q : k.against) solid_hit = solid_hit || (q.agent < 0 && q.hit);
+            EXPECT_EQ(k.meets_solid, solid_hit);
+            EXPECT_FALSE(k.leaves_world);
+            meets += k.meets_solid;
+        }
+    EXPECT_GT(meets, 0);
+    int taken = 0;
+    for (std::size_t a = 0; a < r.tracks.size(); ++a)
+        for (const PlacedClip& c : r.tracks[a].clips) {
+            if (c.choice < 0) continue;
+            const ChoicePoint& cp = r.choices.at(std::size_t(c.choice));
+            EXPECT_TRUE(cp.agent == int(a) && cp.frame == c.start && cp.taken == c.clip) << "choice " << c.choice;
+            ++taken;
+        }
+    EXPECT_EQ(std::size_t(taken), r.choices.size());
+}
+
 TEST(RecordFile, TruncatedHdf5IsRefusedInOneLine) {
     const std::string h5 = temp("whole.h5"), cut = temp("cut.h5");
     write_record_file(h5, wandering().record, wandering().summary, wandering().metrics);

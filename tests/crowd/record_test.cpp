@@ -14,6 +14,7 @@
 #include "files.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/record.h"
+#include "mobb/crowd/record_file.h"
 
 namespace mobb::crowd {
 namespace {
@@ -103,7 +104,7 @@ std::vector<Case> corpus() {
         {"frames fractional", [](json& j) { j["frames"] = 180.5; }, "frames"},
         {"agents not the tracks", [](json& j) { j["agents"] = 99; }, "agents"},
         {"seed negative", [](json& j) { j["seed"] = -1; }, "seed"},
-        {"version", [](json& j) { j["version"] = 3; }, "version"},
+        {"version", [](json& j) { j["version"] = 4; }, "version"},
         {"world empty", [](json& j) { j["world"] = {0, 10}; }, "world"},
         {"world reversed", [](json& j) { j["world"] = {5, 0, 1, 10}; }, "world"},
         {"world of three", [](json& j) { j["world"] = {1, 2, 3}; }, "world"},
@@ -133,8 +134,8 @@ std::vector<Case> corpus() {
         {"place t0 off its start", [](json& j) { j["tracks"][1]["clips"][1]["place"][3] = 100.0; },
          "tracks[1].clips[1].place[3]"},
         {"fallback text", [](json& j) { j["tracks"][1]["clips"][0]["fallback"] = 0; }, "tracks[1].clips[0].fallback"},
-        {"commit below -1", [](json& j) { j["tracks"][1]["clips"][0]["commit"] = -2; }, "tracks[1].clips[0].commit"},
-        {"commit past the choice points", [](json& j) { j["tracks"][1]["clips"].back()["commit"] = 1000000; },
+        {"choice below -1", [](json& j) { j["tracks"][1]["clips"][0]["choice"] = -2; }, "tracks[1].clips[0].choice"},
+        {"choice past the choice points", [](json& j) { j["tracks"][1]["clips"].back()["choice"] = 1000000; },
          "tracks[1].clips["},
         {"samples one short", [](json& j) { j["tracks"][2]["samples"].erase(0); }, "tracks[2].samples"},
         {"radius negative", [](json& j) { j["tracks"][2]["samples"][7][3] = -0.3; }, "tracks[2].samples[7][3]"},
@@ -171,6 +172,8 @@ std::vector<Case> corpus() {
          cp + ".plan.reroutes[0].agent"},
         // Candidates and their queries.
         {"candidate clip negative", [K](json& j) { K(j)["clip"] = -1; }, cand + ".clip"},
+        {"meets_solid a number", [K](json& j) { K(j)["meets_solid"] = 1; }, cand + ".meets_solid"},
+        {"leaves_world missing", [K](json& j) { K(j).erase("leaves_world"); }, cand},
         {"hits over queries", [K](json& j) { K(j)["hits"] = K(j)["queries"].get<int>() + 1; }, cand + ".hits"},
         {"queries fewer than listed",
          [K](json& j) {
@@ -241,6 +244,88 @@ TEST(RecordErrors, ClipsPastTheGraphAreNamed) {
     x = r;
     x.choices[2].escape.push_back({past, 10, {}});
     EXPECT_EQ(error(x).rfind("choices[2].plan.escape[", 0), 0u) << error(x);
+}
+
+// The same room walked at random (the paper's timing mode): candidates that leave the world.
+const json& recorded_random() {
+    static const json j = [] {
+        CrowdOptions o;
+        o.agents = 8;
+        o.seconds = 6;
+        o.seed = 9;
+        o.select = Selection::Random;
+        o.world.x1 = 9;
+        o.world.y1 = 11;
+        o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
+        const CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
+        return json::parse(record_to_text(run.record, summary_json(run.summary)));
+    }();
+    return j;
+}
+
+// A candidate's flags each say one thing: meets_solid that a query of it met a wall or an obstacle
+// (agent -1; the random mode queries none), leaves_world only in random mode.
+TEST(RecordFlags, EachSaysOneThing) {
+    for (const json* j : {&recorded(), &recorded_random()}) {
+        const bool random = (*j)["select"] == "random";
+        int leaves = 0, meets = 0;
+        for (const json& cp : (*j)["choices"])
+            for (const json& k : cp["candidates"]) {
+                bool solid_hit = false;
+                for (const json& q : k["against"]) solid_hit = solid_hit || (q[0] == -1 && q[4] == 1);
+                EXPECT_EQ(k["meets_solid"].get<bool>(), solid_hit) << k.dump();
+                if (!random) {
+                    EXPECT_FALSE(k["leaves_world"].get<bool>()) << k.dump();
+                }
+                leaves += k["leaves_world"].get<bool>();
+                meets += k["meets_solid"].get<bool>();
+            }
+        if (random) {
+            EXPECT_GT(leaves, 0) << "random walks leave a 9 x 11 m room";
+            EXPECT_EQ(meets, 0) << "the paper's workload queries no walls or obstacles";
+        } else {
+            EXPECT_GT(meets, 0) << "the obstacle and the walls are met";
+        }
+    }
+}
+
+// A record of version 2, before the names of one meaning: its clips' "commit", its candidates' one flag
+// "outside" (leaves_world in random mode, meets_solid otherwise) and its summary's
+// "fallbacks_outside_world" (the fallbacks meeting a wall or an obstacle).
+json as_version_2(json j) {
+    j["version"] = 2;
+    j["summary"]["fallbacks_outside_world"] = j["summary"]["fallbacks_meeting_solids"];
+    j["summary"].erase("fallbacks_meeting_solids");
+    for (json& t : j["tracks"])
+        for (json& c : t["clips"]) {
+            c["commit"] = c["choice"];
+            c.erase("choice");
+        }
+    const bool random = j["select"] == "random";
+    for (json& cp : j["choices"])
+        for (json& k : cp["candidates"]) {
+            k["outside"] = k[random ? "leaves_world" : "meets_solid"];
+            k.erase("leaves_world");
+            k.erase("meets_solid");
+        }
+    return j;
+}
+
+// Read back as this version: the record of the version 3 text, but what version 2 did not keep.
+TEST(RecordVersions, Version2ReadsInTodaysNames) {
+    for (const json* j : {&recorded(), &recorded_random()}) {
+        json expected = *j;
+        if ((*j)["select"] == "random")
+            for (json& cp : expected["choices"])
+                for (json& k : cp["candidates"]) k["meets_solid"] = false;
+        const std::string want = test::temp_file("record_v3.json"), old = test::temp_file("record_v2.json");
+        std::ofstream(want) << expected.dump();
+        std::ofstream(old) << as_version_2(*j).dump();
+        EXPECT_EQ(record_to_text(load_record(old), "{}"), record_to_text(load_record(want), "{}"));
+        EXPECT_EQ(read_record_file(old).summary_json, read_record_file(want).summary_json);
+        std::remove(want.c_str());
+        std::remove(old.c_str());
+    }
 }
 
 }  // namespace

@@ -78,7 +78,8 @@ struct CrowdSummary {
     std::uint64_t escapes = 0;                           ///< choice points where the agent took its own escape
     std::uint64_t right_of_way = 0;                      ///< choice points taken by the right of way (choice.h)
     std::uint64_t reroutes = 0;                          ///< other agents' plans that gave way to them
-    std::uint64_t fallbacks = 0, outside = 0;            ///< fallback clips taken; of them, clips leaving the world
+    std::uint64_t fallbacks = 0;                         ///< fallback clips taken
+    std::uint64_t fallbacks_meeting_solids = 0;          ///< of them, clips meeting a wall or an obstacle
     std::uint64_t contacts = 0, contacts_unexcused = 0;  ///< frame-by-frame contacts (agent pairs x frames)
     std::uint64_t reevaluated = 0;  ///< choice points evaluated again: a commit earlier in their frame was near
     std::uint64_t agents = 0;       ///< the run's agents

@@ -3,7 +3,7 @@
 //
 // JSON layout (units: metres, seconds, radians; frames are global, frame k starts at t = k * dt):
 //   {
-//     "format": "mobb crowd record", "version": 2,
+//     "format": "mobb crowd record", "version": 3,
 //     "graph": FILE, "dt": s, "frames": F, "agents": N, "seed": K, "tree": "sweep" | "mobb" | ...,
 //     "select": "avoid" | "random" | "goal", "scenario": NAME (when one ran),
 //     "world": [W, H] for [0, W] x [0, H], or [x0, y0, x1, y1]; "walls": bool,
@@ -14,7 +14,7 @@
 //        turn), "at_goal": "leave" (when it leaves at its last goal; else it stays), "left_frame": f (the
 //        frame it left at: its samples stop before it),
 //        "clips": [ {"clip": id, "start": frame, "place": [x, y, theta, t0], "fallback": bool,
-//                    "commit": n}, ... ],              // commit: the choice point that took it
+//                    "choice": n}, ... ],              // choice: the choice point that took it (-1: none)
 //        "samples": [ [t, x, y, r], ... ]             // the world disk at frames 0..F-1 (0..left_frame-1)
 //     }, ... ],
 //     "choices": [ {"agent": a, "frame": k, "t": s, "taken": clip id, "outcome": "candidate" | "escape" |
@@ -22,19 +22,22 @@
 //                   "tests3d": n, "samples": n, "pruned": n,
 //                   "plan": {"escape": [[clip, frame, x, y, theta], ...], "hold": [x, y, r, frame],
 //                            "reroutes": [ {"agent": b, "escape": [...], "hold": [...]}, ... ]},
-//                   "candidates": [ {"clip": id, "outside": bool, "queries": q, "hits": h,
-//                                    "against": [ [agent, commit, piece, mine, hit], ... ],
+//                   "candidates": [ {"clip": id, "leaves_world": bool, "meets_solid": bool, "queries": q,
+//                                    "hits": h, "against": [ [agent, index, piece, mine, hit], ... ],
 //                                    "crowded": true (when so)}, ... ]}, ... ]
 //   }
 // A candidate's "hits" counts what it collides with among the queries run: in the avoiding modes its
 // queries stop at its first hit (and run in full at a fallback); in random mode they all run. "against"
-// lists its queries in the order run: the other agent, the choice point whose plan holds the piece met
-// (its index in "choices"; -1 for the ground it held where it started, a disk of the first choice
-// point's hold radius) and the piece (0 its clip, 1, 2, ... its escape clips, -1 its held ground),
-// the piece of the candidate's own plan that asked ("mine": 0 the candidate clip, 1, 2, ... the escape
-// clips of the route being tried, -1 the ground it would then hold) and the answer (0 or 1); for a wall or an obstacle the agent is -1 and the commit is the solid's index
-// (the obstacles in order, then the four walls when walled). "outside": in random mode the candidate's
-// root leaves the world; otherwise it met a wall or an obstacle. "reroutes" (only at a "right of way"
+// lists its queries in the order run: the other agent, the index of what it met - for an agent the
+// choice point whose plan holds the piece met (its index in "choices"; -1 for the ground it held where
+// it started, a disk of the first choice point's hold radius) - and the piece (0 its clip, 1, 2, ... its
+// escape clips, -1 its held ground), the piece of the candidate's own plan that asked ("mine": 0 the
+// candidate clip, 1, 2, ... the escape clips of the route being tried, -1 the ground it would then hold)
+// and the answer (0 or 1); for a wall or an obstacle the agent is -1, the index the solid's (the
+// obstacles in order, then the four walls when walled) and the piece 0. "leaves_world" (random mode only):
+// the candidate's root goes farther outside the world rectangle than where it starts. "meets_solid": one
+// of its queries met a wall or an obstacle. Version 2 records (clips' "commit", candidates' one flag
+// "outside") still read (formats.md). "reroutes" (only at a "right of way"
 // choice point) are the plans other agents reserve from then on instead of theirs: their pieces are
 // named by that choice point's index and their own agent. "crowded": refused, and some of its routes
 // were left out untested because they would hold ground within the standing gap of another agent's (a
@@ -58,24 +61,33 @@ struct PlacedClip {
     std::int64_t start = 0;
     Placement place;
     bool fallback = false;    ///< chosen although every candidate collided or left the world
-    std::int64_t commit = 0;  ///< order of the choice point that committed it
+    std::int64_t choice = 0;  ///< index of the choice point that took it (-1: the agent's first clip)
 };
 
+/// The version of the record layout written (record_json_write.cpp, record_h5_write.cpp).
+constexpr int kRecordVersion = 3;
+
 /// One narrow-phase query of a candidate: piece `mine` of the candidate's plan against piece `piece` of
-/// the plan of choice point `commit`, agent `agent`'s (the layout note says which piece is which; agent
-/// -1: solid `commit`).
+/// the plan of choice point `choice`, agent `agent`'s (the layout note says which piece is which), or,
+/// agent -1, against wall or obstacle `solid`.
 struct CandidateQuery {
     int agent = 0;
-    int commit = 0;
+    int choice = -1;  ///< agent >= 0: the choice point whose plan holds the piece (-1: its starting ground)
+    int solid = -1;   ///< agent -1: the solid's index (the obstacles, then the four walls when walled)
     int piece = 0;
     int mine = 0;  ///< 0: the candidate clip; 1, 2, ...: the escape clips of the route tried; -1: its held ground
     bool hit = false;
 };
 
+/// What a query names at position 1 of the record's [agent, index, piece, mine, hit]: the choice point
+/// (agent >= 0) or the solid (agent -1).
+inline int query_index(const CandidateQuery& q) { return q.agent < 0 ? q.solid : q.choice; }
+
 struct Candidate {
     int clip = 0;
-    bool outside = false;                 ///< random mode: some root position is farther outside the rectangle
-                                          ///< than the clip's start; otherwise: it met a wall or an obstacle
+    bool leaves_world = false;            ///< random mode only: some root position is farther outside the
+                                          ///< world rectangle than the clip's start
+    bool meets_solid = false;             ///< one of its queries met a wall or an obstacle (avoiding modes)
     int queries = 0;                      ///< narrow-phase queries run for it
     int hits = 0;                         ///< what it collides with among them (see the layout note)
     std::vector<CandidateQuery> against;  ///< its queries, in the order run
@@ -165,7 +177,7 @@ public:
     /// The run's header (dt, frames, world, seed, ...) and its tracks' goals and at_goal, before frame 0.
     virtual void begin(const Record& /*header*/) {}
     virtual void choice(std::size_t /*index*/, const ChoicePoint& /*choice*/) {}
-    /// A clip agent `agent` committed (PlacedClip::commit names its choice point).
+    /// A clip agent `agent` committed (PlacedClip::choice names its choice point).
     virtual void clip(int /*agent*/, const PlacedClip& /*clip*/) {}
     virtual void frames(const FrameBlock& /*block*/) {}
 };
@@ -181,7 +193,7 @@ struct Contact {
 /// independently of the trees. Ordered by frame, then a, then b.
 std::vector<Contact> frame_contacts(const Record& record);
 
-/// The clip a query was against: piece `piece` of choice point `commit`'s plan (the clip taken, or one of
+/// The clip a query was against: piece `piece` of choice point `choice`'s plan (the clip taken, or one of
 /// its escape clips; for another agent than the choice point's, one of the escape clips of its reroute);
 /// nothing for held ground and solids. Throws std::out_of_range for a bad query.
 std::optional<FramedClip> query_clip(const Record& record, const CandidateQuery& query);
@@ -191,8 +203,8 @@ struct HeldGround {
     std::array<double, 3> disk{};
     std::int64_t frame = 0;
 };
-/// The held ground a query was against (piece -1): that of choice point `commit`'s plan, or of its
-/// reroute for another agent; nothing for the ground an agent started on (commit -1), clips and solids.
+/// The held ground a query was against (piece -1): that of choice point `choice`'s plan, or of its
+/// reroute for another agent; nothing for the ground an agent started on (choice -1), clips and solids.
 /// Throws std::out_of_range for a bad query.
 std::optional<HeldGround> query_hold(const Record& record, const CandidateQuery& query);
 
@@ -204,9 +216,9 @@ std::string record_to_text(const Record& record, const std::string& summary_json
 /// tracks[2].samples[7][3]) on any problem. Every field is checked against what it means: dt a frame of a
 /// graph (1 / kMaxGraphFps to 1 / kMinGraphFps s), frames >= 1, positions within 1000 km and radii in
 /// [0, 10] m, a world of positive area, obstacles of two or more vertices, "agents" the tracks' count; per
-/// track clips in time order from frame 0 (start < frames, t0 = start * dt, commits in order, each -1 or a
-/// choice point), one sample [t, x, y, r] per frame with t = k * dt; per
-/// choice point an agent and a frame of the record (t = frame * dt), a known outcome, counts not negative,
+/// track clips in time order from frame 0 (start < frames, t0 = start * dt, choice points in order, each
+/// -1 or an index in choices), one sample [t, x, y, r] per frame with t = k * dt; per choice point an
+/// agent and a frame of the record (t = frame * dt), a known outcome, counts not negative,
 /// finite escape places and held ground (r >= 0), reroutes of existing agents, candidates with
 /// 0 <= hits <= queries and no more queries listed than run, each naming a wall or obstacle of the world, an
 /// agent's starting ground or an earlier choice point. Clip ids are checked against a graph by
