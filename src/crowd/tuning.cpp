@@ -3,9 +3,10 @@
 #include "mobb/crowd/tuning.h"
 
 #include <charconv>
-#include <cmath>
 #include <stdexcept>
 #include <variant>
+
+#include "mobb/io/load.h"
 
 namespace mobb::crowd {
 
@@ -65,18 +66,6 @@ int parse_int(const std::string& text) {
     return v;
 }
 
-double parse_double(const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(v)) throw std::invalid_argument("is not a number");
-    return v;
-}
-
 }  // namespace
 
 void set_tuning(CrowdTuning& tuning, const std::string& assignment) {
@@ -86,10 +75,13 @@ void set_tuning(CrowdTuning& tuning, const std::string& assignment) {
         if (name != f.name) continue;
         if (eq == std::string::npos) throw std::invalid_argument(name + ": no value (NAME=VALUE)");
         const std::string value = assignment.substr(eq + 1);
+        if (const auto* d = std::get_if<double CrowdTuning::*>(&f.member)) {
+            tuning.*(*d) = io::parse_number(value, name);  // "NAME: 'VALUE' is not a finite number"
+            return;
+        }
         try {
             if (const auto* b = std::get_if<bool CrowdTuning::*>(&f.member)) tuning.*(*b) = parse_bool(value);
             if (const auto* i = std::get_if<int CrowdTuning::*>(&f.member)) tuning.*(*i) = parse_int(value);
-            if (const auto* d = std::get_if<double CrowdTuning::*>(&f.member)) tuning.*(*d) = parse_double(value);
         } catch (const std::invalid_argument& e) {
             std::string what = name;
             what.append(": '").append(value).append("' ").append(e.what());

@@ -29,19 +29,22 @@ const MotionGraph& graph() {
 }
 
 // A real record: 8 agents for 6 s in a walled room with an obstacle (queries against agents, their
-// ground, the walls and the obstacle).
+// ground, the walls and the obstacle), in the clip choice `select`.
+json room_record(Selection select) {
+    CrowdOptions o;
+    o.agents = 8;
+    o.seconds = 6;
+    o.seed = 9;
+    o.select = select;
+    o.world.x1 = 9;
+    o.world.y1 = 11;
+    o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
+    const CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
+    return json::parse(record_to_text(run.record, summary_json(run.summary)));
+}
+
 const json& recorded() {
-    static const json j = [] {
-        CrowdOptions o;
-        o.agents = 8;
-        o.seconds = 6;
-        o.seed = 9;
-        o.world.x1 = 9;
-        o.world.y1 = 11;
-        o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
-        const CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        return json::parse(record_to_text(run.record, summary_json(run.summary)));
-    }();
+    static const json j = room_record(Selection::Avoid);
     return j;
 }
 
@@ -248,18 +251,7 @@ TEST(RecordErrors, ClipsPastTheGraphAreNamed) {
 
 // The same room walked at random (the paper's timing mode): candidates that leave the world.
 const json& recorded_random() {
-    static const json j = [] {
-        CrowdOptions o;
-        o.agents = 8;
-        o.seconds = 6;
-        o.seed = 9;
-        o.select = Selection::Random;
-        o.world.x1 = 9;
-        o.world.y1 = 11;
-        o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
-        const CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        return json::parse(record_to_text(run.record, summary_json(run.summary)));
-    }();
+    static const json j = room_record(Selection::Random);
     return j;
 }
 
