@@ -102,13 +102,13 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
                           : ok  ? glm::vec3(0.25f, 0.8f, 0.3f)
                                 : glm::vec3(0.9f, 0.2f, 0.2f);
     // Why it was refused, short enough for the row; hovering it gives the whole reason.
-    const char* why = cand.leaves_world  ? " (leaves the world)"
-                      : cand.meets_solid ? " (wall or obstacle)"
+    const char* why = cand.leaves_world  ? " (off world)"
+                      : cand.meets_solid ? " (solid)"
                       : cand.crowded     ? " (too close)"
                                          : "";
     const char* why_long = cand.leaves_world
                                ? "Its root goes farther outside the world than where it starts (random mode)."
-                           : cand.meets_solid ? "It meets a wall or an obstacle."
+                           : cand.meets_solid ? "It meets a solid: a wall or an obstacle."
                            : cand.crowded     ? "Would stop too close to where another agent stands (the standing gap)."
                                               : nullptr;
     char label[128];
