@@ -49,6 +49,13 @@ std::string disagreement_split(const MethodRow& r) {
 
 std::string ratio_cell(const MethodRow& r) { return r.x_sweep > 0 ? fixed(r.x_sweep, 2) : "-"; }
 
+// A one-thread column of a scale row: "-" when the size ran on the parallel threads only.
+std::string one_thread_cell(const ScaleRow& r, double v, int decimals) {
+    return r.one_thread ? fixed(v, decimals) : "-";
+}
+
+std::string megabytes(std::int64_t bytes) { return bytes < 0 ? "-" : fixed(double(bytes) / 1e6, 0); }
+
 }  // namespace
 
 std::string table_markdown(const BenchTable& t) {
@@ -108,18 +115,22 @@ void write_table_png(const BenchTable& t, const std::string& file) {
 
 std::string scale_markdown(const ScaleTable& t) {
     std::ostringstream out;
+    const int threads = t.rows.empty() ? 0 : t.rows.front().threads;
     out << "### " << t.title << "\n\n"
         << "| agents | world (m) | choice points | queries | CD s (1 thread) | CD us / agent / sim s | x N="
-        << (t.rows.empty() ? 0 : t.rows.front().agents) << " | CD us / query | sim s (1 thread) | sim s ("
-        << (t.rows.empty() ? 0 : t.rows.front().threads)
-        << " threads) | speed-up | identical | fallbacks | contacts outside fallbacks |\n"
-        << "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n";
+        << (t.rows.empty() ? 0 : t.rows.front().agents) << " | CD us / query | sim s (1 thread) | sim s (" << threads
+        << " threads) | speed-up | identical | fallbacks | contacts outside fallbacks | peak MB (1 thread) | peak MB ("
+        << threads << " threads) | wall s (" << threads << " threads) |\n"
+        << "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
     for (const ScaleRow& r : t.rows)
         out << "| " << r.agents << " | " << fixed(r.width, 1) << " x " << fixed(r.height, 1) << " | " << r.choice_points
-            << " | " << r.queries << " | " << fixed(r.cd_seconds_1, 3) << " | " << fixed(r.cd_us_per_agent_second, 3)
-            << " | " << fixed(r.ratio_to_first, 2) << " | " << fixed(r.cd_us_per_query, 3) << " | "
-            << fixed(r.sim_seconds_1, 3) << " | " << fixed(r.sim_seconds_n, 3) << " | " << fixed(r.speedup, 2) << " | "
-            << (r.identical ? "yes" : "NO") << " | " << r.fallbacks << " | " << r.contacts_unexcused << " |\n";
+            << " | " << r.queries << " | " << one_thread_cell(r, r.cd_seconds_1, 3) << " | "
+            << fixed(r.cd_us_per_agent_second, 3) << " | " << one_thread_cell(r, r.ratio_to_first, 2) << " | "
+            << fixed(r.cd_us_per_query, 3) << " | " << one_thread_cell(r, r.sim_seconds_1, 3) << " | "
+            << fixed(r.sim_seconds_n, 3) << " | " << one_thread_cell(r, r.speedup, 2) << " | "
+            << (r.identical ? "yes" : "NO") << " | " << r.fallbacks << " | " << r.contacts_unexcused << " | "
+            << (r.one_thread ? megabytes(r.peak_bytes_1) : "-") << " | " << megabytes(r.peak_bytes_n) << " | "
+            << fixed(r.wall_seconds_n, 1) << " |\n";
     out << "\n";
     targets_markdown(out, t.targets);
     for (const auto& [k, v] : t.notes) out << "- " << k << ": " << v << "\n";
@@ -153,7 +164,12 @@ std::string scale_json(const ScaleTable& t) {
                         {"digest_1", r.digest_1},
                         {"digest_n", r.digest_n},
                         {"fallbacks", r.fallbacks},
-                        {"contacts_outside_fallbacks", r.contacts_unexcused}});
+                        {"contacts_outside_fallbacks", r.contacts_unexcused},
+                        {"one_thread", r.one_thread},
+                        {"peak_bytes_1", r.peak_bytes_1},
+                        {"peak_bytes_n", r.peak_bytes_n},
+                        {"wall_seconds_1", rounded(r.wall_seconds_1, 3)},
+                        {"wall_seconds_n", rounded(r.wall_seconds_n, 3)}});
     j["rows"] = rows;
     return readable_json(j);
 }

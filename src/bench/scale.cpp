@@ -1,5 +1,6 @@
 // The scale workload (scale.h): the avoiding crowd at the paper's density, 1 and all threads.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include "mobb/util/json_text.h"
 #include "mobb/util/median.h"
 #include "mobb/util/worker_pool.h"
+#include "peak_memory.h"
 #include "scale.h"
 #include "workloads.h"
 
@@ -19,38 +21,54 @@ using namespace crowd;  // the scale workload is a crowd run
 
 namespace {
 
-// 64-bit FNV-1a over integers and doubles (bit patterns).
-struct Fnv {
-    std::uint64_t h = 1469598103934665603ull;
-    void add(std::uint64_t v) {
-        for (int k = 0; k < 8; ++k) {
-            h ^= (v >> (8 * k)) & 0xffu;
-            h *= 1099511628211ull;
-        }
-    }
-    void add(double v) {
-        std::uint64_t bits = 0;
-        static_assert(sizeof bits == sizeof v);
-        std::memcpy(&bits, &v, sizeof v);
-        add(bits);
-    }
-};
+constexpr std::uint64_t kFnvBasis = 1469598103934665603ull;
 
-void hash_choice(Fnv& f, const ChoicePoint& cp) {
-    f.add(std::uint64_t(cp.agent));
-    f.add(std::uint64_t(cp.frame));
-    f.add(std::uint64_t(cp.taken));
-    f.add(std::uint64_t(cp.fallback));
-    f.add(cp.queries);
-    f.add(cp.pruned);
-    for (const Candidate& c : cp.candidates) {
-        f.add(std::uint64_t(c.clip));
-        f.add(std::uint64_t(c.leaves_world || c.meets_solid));  // one bit, as bench/results/scale.json has it
-        f.add(std::uint64_t(c.hits));
-        for (const CandidateQuery& q : c.against)
-            f.add((std::uint64_t(std::uint32_t(q.agent)) << 40) ^ (std::uint64_t(std::uint32_t(query_index(q))) << 8) ^
-                  (std::uint64_t(q.piece + 1) << 1) ^ std::uint64_t(q.hit));
+// 64-bit FNV-1a over integers and doubles (bit patterns), into the running hash h.
+void fnv(std::uint64_t& h, std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) {
+        h ^= (v >> (8 * k)) & 0xffu;
+        h *= 1099511628211ull;
     }
+}
+
+void fnv(std::uint64_t& h, double v) {
+    std::uint64_t bits = 0;
+    static_assert(sizeof bits == sizeof v);
+    std::memcpy(&bits, &v, sizeof v);
+    fnv(h, bits);
+}
+
+void hash_choice(std::uint64_t& h, const ChoicePoint& cp) {
+    fnv(h, std::uint64_t(cp.agent));
+    fnv(h, std::uint64_t(cp.frame));
+    fnv(h, std::uint64_t(cp.taken));
+    fnv(h, std::uint64_t(cp.fallback));
+    fnv(h, cp.queries);
+    fnv(h, cp.pruned);
+    for (const Candidate& c : cp.candidates) {
+        fnv(h, std::uint64_t(c.clip));
+        fnv(h, std::uint64_t(c.leaves_world || c.meets_solid));  // one bit, as bench/results/scale.json has it
+        fnv(h, std::uint64_t(c.hits));
+        for (const CandidateQuery& q : c.against)
+            fnv(h, (std::uint64_t(std::uint32_t(q.agent)) << 40) ^ (std::uint64_t(std::uint32_t(query_index(q))) << 8) ^
+                       (std::uint64_t(q.piece + 1) << 1) ^ std::uint64_t(q.hit));
+    }
+}
+
+void hash_clip(std::uint64_t& h, const PlacedClip& c) {
+    fnv(h, std::uint64_t(c.clip));
+    fnv(h, std::uint64_t(c.start));
+    fnv(h, c.place.x);
+    fnv(h, c.place.y);
+    fnv(h, c.place.theta);
+    fnv(h, std::uint64_t(c.fallback));
+    fnv(h, std::uint64_t(c.choice));
+}
+
+std::string hex(std::uint64_t h) {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
 }
 
 // The world of `agents` agents at `area_per_agent` m^2 each, 3:4 like the paper's 30 x 40 m.
@@ -71,75 +89,106 @@ CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
     return co;
 }
 
-CrowdRun run_one(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
-                 const std::function<void(double)>& progress) {
-    CrowdOptions co = crowd_options(o, agents);
-    co.threads = threads;
-    return run_crowd(g, narrow, co, progress);
-}
-
-// Wall times of the runs of one size: [0] 1 thread, [1] `threads`; medians over the repeats.
-struct Times {
-    std::vector<double> sim[2], cd[2];
+// The runs of one size: [0] 1 thread, [1] `threads`; every run's digest and summary, in order.
+struct Runs {
+    std::vector<double> sim[2], cd[2], wall[2];
+    std::int64_t peak[2] = {-1, -1};
+    std::vector<std::string> digests;
+    std::vector<CrowdSummary> summaries;
 };
 
-// One run; returns its summary and record digest, and adds its times.
-CrowdSummary timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
-                       Times& times, int slot, std::string& digest, const std::function<void(double)>& progress) {
-    const CrowdRun run = run_one(g, narrow, o, agents, threads, progress);
-    times.sim[slot].push_back(run.summary.seconds);
-    times.cd[slot].push_back(run.summary.cd_seconds);
-    digest = record_digest(run.record);
-    return run.summary;
+// One streamed run (no record kept): its summary, digest, times and peak memory go into `runs`.
+void timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
+               Runs& runs, int slot, const std::function<void(double)>& progress) {
+    CrowdOptions co = crowd_options(o, agents);
+    co.threads = threads;
+    DigestSink digest;
+    co.sink = &digest;
+    reset_peak_memory();
+    const auto start = std::chrono::steady_clock::now();
+    const CrowdSummary s = run_crowd(g, narrow, co, progress).summary;
+    runs.wall[slot].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    runs.peak[slot] = std::max(runs.peak[slot], peak_memory_bytes());
+    runs.sim[slot].push_back(s.seconds);
+    runs.cd[slot].push_back(s.cd_seconds);
+    runs.digests.push_back(digest.digest());
+    runs.summaries.push_back(s);
 }
 
-// One crowd size: `repeats` pairs of runs (1 thread, then `threads`), interleaved; records compared by
-// digest and counters; times are medians.
+// Every run made the same decisions: equal digests and counters.
+bool identical(const Runs& runs) {
+    const CrowdSummary& a = runs.summaries.front();
+    for (std::size_t k = 0; k < runs.summaries.size(); ++k) {
+        const CrowdSummary& b = runs.summaries[k];
+        if (runs.digests[k] != runs.digests.front() || a.queries != b.queries || a.hits != b.hits ||
+            a.contacts != b.contacts || a.choice_points != b.choice_points || a.fallbacks != b.fallbacks)
+            return false;
+    }
+    return true;
+}
+
+// The row's columns from the runs made.
+void fill_row(ScaleRow& r, const Runs& runs, const ScaleOptions& o) {
+    const CrowdSummary& s = runs.summaries.front();
+    r.identical = identical(runs);
+    r.choice_points = s.choice_points;
+    r.candidates = s.candidates;
+    r.queries = s.queries;
+    r.fallbacks = s.fallbacks;
+    r.contacts_unexcused = s.contacts_unexcused;
+    r.digest_1 = r.one_thread ? runs.digests.front() : "";
+    r.digest_n = runs.digests.back();
+    r.peak_bytes_1 = runs.peak[0];
+    r.peak_bytes_n = runs.peak[1];
+    r.sim_seconds_1 = util::median(runs.sim[0]);
+    r.sim_seconds_n = util::median(runs.sim[1]);
+    r.cd_seconds_1 = util::median(runs.cd[0]);
+    r.cd_seconds_n = util::median(runs.cd[1]);
+    r.wall_seconds_1 = util::median(runs.wall[0]);
+    r.wall_seconds_n = util::median(runs.wall[1]);
+    const double cd = r.one_thread ? r.cd_seconds_1 : r.cd_seconds_n;
+    r.cd_us_per_agent_second = cd * 1e6 / (double(r.agents) * o.seconds);
+    r.cd_us_per_query = s.queries ? cd * 1e6 / double(s.queries) : 0.0;
+    if (!r.one_thread) return;
+    const bool timed = r.cd_seconds_1 > 0 && r.cd_seconds_n > 0;
+    r.speedup = timed ? r.cd_seconds_1 / r.cd_seconds_n : r.sim_seconds_n > 0 ? r.sim_seconds_1 / r.sim_seconds_n : 0.0;
+}
+
+// One crowd size: pairs of runs (1 thread, then `threads`), interleaved - `repeats` of them below
+// once_from, one from there, only the parallel run from parallel_only_from; records compared by digest
+// and counters; times are medians.
 ScaleRow scale_row(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
                    const std::function<void(double)>& progress) {
     ScaleRow r;
     r.agents = agents;
     r.threads = threads;
+    r.one_thread = agents < o.parallel_only_from;
     world_for(agents, o.area_per_agent, r.width, r.height);
-    Times times;
-    CrowdSummary s1, sn;
-    r.identical = true;
-    const int repeats = std::max(1, o.repeats);
+    Runs runs;
+    const int repeats = agents >= o.once_from ? 1 : std::max(1, o.repeats);
     for (int k = 0; k < repeats; ++k) {
-        std::string d1, dn;
         const auto part = [&](int slot) {
             return [&, slot](double f) {
                 if (progress) progress((2.0 * k + slot + f) / (2.0 * repeats));
             };
         };
-        s1 = timed_run(g, narrow, o, agents, 1, times, 0, d1, part(0));
-        sn = timed_run(g, narrow, o, agents, threads, times, 1, dn, part(1));
-        if (k == 0) {
-            r.digest_1 = d1;
-            r.digest_n = dn;
-        }
-        r.identical = r.identical && d1 == r.digest_1 && dn == r.digest_n && d1 == dn && s1.queries == sn.queries &&
-                      s1.hits == sn.hits && s1.contacts == sn.contacts && s1.choice_points == sn.choice_points &&
-                      s1.fallbacks == sn.fallbacks;
+        if (r.one_thread) timed_run(g, narrow, o, agents, 1, runs, 0, part(0));
+        timed_run(g, narrow, o, agents, threads, runs, 1, part(1));
     }
-    r.choice_points = s1.choice_points;
-    r.candidates = s1.candidates;
-    r.queries = s1.queries;
-    r.fallbacks = s1.fallbacks;
-    r.contacts_unexcused = s1.contacts_unexcused;
-    r.sim_seconds_1 = util::median(times.sim[0]);
-    r.sim_seconds_n = util::median(times.sim[1]);
-    r.cd_seconds_1 = util::median(times.cd[0]);
-    r.cd_seconds_n = util::median(times.cd[1]);
-    r.cd_us_per_agent_second = r.cd_seconds_1 * 1e6 / (double(agents) * o.seconds);
-    r.cd_us_per_query = s1.queries ? r.cd_seconds_1 * 1e6 / double(s1.queries) : 0.0;
-    const bool cd = r.cd_seconds_1 > 0 && r.cd_seconds_n > 0;
-    r.speedup = cd ? r.cd_seconds_1 / r.cd_seconds_n : r.sim_seconds_n > 0 ? r.sim_seconds_1 / r.sim_seconds_n : 0.0;
+    fill_row(r, runs, o);
     return r;
 }
 
-void add_scale_targets(ScaleTable& t) {
-    const ScaleRow &first = t.rows.front(), &last = t.rows.back();
+// The largest size timed on one thread (every size has one when the first has).
+const ScaleRow& largest_timed(const ScaleTable& t) {
+    for (auto r = t.rows.rbegin(); r != t.rows.rend(); ++r)
+        if (r->one_thread) return *r;
+    return t.rows.front();
+}
+
+// Issue 5: the CD cost per agent stays within 1.5x of the smallest crowd's as the crowd grows.
+Target cost_target(const ScaleTable& t) {
+    const ScaleRow &first = t.rows.front(), &last = largest_timed(t);
     Target cost;
     cost.what = "CD cost per agent per simulated second at " + std::to_string(last.agents) + " agents within 1.5x of " +
                 std::to_string(first.agents);
@@ -152,26 +201,65 @@ void add_scale_targets(ScaleTable& t) {
         cost.known = false;
         cost.detail = "CrowdSummary::cd_seconds reads 0; " + cost.detail;
     }
-    t.targets.push_back(cost);
+    return cost;
+}
+
+// Issue 29: threads at 10,000 agents (or the largest size timed on one thread), records identical.
+Target speed_target(const ScaleTable& t) {
+    const ScaleRow* at = &largest_timed(t);
+    for (const ScaleRow& r : t.rows)
+        if (r.agents == 10000) at = &r;
+    Target speed;
+    speed.what = "choice points on " + std::to_string(at->threads) + " threads >= 1.8x faster at " +
+                 std::to_string(at->agents) + " agents, records identical";
+    speed.goal = 1.8;
+    speed.measured = at->speedup;
+    bool same = true;
+    for (const ScaleRow& r : t.rows) same = same && r.identical;
+    speed.detail = std::string(at->cd_seconds_n > 0 ? "CD" : "simulation") + " wall time; records " +
+                   (same ? "identical at every size" : "DIFFER at some size");
+    if (!same) speed.measured = 0;
+    return speed;
+}
+
+// Issue 29's memory and time at 100,000 and 1,000,000 agents, on `threads` threads.
+void add_large_targets(ScaleTable& t) {
+    for (const ScaleRow& r : t.rows) {
+        const bool million = r.agents >= 1000000;
+        if (r.agents < 100000) continue;
+        Target memory;
+        memory.what = std::to_string(r.agents) + " agents: peak memory <= " + (million ? "16" : "2") + " GB";
+        memory.goal = million ? 16 : 2;
+        memory.at_most = true;
+        memory.ratio = false;
+        memory.measured = double(r.peak_bytes_n) / 1e9;
+        memory.known = r.peak_bytes_n > 0;
+        memory.detail = "GB, peak resident size of the " + std::to_string(r.threads) + "-thread run";
+        t.targets.push_back(memory);
+        Target time;
+        time.what = std::to_string(r.agents) + (million ? " agents: wall <= 900 s" : " agents: faster than real time");
+        time.goal = million ? 900 : t.seconds;
+        time.at_most = true;
+        time.ratio = false;
+        time.measured = million ? r.wall_seconds_n : r.sim_seconds_n;
+        time.detail = std::string(million ? "whole run" : "simulation") + " seconds on " + std::to_string(r.threads) +
+                      " threads for " + util::fixed(t.seconds, 0) + " s simulated";
+        t.targets.push_back(time);
+    }
+}
+
+void add_scale_targets(ScaleTable& t) {
+    t.targets.push_back(cost_target(t));
     Target contacts;
     contacts.what = "no contacts outside fallbacks (all sizes)";
     contacts.goal = 0;
     contacts.at_most = true;
     contacts.ratio = false;
     for (const ScaleRow& r : t.rows) contacts.measured += double(r.contacts_unexcused);
-    contacts.detail = "frame-by-frame check of the 1-thread records";
+    contacts.detail = "frame-by-frame check of every run, as it streams";
     t.targets.push_back(contacts);
-    Target speed;
-    speed.what = "choice points on " + std::to_string(last.threads) + " threads >= 1.8x faster, records identical";
-    speed.goal = 1.8;
-    speed.measured = last.speedup;
-    bool same = true;
-    for (const ScaleRow& r : t.rows) same = same && r.identical;
-    speed.detail = std::string(last.cd_seconds_n > 0 ? "CD" : "simulation") + " wall time at " +
-                   std::to_string(last.agents) + " agents; records " +
-                   (same ? "identical at every size" : "DIFFER at some size");
-    if (!same) speed.measured = 0;
-    t.targets.push_back(speed);
+    t.targets.push_back(speed_target(t));
+    add_large_targets(t);
 }
 
 // The untimed logged run of one size: a sample of its queries for bench/callgrind_workload.sh.
@@ -188,21 +276,24 @@ void save_scale_queries(const MotionGraph& g, const NarrowPhase& narrow, const S
 }  // namespace
 
 std::string record_digest(const Record& r) {
-    Fnv f;
-    for (const ChoicePoint& cp : r.choices) hash_choice(f, cp);
-    for (const AgentTrack& t : r.tracks)
-        for (const PlacedClip& c : t.clips) {
-            f.add(std::uint64_t(c.clip));
-            f.add(std::uint64_t(c.start));
-            f.add(c.place.x);
-            f.add(c.place.y);
-            f.add(c.place.theta);
-            f.add(std::uint64_t(c.fallback));
-            f.add(std::uint64_t(c.choice));
-        }
-    char buf[20];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
-    return buf;
+    DigestSink sink;
+    sink.begin(r);
+    for (std::size_t k = 0; k < r.choices.size(); ++k) sink.choice(k, r.choices[k]);
+    for (std::size_t a = 0; a < r.tracks.size(); ++a)
+        for (const PlacedClip& c : r.tracks[a].clips) sink.clip(int(a), c);
+    return sink.digest();
+}
+
+void DigestSink::begin(const Record& header) { clips_.assign(header.tracks.size(), kFnvBasis); }
+
+void DigestSink::choice(std::size_t /*index*/, const ChoicePoint& choice) { hash_choice(choices_, choice); }
+
+void DigestSink::clip(int agent, const PlacedClip& clip) { hash_clip(clips_.at(std::size_t(agent)), clip); }
+
+std::string DigestSink::digest() const {
+    std::uint64_t h = choices_;
+    for (std::uint64_t a : clips_) fnv(h, a);
+    return hex(h);
 }
 
 ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& progress) {
@@ -213,6 +304,7 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
     double total = 0, done = 0;
     for (int n : o.agents) total += double(n);
     ScaleTable t;
+    t.seconds = o.seconds;
     for (int n : o.agents) {
         t.rows.push_back(scale_row(g, narrow, o, n, threads, [&](double f) {
             if (progress) progress((done + f * n) / total);
@@ -221,7 +313,7 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
         if (!o.save_queries.empty()) save_scale_queries(g, narrow, o, n);
     }
     for (ScaleRow& r : t.rows)
-        r.ratio_to_first = t.rows.front().cd_us_per_agent_second > 0
+        r.ratio_to_first = r.one_thread && t.rows.front().cd_us_per_agent_second > 0
                                ? r.cd_us_per_agent_second / t.rows.front().cd_us_per_agent_second
                                : 0;
     add_scale_targets(t);
@@ -239,6 +331,12 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
         "summary counters equal";
     t.notes["repeats"] = std::to_string(std::max(1, o.repeats)) + " pairs of runs (1 thread, then " +
                          std::to_string(threads) + ") per size, interleaved; times are medians";
+    t.notes["memory"] =
+        "peak resident size of the process during each size's runs (VmHWM, reset before each run); every run "
+        "streams its decisions to a digest and its frames to the contact check, keeping no record";
+    t.notes["large sizes"] = "from " + std::to_string(o.once_from) + " agents one pair of runs; from " +
+                             std::to_string(o.parallel_only_from) + " only the " + std::to_string(threads) +
+                             "-thread run (one-thread columns empty)";
     t.notes["hardware threads"] = std::to_string(util::WorkerPool::hardware_threads());
     if (progress) progress(1.0);
     return t;

@@ -11,6 +11,8 @@
 #include "data.h"
 #include "files.h"
 #include "method.h"
+#include "mobb/crowd/crowd.h"
+#include "peak_memory.h"
 #include "report.h"
 #include "workloads.h"
 
@@ -184,6 +186,39 @@ TEST(Bench, RandomTestsAreDeterministicAndWithinTheRadius) {
     EXPECT_GT(root_share(trees, random_tests(clips, 0.5, 500, 1)), root_share(trees, random_tests(clips, 20, 500, 1)));
 }
 
+// The scale workload keeps no record: its digest, made as the run streams, must be the whole record's.
+TEST(Bench, StreamedDigestEqualsTheRecords) {
+    const crowd::MotionGraph g = crowd::load_graph(kGraph);
+    const crowd::NarrowPhase narrow = crowd::NarrowPhase::sweep(g);
+    crowd::CrowdOptions o;
+    o.agents = 12;
+    o.world.x1 = 12;
+    o.world.y1 = 16;
+    o.seconds = 5;
+    const crowd::CrowdRun whole = crowd::run_crowd(g, narrow, o);
+    DigestSink sink;
+    o.sink = &sink;
+    crowd::run_crowd(g, narrow, o);
+    EXPECT_EQ(sink.digest(), record_digest(whole.record));
+    o.seed = 2;  // another run, another digest
+    DigestSink other;
+    o.sink = &other;
+    crowd::run_crowd(g, narrow, o);
+    EXPECT_NE(other.digest(), sink.digest());
+}
+
+TEST(Bench, PeakMemorySeesAnAllocation) {
+    if (!reset_peak_memory()) GTEST_SKIP() << "this system cannot reset the peak (no /proc/self/clear_refs)";
+    const std::int64_t before = peak_memory_bytes();
+    ASSERT_GT(before, 0);
+    std::vector<char> block(std::size_t(64) << 20, 1);  // 64 MB, touched
+    EXPECT_GE(peak_memory_bytes(), before + (std::int64_t(60) << 20)) << int(block[block.size() / 2]);
+    block = {};
+    block.shrink_to_fit();
+    reset_peak_memory();
+    EXPECT_LT(peak_memory_bytes(), before + (std::int64_t(32) << 20));
+}
+
 TEST(Bench, ScaleQuickShape) {
     ScaleOptions o;
     o.graph = kGraph;
@@ -197,6 +232,8 @@ TEST(Bench, ScaleQuickShape) {
         EXPECT_EQ(r.contacts_unexcused, 0u);
         EXPECT_GT(r.choice_points, 0u);
         EXPECT_EQ(r.threads, 2);
+        EXPECT_TRUE(r.one_thread);
+        EXPECT_GT(r.wall_seconds_n, 0);
     }
     EXPECT_NEAR(t.rows[1].width * t.rows[1].height, 16 * o.area_per_agent, 1e-9);
     EXPECT_EQ(t.targets.size(), 3u);
