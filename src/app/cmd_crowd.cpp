@@ -130,13 +130,12 @@ void add_crowd(CLI::App& app, int& exit_code) {
     };
     rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
              "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
+    rule_off("--no-follow", &crowd::CrowdTuning::follow,
+             "Goal agents' look-ahead treats the reservations of agents going their way as walls, beyond the "
+             "first clip too");
     rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
              "An agent that waited never pushes others' reservations aside");
     rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
-    cmd->add_flag_callback(
-        "--make-way", [off] { off->make_way = true; },
-        "A goal agent stuck for 2 s asks agents it outranks, stuck and heading against it, to keep clear "
-        "of its way (off by default)");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
     auto tune = std::make_shared<std::vector<std::string>>();
