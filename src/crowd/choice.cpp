@@ -247,8 +247,9 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, {}};
+    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
+    if (s.options.tuning.follow) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same

@@ -133,7 +133,7 @@ std::vector<SearchStep> LookAhead::sequence(int k) const {
 void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
     const CrowdTuning& t = s.options.tuning;
     const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
-    way_heading_ = t.follow ? s.policy.heading(site) : std::nullopt;
+    way_heading_ = site.way;
     const auto free = [&](const SearchStep& step) {
         Piece piece;
         piece.agent = agent_;

@@ -86,18 +86,18 @@ private:
         if (distance < stop_radius_) return distance / k.goal_walking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
         double t = distance / k.goal_walking + turn / k.goal_turning;
-        const std::optional<double> way = k.follow ? heading(site) : std::nullopt;
         for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
             const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
-            if (d2 >= k.goal_personal * k.goal_personal || goes_my_way(site, n, way)) continue;
+            if (d2 >= k.goal_personal * k.goal_personal || goes_my_way(site, n)) continue;
             t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
         }
         return t;
     }
 
     // Following (CrowdTuning::follow): a leader is one to follow, not to keep away from.
-    bool goes_my_way(const ChoiceSite& site, const Neighbour& n, const std::optional<double>& way) const {
-        return way && n.facing && follows(*way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow_angle);
+    bool goes_my_way(const ChoiceSite& site, const Neighbour& n) const {
+        return site.way && n.facing &&
+               follows(*site.way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow_angle);
     }
 
     // Walking on: the estimated time to the goal; standing idle last. A stuck agent

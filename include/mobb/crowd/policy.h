@@ -42,6 +42,8 @@ struct ChoiceSite {
     bool stops = false;                         ///< it stands at that goal for good (its last; it stays)
     int stalled = 0;                            ///< choice points in a row it could not move on (escapes)
     bool arrived = false;                       ///< Policy::arrived(): order() puts the ways to stop first
+    /// Radians: the way it wants to go (Policy::heading) when it follows others (CrowdTuning::follow).
+    std::optional<double> way;
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
     /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
     std::vector<Neighbour> neighbours;

@@ -56,14 +56,14 @@ struct CrowdTuning {
     double look_ahead_dead_end = 2.0;  ///< seconds
 
     // Following (src/crowd/follow.cpp; Silver 2005: reservations trusted within a window): a goal agent
-    // follows the agents ahead of it - within `follow_angle` of its way - that face its way, unless they
-    // end their clip within `follow_goal_reach` of the goal they stop at: beyond its first clip its
-    // look-ahead plans past their reservations (escape clips and held ground, never the clip they play),
-    // and its estimate of the time to go counts no crowding for them. It waits in line behind them
-    // rather than walking round a queue it could join; its first clip and that clip's escape are tested
-    // against everything, as always. Trades detours round a queue for waiting in it: queues at doors
-    // and in corridors 1.2-1.4x faster, crossings in the open slower (bench/results/README.md
-    // "following").
+    // follows the agents ahead of it - within `follow_angle` of its way (down its navigation field:
+    // NavField::downhill) - that face its way, unless they end their clip within `follow_goal_reach` of
+    // the goal they stop at: beyond its first clip its look-ahead plans past their reservations (escape
+    // clips and held ground, never the clip they play), and its estimate of the time to go counts no
+    // crowding for them. It waits in line behind them rather than walking round a queue it could join;
+    // its first clip and that clip's escape are tested against everything, as always. Trades detours
+    // round a queue for waiting in it: queues at doors and in corridors 1.2-1.4x faster, crossings in
+    // the open slower (bench/results/README.md "following").
     bool follow = true;
     double follow_angle = 0.8;       ///< radians (46 degrees) either side of the agent's way
     double follow_goal_reach = 3.0;  ///< metres: 3 m kept l_walls_60 from hemming an agent in (1 m did not)
