@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mobb/crowd/metrics.h"
 #include "mobb/core/angle.h"
+#include "mobb/crowd/metrics.h"
 #include "mobb/crowd/policy.h"
 
 namespace mobb::crowd {
