@@ -40,7 +40,7 @@ private:
 void quiet();
 
 template <class T>
-hid_t native();  // std::int64_t, std::uint64_t, double
+hid_t native();  // std::int8_t, std::int32_t, std::int64_t, std::uint64_t, double
 
 // Attributes: text (variable-length UTF-8), numbers and arrays of numbers; writing one replaces it.
 void write_text(hid_t object, const char* name, const std::string& text);

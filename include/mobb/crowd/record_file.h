@@ -26,6 +26,12 @@ struct RecordFile {
 /// Whether `file` names an HDF5 record (extension .h5 or .hdf5).
 bool is_h5_record(const std::string& file);
 
+/// Whether a run recorded to `file` keeps its choice points' candidates and their queries
+/// (CrowdOptions::record_queries) unless told: a JSON record does (small runs, whose candidates the viewer
+/// lists), an HDF5 one does not (large runs: candidates and queries are most of its table rows and about a
+/// third of what recording costs; docs/formats.md).
+bool keeps_candidates(const std::string& file);
+
 /// Reads a record file of either kind, every field checked as load_record says; an incomplete HDF5 file
 /// (RecordFile::note) up to its last mark: its frames so far, the choice points and clips of those
 /// frames. Throws
