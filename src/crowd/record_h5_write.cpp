@@ -136,8 +136,8 @@ private:
 };
 
 // A table written as it grows: named columns of integers (one value a row) and float64 (`width` a row,
-// not compressed: doubles barely shrink, and deflating them cost more than the rest of the tables). The
-// calling thread gathers the rows; the writer's queue writes them, a block at a time.
+// not compressed: doubles barely shrink, and deflating them took as many instructions as the rest of the
+// writing). The calling thread gathers the rows; the writer's queue writes them, a block at a time.
 class Table {
 public:
     Table(hid_t f, const std::string& group, std::initializer_list<std::pair<const char*, Bits>> ints,
