@@ -120,6 +120,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
     cmd->add_option("--record", *record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
+    auto candidates = std::make_shared<bool>(false);
+    cmd->add_flag("--record-candidates,!--no-record-candidates", *candidates,
+                  "Keep each choice point's candidates and their queries in the record (default: in a JSON record, "
+                  "not in HDF5, where they would be most of the file's tables and slow the run)");
     cmd->add_option("--scenario", *scenario,
                     "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
     // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
@@ -154,6 +158,11 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 exit_code = kUsage;
                 return;
             }
+        if (record->empty() && cmd->count("--record-candidates")) {
+            std::cerr << "crowd: --record-candidates and --no-record-candidates go with --record\n";
+            exit_code = kUsage;
+            return;
+        }
         for (const std::string& t : *tune) {
             try {
                 crowd::set_tuning(*off, t);
@@ -176,7 +185,9 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 opt.cell = o->cell;
             }
             opt.tuning = *off;
-            opt.record_queries = !record->empty();  // only a written record shows them
+            // Only a written record shows them, and an HDF5 one only when asked.
+            opt.record_queries = !record->empty() &&
+                                 (cmd->count("--record-candidates") ? *candidates : crowd::keeps_candidates(*record));
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);
             // The fastest exact query unless a tree is asked for (its counters then fill the summary).

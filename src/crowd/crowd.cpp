@@ -262,11 +262,14 @@ void Simulation::commit(Choice& c) {
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
-    if (o_.sink) return o_.sink->choice(std::size_t(choice), cp);  // streamed: the record keeps none
+    if (o_.sink && o_.record_queries) return o_.sink->choice(std::size_t(choice), cp);  // the record keeps none
     if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
-    std::vector<Candidate> candidates = std::move(cp.candidates);
-    out_.record.choices.push_back(std::move(cp));
+    std::vector<Candidate> candidates = std::move(cp.candidates);  // leaves cp.candidates empty
+    if (o_.sink)
+        o_.sink->choice(std::size_t(choice), cp);
+    else
+        out_.record.choices.push_back(std::move(cp));
     // Assigning a member of the moved-from slot is defined; Choice::prepare resets the rest.
     cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }
