@@ -147,7 +147,7 @@ render::Frame frame_of(const State& s) {
         }
         v.place = s.places[k];
         v.color = k < s.colors.size() ? s.colors[k] : render::clip_color(int(k));
-        v.visible = k >= s.scene.clips.size() || s.scene.clips[k].visible;
+        v.visible = !s.clips[k].hidden && (k >= s.scene.clips.size() || s.scene.clips[k].visible);
         if (k < colouring.samples.size() && !colouring.samples[k].empty()) v.sample_values = &colouring.samples[k];
         if (k < colouring.nodes.size() && !colouring.nodes[k].empty()) v.node_values = &colouring.nodes[k];
         f.clips.push_back(v);
@@ -162,6 +162,7 @@ render::Frame frame_of(const State& s) {
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
     if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
     if (s.crowd) f.prisms = crowd_prisms(*s.crowd, s.scene.cursor);
+    if (s.crowd) f.extent = crowd_extent(*s.crowd);
     f.revision = s.revision;
     f.disk_scale = colouring.disk_scale;
     f.box_scale = colouring.box_scale;
