@@ -16,11 +16,12 @@
 
 namespace {
 
-// Every part the viewer and Python ask for: the first and last frames (all agents, then a range), the
-// choice points of the first frames, the first and last choice points whole, the fallbacks.
+// Every part the viewer and Python ask for: the header with the clip table, the first and last frames
+// (all agents, then a range), the choice points of the first frames, the first and last choice points
+// whole, the fallbacks.
 void read_in_parts(const std::string& file) {
     const auto r = mobb::crowd::open_record(file, std::size_t(1) << 20);
-    const std::int64_t frames = r->header().frames;
+    const std::int64_t frames = r->header().frames;  // and the clip table
     r->samples(0, 2);
     r->samples(frames - 2, frames, {1, 3});
     const auto [lo, hi] = r->choice_rows(0, 30);

@@ -30,9 +30,15 @@ auto unlocked(F&& f) -> decltype(f()) {
     }
 }
 
-// An incomplete file opens with a warning saying up to where it is read.
-std::shared_ptr<RecordReader> open(const std::string& file) {
-    auto r = unlocked([&] { return std::shared_ptr<RecordReader>(crowd::open_record(file)); });
+// An incomplete file opens with a warning saying up to where it is read. A mobb.Record reads its clip
+// table now (its properties need it) and keeps recent blocks of frames; read_record reads one window
+// and neither.
+std::shared_ptr<RecordReader> open(const std::string& file, bool record) {
+    auto r = unlocked([&] {
+        std::shared_ptr<RecordReader> out = crowd::open_record(file, record ? crowd::kRecordCacheBytes : 0);
+        if (record) out->header();
+        return out;
+    });
     if (!r->info().note.empty()) py::module_::import("warnings").attr("warn")(r->info().note);
     return r;
 }
@@ -75,7 +81,7 @@ py::array_t<double> rows(std::size_t n, std::size_t width, F&& row) {
 
 py::dict read_record(const std::string& file, std::int64_t first, const std::optional<std::int64_t>& last,
                      const std::optional<std::pair<std::size_t, std::size_t>>& agents) {
-    const auto reader = open(file);
+    const auto reader = open(file, false);
     const crowd::AgentRange range = agent_range(agents);
     const crowd::SampleWindow w = unlocked(
         [&] { return reader->samples(first, last.value_or(std::numeric_limits<std::int64_t>::max()), range); });
@@ -91,7 +97,7 @@ py::dict read_record(const std::string& file, std::int64_t first, const std::opt
     return out;
 }
 
-py::dict clips_of(const RecordReader& r) {
+py::dict clips_of(RecordReader& r) {
     std::vector<std::pair<std::size_t, const crowd::PlacedClip*>> all;
     for (std::size_t a = 0; a < r.header().tracks.size(); ++a)
         for (const crowd::PlacedClip& c : r.header().tracks[a].clips) all.emplace_back(a, &c);
@@ -110,7 +116,7 @@ py::dict clips_of(const RecordReader& r) {
     return out;
 }
 
-py::dict goals_of(const RecordReader& r) {
+py::dict goals_of(RecordReader& r) {
     std::vector<std::pair<std::size_t, std::array<double, 2>>> all;
     for (std::size_t a = 0; a < r.header().tracks.size(); ++a)
         for (const auto& g : r.header().tracks[a].goals) all.emplace_back(a, g);
@@ -224,21 +230,21 @@ it opens; samples(), choices() and choice() read the frames, the table rows or t
 (samples through a cache of recent blocks of frames). A JSON record is read whole when it opens.
 Units: metres, seconds, radians; frames are global, frame k starts at t = k * dt.)")
         .def_property_readonly(
-            "dt", [](const RecordReader& r) { return r.header().dt; }, "Seconds per frame")
+            "dt", [](RecordReader& r) { return r.header().dt; }, "Seconds per frame")
         .def_property_readonly(
-            "frames", [](const RecordReader& r) { return r.header().frames; },
+            "frames", [](RecordReader& r) { return r.header().frames; },
             "The run's frames (of an incomplete file: those up to its last mark)")
-        .def_property_readonly("agents", [](const RecordReader& r) { return r.header().tracks.size(); })
+        .def_property_readonly("agents", [](RecordReader& r) { return r.header().tracks.size(); })
         .def_property_readonly("choice_count", &RecordReader::choice_count, "Rows of the choice table")
         .def_property_readonly("lazy", &RecordReader::lazy, "True when parts are read as asked (HDF5)")
-        .def_property_readonly("summary", [](const RecordReader& r) { return json_dict(r.info().summary_json); })
-        .def_property_readonly("metrics", [](const RecordReader& r) { return json_dict(r.info().metrics_json); })
+        .def_property_readonly("summary", [](RecordReader& r) { return json_dict(r.info().summary_json); })
+        .def_property_readonly("metrics", [](RecordReader& r) { return json_dict(r.info().metrics_json); })
         .def_property_readonly(
-            "note", [](const RecordReader& r) { return r.info().note; },
+            "note", [](RecordReader& r) { return r.info().note; },
             "One line when the file is incomplete (read up to its last mark), else empty")
         .def_property_readonly(
             "left_frame",
-            [](const RecordReader& r) {
+            [](RecordReader& r) {
                 const auto& t = r.header().tracks;
                 return column<std::int64_t>(t.size(), [&](std::size_t a) { return t[a].left_frame.value_or(-1); });
             },
@@ -282,7 +288,7 @@ Raises IndexError for a row past choice_count.)")
             "Every choice point that took a fallback: dict of arrays row, agent, frame")
         .def_property_readonly(
             "counts",
-            [](const RecordReader& r) {
+            [](RecordReader& r) {
                 const crowd::ReadCounts c = r.counts();
                 py::dict out;
                 out["frames"] = c.frames;
@@ -297,8 +303,9 @@ Raises IndexError for a row past choice_count.)")
             for (const char* o : kOutcomes) out.append(o);
             return out;
         });
-    m.def("open_record", &open, py::arg("file"),
-          R"(Opens a crowd record file, `mobb crowd --record` (.json, or HDF5 for .h5 / .hdf5), for reading in
+    m.def(
+        "open_record", [](const std::string& file) { return open(file, true); }, py::arg("file"),
+        R"(Opens a crowd record file, `mobb crowd --record` (.json, or HDF5 for .h5 / .hdf5), for reading in
 parts: returns a mobb.Record. An incomplete HDF5 record (its writing stopped: killed, a full disk) opens up
 to its last mark, with a warning. Raises ValueError "FILE: PLACE: message" for a file that cannot be read,
 as `mobb record convert` says it.)");

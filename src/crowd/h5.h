@@ -124,8 +124,8 @@ private:
     void read_into(hsize_t first, hsize_t count, T* out);
     const std::vector<T>& kept(hsize_t block);  // block `block`, read unless kept
 
-    static constexpr std::size_t kKeptBlocks = 16;    // 512 KB of a column of 4,096-row blocks of 8 bytes
-    static constexpr hsize_t kKeptValues = 4096 * 4;  // blocks of tables are kept, not those of the samples
+    static constexpr std::size_t kKeptBlocks = 16;             // 512 KB of a column of 4,096-row blocks of 8 bytes
+    static constexpr hsize_t kKeptValues = hsize_t(4096) * 4;  // tables' blocks are kept, not the samples'
 
     Id set_;
     std::string path_;

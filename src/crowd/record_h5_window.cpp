@@ -48,7 +48,10 @@ class H5Reader final : public RecordReader {
 public:
     H5Reader(const std::string& file, std::size_t cache_bytes);
 
-    const Record& header() const override { return info_.record; }
+    const Record& header() override {
+        if (!clips_read_) named([&] { read_clips(); });
+        return info_.record;
+    }
     const RecordFile& info() const override { return info_; }
     std::size_t choice_count() const override { return choices_; }
     bool lazy() const override { return true; }
@@ -59,7 +62,7 @@ public:
     std::vector<ChoiceMark> fallbacks() override;
     ReadCounts counts() const override { return counts_; }
     void check_graph_clips(std::size_t clips) override {
-        crowd::check_graph_clips(info_.record, clips);
+        crowd::check_graph_clips(header(), clips);
         graph_clips_ = clips;
     }
 
@@ -110,6 +113,7 @@ private:
     std::list<std::pair<std::int64_t, Block>> recent_;
     std::size_t cache_bytes_ = 0, cached_bytes_ = 0;
     ReadCounts counts_;
+    bool clips_read_ = false;                 // header(): the clip table is read on its first call
     std::optional<std::size_t> graph_clips_;  // check_graph_clips: the choice points read are checked too
 };
 
@@ -124,7 +128,6 @@ H5Reader::H5Reader(const std::string& file, std::size_t cache_bytes) : file_(fil
         count_choices();
         read_tracks();
         read_goals();
-        read_clips();
     });
 }
 
@@ -252,16 +255,24 @@ void H5Reader::read_goals() {
 
 // The clip table, a block of rows at a time: each clip checked as the JSON reader checks a track's clips.
 void H5Reader::read_clips() {
+    for (AgentTrack& t : info_.record.tracks) t.clips.clear();  // a read that failed before left some
     const std::string taker = older_ ? "/clips/commit" : "/clips/choice";
     Column<std::int64_t>&agent = ints("/clips/agent"), &clip = ints("/clips/clip"), &start = ints("/clips/start"),
     &fallback = ints("/clips/fallback"), &choice = ints(taker);
     Column<double>& places = reals("/clips/place", 4);
     const double dt = info_.record.dt;
+    // Each agent's clips counted first, so that its list is allocated once (5 M clips at 100,000 agents);
+    // an owner out of range is named below, in row order, unless past an incomplete file's last mark.
+    const I owner = agent.read(0, agent.rows());
+    std::vector<std::size_t> count(agents_, 0);
+    for (const std::int64_t a : owner)
+        if (a >= 0 && std::size_t(a) < agents_) ++count[std::size_t(a)];
+    for (std::size_t a = 0; a < agents_; ++a) info_.record.tracks[a].clips.reserve(count[a]);
     for (hsize_t r0 = 0; r0 < agent.rows(); r0 += kTableBlock) {
         const hsize_t n = std::min(kTableBlock, agent.rows() - r0);
-        const I a = agent.read(r0, n), c = clip.read(r0, n), s = start.read(r0, n), fb = fallback.read(r0, n),
-                ch = choice.read(r0, n);
+        const I c = clip.read(r0, n), s = start.read(r0, n), fb = fallback.read(r0, n), ch = choice.read(r0, n);
         const D p = places.read(r0, n);
+        const std::int64_t* a = owner.data() + r0;
         for (std::size_t k = 0; k < n; ++k) {
             if (!held_.complete && s[k] >= frames_) continue;  // an incomplete file: the clips of its frames
             if (a[k] < 0 || std::size_t(a[k]) >= agents_)
@@ -282,11 +293,13 @@ void H5Reader::read_clips() {
                 bad(w(".start"), std::to_string(s[k]) + ": clips in time order, the one before starts at frame " +
                                      std::to_string(before->start));
             const double* q = &p[4 * k];
-            const auto place = [&](std::size_t i) { return [&w, i] { return at(w(".place"), i); }; };
-            check_coordinate(q[0], place(0));
-            check_coordinate(q[1], place(1));
-            check_finite(q[2], place(2));
-            check_frame_time(q[3], s[k], dt, 1e-9, place(3));
+            if (!disk_ok({q[3], q[0], q[1], 0.0}, s[k], dt) || !std::isfinite(q[2])) {  // the checks for the message
+                const auto place = [&](std::size_t i) { return [&w, i] { return at(w(".place"), i); }; };
+                check_coordinate(q[0], place(0));
+                check_coordinate(q[1], place(1));
+                check_finite(q[2], place(2));
+                check_frame_time(q[3], s[k], dt, 1e-9, place(3));
+            }
             if (ch[k] < -1 || ch[k] >= std::int64_t(choices_))
                 bad(w(".choice"),
                     std::to_string(ch[k]) + ": the record has " + std::to_string(choices_) + " choice points");
@@ -298,6 +311,7 @@ void H5Reader::read_clips() {
     }
     for (std::size_t a = 0; a < agents_; ++a)
         if (info_.record.tracks[a].clips.empty()) bad(at("tracks", a) + ".clips", "an agent plays at least one clip");
+    clips_read_ = true;
 }
 
 // Each disk of an agent still in the run checked as the JSON reader checks a track's samples.
@@ -411,18 +425,18 @@ std::vector<ChoiceSummary> H5Reader::summaries(std::size_t first, std::size_t la
         std::vector<ChoiceSummary> out;
         for (std::size_t k = 0; k < n; ++k) {
             if (agent >= 0 && c[0][k] != agent) continue;
-            const std::string w = at("choices", first + k);
+            const auto w = [&, row = first + k] { return at("choices", row); };
             ChoicePoint& p = out.emplace_back().point;
             out.back().row = first + k;
             out.back().candidates = tested[k];
             if (c[0][k] < 0 || std::size_t(c[0][k]) >= agents_)
-                bad(w + ".agent", std::to_string(c[0][k]) + ": expected 0 to " + std::to_string(agents_ - 1));
+                bad(w() + ".agent", std::to_string(c[0][k]) + ": expected 0 to " + std::to_string(agents_ - 1));
             if (c[1][k] < 0 || c[1][k] >= frames_)
-                bad(w + ".frame", std::to_string(c[1][k]) + ": expected 0 to " + std::to_string(frames_ - 1));
-            if (c[2][k] < 0 || c[2][k] > std::numeric_limits<int>::max()) bad(w + ".taken", "expected a clip id");
+                bad(w() + ".frame", std::to_string(c[1][k]) + ": expected 0 to " + std::to_string(frames_ - 1));
+            if (c[2][k] < 0 || c[2][k] > std::numeric_limits<int>::max()) bad(w() + ".taken", "expected a clip id");
             if (c[3][k] < 0 || c[3][k] > 4) bad("/choices/outcome row " + std::to_string(first + k), "expected 0 to 4");
             for (std::size_t i = 5; i < 10; ++i)
-                if (c[i][k] < 0) bad(w + "." + kNames[i], "expected a count (an integer, not negative)");
+                if (c[i][k] < 0) bad(w() + "." + kNames[i], "expected a count (an integer, not negative)");
             p.agent = int(c[0][k]);
             p.frame = c[1][k];
             p.taken = int(c[2][k]);
@@ -431,7 +445,7 @@ std::vector<ChoiceSummary> H5Reader::summaries(std::size_t first, std::size_t la
             p.queries = std::uint64_t(c[5][k]), p.tests2d = std::uint64_t(c[6][k]), p.tests3d = std::uint64_t(c[7][k]);
             p.samples = std::uint64_t(c[8][k]), p.pruned = std::uint64_t(c[9][k]);
             if (c[10][k] >= 0) {
-                const auto place = [&](std::size_t i) { return [=] { return at(w + ".plan.hold", i); }; };
+                const auto place = [&](std::size_t i) { return [=] { return at(w() + ".plan.hold", i); }; };
                 check_coordinate(hold[3 * k], place(0));
                 check_coordinate(hold[3 * k + 1], place(1));
                 check_radius(hold[3 * k + 2], place(2));

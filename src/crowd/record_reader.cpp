@@ -31,7 +31,7 @@ public:
         counts_.frames = whole_.frames;
     }
 
-    const Record& header() const override { return info_.record; }
+    const Record& header() override { return info_.record; }
     const RecordFile& info() const override { return info_; }
     std::size_t choice_count() const override { return whole_.choices.size(); }
     bool lazy() const override { return false; }

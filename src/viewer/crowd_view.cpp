@@ -58,6 +58,7 @@ void drop_opened(State& s) {
 Path agent_path(const crowd::SampleWindow& w, std::size_t a, const crowd::AgentTrack& track, bool& shown, double& t0) {
     Path path;
     path.dt = w.dt;
+    path.samples.reserve(std::size_t(w.last - w.first));
     t0 = double(w.first) * w.dt;
     for (std::int64_t f = w.first; f < w.last; ++f) {
         const std::array<double, 4>* d = crowd::window_disk(w, a, f);

@@ -31,9 +31,9 @@ struct TimelineMark {
 
 /// Most disks (agents x frames) the viewer reads of a record at a time: a record of at most this many is
 /// read whole when it opens; a larger one a window of frames around the time cursor, at most this many
-/// disks (about 150 bytes each in the viewer with their stacks' trees: 8 M disks, 1.2 GB; 800 frames of
-/// 10,000 agents, 80 of 100,000).
-constexpr std::size_t kCrowdWindowDisks = std::size_t(8) << 20;
+/// disks (about 200 bytes each in the viewer with their stacks' trees and draw buffers: 4 M disks, 0.8 GB;
+/// 400 frames of 10,000 agents, 13 s, more than the 10 s the crowd's time window draws; 40 of 100,000).
+constexpr std::size_t kCrowdWindowDisks = std::size_t(4) << 20;
 /// Seconds read either side of the frames drawn (the time window around the cursor), so that playing
 /// or scrubbing a little reads nothing.
 constexpr double kCrowdReadAhead = 1.0;

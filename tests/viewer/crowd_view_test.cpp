@@ -135,8 +135,8 @@ TEST(CrowdSkeletons, SourcesLoadOnce) {
     ASSERT_FALSE(record.empty());
     State s = viewer::load_crowd_state(record, 1.5f);
     ASSERT_TRUE(s.crowd->poses);
-    // Loading the state posed the agents at t = 0 (framing the camera): every source is loaded, once (the
-    // poses carry the joints all sources share, and blend across them at clip starts).
+    // Posing the agents at t = 0 loads every source, once (the poses carry the joints all sources share,
+    // and blend across them at clip starts).
     viewer::agent_skeletons(*s.crowd, 0.0, s.colors);
     EXPECT_EQ(s.crowd->poses->loaded(), int(s.crowd->graph->sources.size()));
     ASSERT_TRUE(s.crowd->poser);

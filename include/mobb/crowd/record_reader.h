@@ -55,9 +55,9 @@ public:
     virtual ~RecordReader() = default;
     /// Everything but the samples and the choice points, checked as load_record checks it: the run's
     /// header, the world, and every track's goals, at_goal, left_frame and clips (the whole clip table:
-    /// about one clip per agent per second, small beside the samples). Its tracks' samples and its
-    /// choices are empty.
-    virtual const Record& header() const = 0;
+    /// about one clip per agent per second, small beside the samples; read on the first call, so that
+    /// reading samples alone does not). Its tracks' samples and its choices are empty.
+    virtual const Record& header() = 0;
     /// The record's summary and metrics (JSON objects as text; empty when the file has none), and the
     /// note of an incomplete file (RecordFile::note; its frames and choice points are those up to its
     /// last mark).
@@ -92,8 +92,8 @@ public:
 /// each block once: 256 MB, a 10 s window of 26,000 agents at 30 fps.
 constexpr std::size_t kRecordCacheBytes = std::size_t(256) << 20;
 
-/// Opens a record file: an HDF5 one lazily (its header and clip table now), a JSON one whole. Throws
-/// std::runtime_error naming the file and the place, as read_record_file does.
+/// Opens a record file: an HDF5 one lazily (its header, goals and left frames now), a JSON one whole.
+/// Throws std::runtime_error naming the file and the place, as read_record_file does.
 std::unique_ptr<RecordReader> open_record(const std::string& file, std::size_t cache_bytes = kRecordCacheBytes);
 
 /// Frames first .. last - 1 of agents `agents` of a whole record: what an HDF5 reader gives for the same
