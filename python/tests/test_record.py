@@ -86,7 +86,7 @@ def long_records(tmp_path_factory, mobb_exe):
     out = {}
     for kind in ("json", "h5"):
         out[kind] = folder / ("record." + kind)
-        code, _, err = run_cli(mobb_exe, *LONG, "--record", str(out[kind]))
+        code, _, err = run_cli(mobb_exe, *LONG, "--record", str(out[kind]), "--record-candidates")
         assert code == 0, err
     return out
 

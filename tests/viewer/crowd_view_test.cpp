@@ -260,10 +260,11 @@ std::string long_record() {
         }
     };
     static const Made made = [] {
+        // With its candidates (an HDF5 record keeps none unless asked): their queries open.
         const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_long_" + std::to_string(getpid()) + ".h5";
         const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
-                                "\" --agents 60 --world 13x15 --seconds 30 --seed 2 --record \"" + out +
-                                "\" > /dev/null";
+                                "\" --agents 60 --world 13x15 --seconds 30 --seed 2 --record-candidates --record \"" +
+                                out + "\" > /dev/null";
         return Made{std::system(cmd.c_str()) == 0 ? out : std::string()};
     }();
     return made.path;
