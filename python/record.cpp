@@ -237,6 +237,9 @@ Units: metres, seconds, radians; frames are global, frame k starts at t = k * dt
         .def_property_readonly("agents", [](RecordReader& r) { return r.header().tracks.size(); })
         .def_property_readonly("choice_count", &RecordReader::choice_count, "Rows of the choice table")
         .def_property_readonly("lazy", &RecordReader::lazy, "True when parts are read as asked (HDF5)")
+        .def_property_readonly("has_candidates", &RecordReader::has_candidates,
+                               "False when the run was recorded without candidates (an HDF5 record unless "
+                               "`mobb crowd --record-candidates`): every choice point's list is empty")
         .def_property_readonly("summary", [](RecordReader& r) { return json_dict(r.info().summary_json); })
         .def_property_readonly("metrics", [](RecordReader& r) { return json_dict(r.info().metrics_json); })
         .def_property_readonly(

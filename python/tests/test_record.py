@@ -139,6 +139,19 @@ def test_open_record_clips_and_choices_are_the_records(long_records):
             r.choice(len(choices))
 
 
+def test_open_record_of_a_run_recorded_without_candidates(records, long_records):
+    # `mobb crowd --record r.h5` keeps no candidates unless asked; r.json and --record-candidates do.
+    bare, kept = mobb.open_record(str(records["h5"])), mobb.open_record(str(records["json"]))
+    assert not bare.has_candidates and kept.has_candidates
+    assert mobb.open_record(str(long_records["h5"])).has_candidates
+    assert bare.choice_count == kept.choice_count > 0
+    table, whole = bare.choices(0, bare.frames), kept.choices(0, kept.frames)
+    assert not table["candidates"].any() and whole["candidates"].any()
+    for name in ("agent", "frame", "taken", "queries", "tests2d"):
+        np.testing.assert_array_equal(table[name], whole[name], err_msg=name)
+    assert bare.choice(bare.choice_count - 1)["candidates"] == []
+
+
 def test_open_record_refuses_a_cut_file_in_one_line(tmp_path, long_records):
     cut = tmp_path / "cut.h5"
     cut.write_bytes(long_records["h5"].read_bytes()[:20000])

@@ -55,6 +55,7 @@ public:
     const RecordFile& info() const override { return info_; }
     std::size_t choice_count() const override { return choices_; }
     bool lazy() const override { return true; }
+    bool has_candidates() const override { return has_candidates_; }
     SampleWindow samples(std::int64_t first, std::int64_t last, AgentRange agents) override;
     std::pair<std::size_t, std::size_t> choice_rows(std::int64_t first_frame, std::int64_t last_frame) override;
     std::vector<ChoiceSummary> summaries(std::size_t first, std::size_t last, int agent) override;
@@ -114,6 +115,7 @@ private:
     std::size_t cache_bytes_ = 0, cached_bytes_ = 0;
     ReadCounts counts_;
     bool clips_read_ = false;                 // header(): the clip table is read on its first call
+    bool has_candidates_ = false;             // /candidates holds rows (those held of an incomplete file)
     std::optional<std::size_t> graph_clips_;  // check_graph_clips: the choice points read are checked too
 };
 
@@ -126,6 +128,7 @@ H5Reader::H5Reader(const std::string& file, std::size_t cache_bytes) : file_(fil
         if (!f_.valid()) throw h5::Error("cannot open (truncated or corrupt)");
         open_header();
         count_choices();
+        has_candidates_ = ints("/candidates/choice").rows() > 0;
         read_tracks();
         read_goals();
     });

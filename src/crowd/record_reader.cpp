@@ -35,6 +35,10 @@ public:
     const RecordFile& info() const override { return info_; }
     std::size_t choice_count() const override { return whole_.choices.size(); }
     bool lazy() const override { return false; }
+    bool has_candidates() const override {
+        return std::any_of(whole_.choices.begin(), whole_.choices.end(),
+                           [](const ChoicePoint& c) { return !c.candidates.empty(); });
+    }
 
     SampleWindow samples(std::int64_t first, std::int64_t last, AgentRange agents) override {
         SampleWindow w = window_of(whole_, first, last, agents);

@@ -95,6 +95,9 @@ void choice_list(State& s, Ui& ui) {
         ui.status = e.what();
     }
     const std::vector<crowd::ChoiceSummary>& choices = *listed;
+    // A record without candidates (an HDF5 one unless recorded with them) lists none: no count to show.
+    const bool counted = v.reader->has_candidates();
+    if (!counted) ImGui::TextWrapped("candidates not recorded (mobb crowd --record-candidates keeps them)");
     const float room = room_for_lists(ui);
     const float height = v.choice < 0 ? room
                                       : std::min(list_height(float(choices.size())),
@@ -105,8 +108,9 @@ void choice_list(State& s, Ui& ui) {
         const int k = int(listed_choice.row);
         char label[96];
         const std::string outcome = c.outcome == "candidate" ? "" : " (" + c.outcome + ")";
-        std::snprintf(label, sizeof label, "%.2f s: clip %d, %zu candidates%s##%d", double(c.frame) * r.dt, c.taken,
-                      listed_choice.candidates, outcome.c_str(), k);
+        const std::string tested = counted ? ", " + std::to_string(listed_choice.candidates) + " candidates" : "";
+        std::snprintf(label, sizeof label, "%.2f s: clip %d%s%s##%d", double(c.frame) * r.dt, c.taken, tested.c_str(),
+                      outcome.c_str(), k);
         if (ImGui::Selectable(label, v.choice == k)) {
             select(s, ui, v.agent, v.choice == k ? -1 : k);
             if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;

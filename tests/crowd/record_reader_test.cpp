@@ -2,9 +2,11 @@
 // every field; a window of frames, of agents, of choice points is that window of the whole record; only
 // the blocks of a window are read, each once while the cache holds it; a damaged block is named when a
 // window reaches it, a truncated file when it opens, in one line naming the file, never a crash.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -132,6 +134,32 @@ TEST(RecordReader, ThePartsPutTogetherAreTheWholeRecord) {
         for (const AgentTrack& t : r->record.tracks) left = left || t.left_frame.has_value();
     }
     EXPECT_TRUE(reroutes && left);  // the runs hold what the layout has
+}
+
+// A record recorded without candidates (an HDF5 one unless asked) says so, and its choice points read in
+// parts as they read whole: every list empty, nothing else missing.
+TEST(RecordReader, ARecordWithoutCandidatesSaysSo) {
+    Written bare = dense();
+    const auto tested = std::find_if(bare.record.choices.begin(), bare.record.choices.end(),
+                                     [](const ChoicePoint& c) { return !c.candidates.empty(); });
+    ASSERT_NE(tested, bare.record.choices.end());
+    const std::size_t row = std::size_t(tested - bare.record.choices.begin());
+    for (ChoicePoint& c : bare.record.choices) c.candidates.clear();
+    for (const char* name : {"bare.h5", "bare.json"}) {
+        for (const Written* r : std::initializer_list<const Written*>{&dense(), &bare}) {
+            const std::string file = written(*r, name);
+            const auto reader = open_record(file);
+            EXPECT_EQ(reader->has_candidates(), r != &bare) << file;
+            const ChoicePoint c = reader->choice(row);
+            EXPECT_EQ(c.candidates.size(), r->record.choices[row].candidates.size()) << file;
+            EXPECT_EQ(c.queries, r->record.choices[row].queries) << file;  // its counts kept
+            const auto summaries = reader->summaries(0, reader->choice_count());
+            ASSERT_EQ(summaries.size(), r->record.choices.size());
+            for (std::size_t k = 0; k < summaries.size(); ++k)
+                EXPECT_EQ(summaries[k].candidates, r->record.choices[k].candidates.size()) << file << " " << k;
+            std::remove(file.c_str());
+        }
+    }
 }
 
 // A window read from the file equals the same window cut from the record read whole: samples (of all

@@ -66,6 +66,10 @@ public:
     virtual std::size_t choice_count() const = 0;
     /// True when parts are read from the file as asked (HDF5); false for a record held whole (JSON).
     virtual bool lazy() const = 0;
+    /// Whether any choice point holds candidates. A run recorded without them (an HDF5 record unless
+    /// `mobb crowd --record-candidates`; CrowdOptions::record_queries) holds none: every choice point's
+    /// list is empty, which says nothing of how many the crowd tested.
+    virtual bool has_candidates() const = 0;
 
     /// Frames first .. last - 1 (clamped to the record) of agents `agents`, each sample checked as
     /// load_record checks it. Frames come from a cache of recent blocks of frames when held there.
