@@ -74,3 +74,87 @@ def test_an_hdf5_field_out_of_range_names_itself(tmp_path, records, mobb_exe, na
     assert code == 1 and out == "" and err.count("\n") == 1, err
     assert str(bad) in err and field in err, err
     assert not (tmp_path / "out.json").exists()
+
+
+# Two blocks of frames (256 and 104 at 20 agents), written as the run went; the JSON record of the same run.
+LONG = ["crowd", "--quiet", "--no-motion", "--graph", GRAPH, "--agents", "20", "--world", "8x9", "--seconds", "12", "--seed", "2"]
+
+
+@pytest.fixture(scope="module")
+def long_records(tmp_path_factory, mobb_exe):
+    folder = tmp_path_factory.mktemp("long")
+    out = {}
+    for kind in ("json", "h5"):
+        out[kind] = folder / ("record." + kind)
+        code, _, err = run_cli(mobb_exe, *LONG, "--record", str(out[kind]), "--record-candidates")
+        assert code == 0, err
+    return out
+
+
+def test_open_record_reads_only_the_window_asked(long_records):
+    expected = json.loads(long_records["json"].read_text())
+    samples = np.array([t["samples"] for t in expected["tracks"]]).swapaxes(0, 1)
+    r = mobb.open_record(str(long_records["h5"]))
+    assert r.lazy and (r.frames, r.agents, r.dt) == (360, 20, expected["dt"])
+    assert r.counts["frames"] == 0
+    np.testing.assert_array_equal(r.samples(300, 310, agents=(5, 9)), samples[300:310, 5:9])
+    assert r.counts["frames"] == 104  # the second block alone
+    np.testing.assert_array_equal(r.samples(), samples)
+    assert r.counts["frames"] == 360 and r.counts["cached"] == 104
+    window = mobb.read_record(str(long_records["h5"]), 100, 120, agents=(3, 4))
+    np.testing.assert_array_equal(window["samples"], samples[100:120, 3:4])
+    assert (window["first"], window["agent_first"], window["agents"]) == (100, 3, 20)
+
+
+def test_open_record_clips_and_choices_are_the_records(long_records):
+    expected = json.loads(long_records["json"].read_text())
+    for kind in ("h5", "json"):
+        r = mobb.open_record(str(long_records[kind]))
+        clips = sorted(((c["start"], a, c) for a, t in enumerate(expected["tracks"]) for c in t["clips"]),
+                       key=lambda x: x[0])
+        got = r.clips()
+        assert list(got["agent"]) == [a for _, a, _ in clips]
+        assert list(got["clip"]) == [c["clip"] for _, _, c in clips]
+        assert list(got["choice"]) == [c["choice"] for _, _, c in clips]
+        np.testing.assert_array_equal(got["place"], np.array([c["place"] for _, _, c in clips]))
+        choices = expected["choices"]
+        assert r.choice_count == len(choices)
+        table = r.choices(100, 200)
+        rows = [k for k, c in enumerate(choices) if 100 <= c["frame"] < 200]
+        assert list(table["row"]) == rows
+        for name in ("agent", "frame", "taken", "queries", "tests2d", "samples", "pruned"):
+            assert list(table[name]) == [choices[k][name] for k in rows], name
+        assert [mobb.Record.outcomes[o] for o in table["outcome"]] == [choices[k]["outcome"] for k in rows]
+        assert list(table["candidates"]) == [len(choices[k]["candidates"]) for k in rows]
+        assert list(r.choices(100, 200, agent=4)["row"]) == [k for k in rows if choices[k]["agent"] == 4]
+        for k in rows[::7]:
+            c, want = r.choice(k), choices[k]
+            assert (c["agent"], c["frame"], c["taken"], c["outcome"]) == (want["agent"], want["frame"], want["taken"], want["outcome"])
+            assert len(c["candidates"]) == len(want["candidates"])
+            for got_cand, want_cand in zip(c["candidates"], want["candidates"]):
+                assert got_cand["clip"] == want_cand["clip"] and got_cand["hits"] == want_cand["hits"]
+                np.testing.assert_array_equal(got_cand["against"], np.array(want_cand["against"], dtype=np.int64).reshape(-1, 5))
+            np.testing.assert_array_equal(c["plan"]["escape"], np.array(want["plan"]["escape"], dtype=float).reshape(-1, 5))
+        with pytest.raises(IndexError):
+            r.choice(len(choices))
+
+
+def test_open_record_of_a_run_recorded_without_candidates(records, long_records):
+    # `mobb crowd --record r.h5` keeps no candidates unless asked; r.json and --record-candidates do.
+    bare, kept = mobb.open_record(str(records["h5"])), mobb.open_record(str(records["json"]))
+    assert not bare.has_candidates and kept.has_candidates
+    assert mobb.open_record(str(long_records["h5"])).has_candidates
+    assert bare.choice_count == kept.choice_count > 0
+    table, whole = bare.choices(0, bare.frames), kept.choices(0, kept.frames)
+    assert not table["candidates"].any() and whole["candidates"].any()
+    for name in ("agent", "frame", "taken", "queries", "tests2d"):
+        np.testing.assert_array_equal(table[name], whole[name], err_msg=name)
+    assert bare.choice(bare.choice_count - 1)["candidates"] == []
+
+
+def test_open_record_refuses_a_cut_file_in_one_line(tmp_path, long_records):
+    cut = tmp_path / "cut.h5"
+    cut.write_bytes(long_records["h5"].read_bytes()[:20000])
+    with pytest.raises(ValueError, match="cut.h5: ") as e:
+        mobb.open_record(str(cut))
+    assert "\n" not in str(e.value)

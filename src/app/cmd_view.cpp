@@ -99,11 +99,12 @@ void apply_colouring(State& s, const std::string& disks, const std::string& boxe
 }
 
 /// A recorded crowd's state for `render --crowd` and `view --crowd`: the agent's choice points listed,
-/// the cursor at `time` (negative: the middle of the run), the camera from the space-time side.
-/// Throws InputError naming --agent or --time when the record has no such agent or ends before `time`.
-State crowd_state(const std::string& record, float asp, int agent, double time) {
-    State s = viewer::load_crowd_state(record, asp);
-    const auto& r = s.crowd->record;
+/// the cursor at `time` (negative: the middle of the run) with `window` seconds drawn either side
+/// (negative: the crowd's default), the camera from the space-time side. Throws InputError naming
+/// --agent or --time when the record has no such agent or ends before `time`.
+State crowd_state(const std::string& record, float asp, int agent, double time, double window) {
+    State s = viewer::load_crowd_state(record, asp, time, window);
+    const auto& r = s.crowd->record();
     if (agent < 0 || std::size_t(agent) >= r.tracks.size())
         throw InputError("render: --agent " + std::to_string(agent) + ": the record has " +
                          std::to_string(r.tracks.size()) + " agents (0 to " + std::to_string(r.tracks.size() - 1) +
@@ -123,16 +124,17 @@ State crowd_state(const std::string& record, float asp, int agent, double time) 
 /// its time unless --time was given) and opens query J (default 0) of its candidate K in the trace,
 /// as the crowd panel does. Throws InputError with the reason when the record has no such query.
 void open_crowd_query(State& s, int choice, int candidate, int query, bool keep_time) {
-    const auto& r = s.crowd->record;
+    const auto& r = s.crowd->record();
     if (choice < 0) {
         if (candidate >= 0 || query >= 0) throw InputError("render: --candidate and --query need --choice");
         return;
     }
-    if (std::size_t(choice) >= r.choices.size())
-        throw InputError("render: --choice " + std::to_string(choice) + ": the record has " +
-                         std::to_string(r.choices.size()) + " choice points");
+    const std::size_t choices = s.crowd->reader->choice_count();
+    if (std::size_t(choice) >= choices)
+        throw InputError("render: --choice " + std::to_string(choice) + ": the record has " + std::to_string(choices) +
+                         " choice points");
     viewer::select_choice(s, -1, choice);
-    const crowd::ChoicePoint& c = r.choices[std::size_t(choice)];
+    const crowd::ChoicePoint& c = s.crowd->selected;
     if (!keep_time) s.scene.cursor = double(c.frame) * r.dt;
     if (candidate < 0) {
         if (query >= 0) throw InputError("render: --query needs --candidate");
@@ -269,7 +271,7 @@ void add_render(CLI::App& app, int& exit_code) {
         exit_code = guarded([&](std::ostream& out) {
             if (!a->crowd.empty()) {
                 const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
-                State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time);
+                State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time, a->window);
                 open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
                 apply_step(s, a->step, "render");
                 apply_colouring(s, a->disk_colour, a->box_colour);
@@ -376,7 +378,7 @@ void add_view(CLI::App& app, int& exit_code) {
             if (!a->crowd.empty()) {
                 if (!a->inputs.empty()) throw InputError("view: --crowd takes no scene or clip files");
                 if (!a->save_state.empty()) throw InputError("view: --save-state saves scenes, not crowds");
-                State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1);
+                State s = crowd_state(a->crowd, aspect(a->width, a->height), 0, -1, -1);
                 show(s, *a, a->crowd, "crowd " + std::filesystem::absolute(a->crowd).string(), true, out);
                 return;
             }

@@ -195,22 +195,34 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
             for (std::size_t j = 1; j < out.size(); ++j) out[j] += w * ((a_[j] - a_[0]) - (b_[j] - b_[0]));
         }
     }
-    keep_inside(track, k, out);
+    keep_inside(agent, k, out);
     return true;
 }
 
-void CrowdPoser::keep_inside(const AgentTrack& track, std::int64_t k, std::vector<glm::dvec3>& out) const {
-    if (track.samples.empty()) return;
+void CrowdPoser::keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const {
+    // The agent's disks: frames first .. last of the record's track, or of the window.
+    const AgentTrack& track = record_.tracks[std::size_t(agent)];
+    std::int64_t first = 0, last = std::int64_t(track.samples.size()) - 1;
+    if (window_) {
+        first = window_->first;
+        last = std::min(window_->last, track.left_frame.value_or(record_.frames)) - 1;
+        if (std::size_t(agent) < window_->agent_first || std::size_t(agent) >= window_->agent_last) last = -1;
+    }
+    const auto radius = [&](std::int64_t m) {
+        return window_ ? window_->samples[std::size_t(m - first) * window_->width() + std::size_t(agent) -
+                                          window_->agent_first][3]
+                       : track.samples[std::size_t(m)][3];
+    };
+    k = std::min(k, last);
+    if (k < first) return;
     // The envelope e(k) = min over k' in [k, k + look-ahead] of r(k') + pull_speed (k' - k) dt is at most
     // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
     // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
     // drawn in over the frames before rather than at once.
-    const std::int64_t last = std::int64_t(track.samples.size()) - 1;
-    k = std::min(k, last);
     const std::int64_t ahead = std::int64_t(std::ceil(blend_.look_ahead / record_.dt));
-    double e = track.samples[std::size_t(k)][3];
+    double e = radius(k);
     for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m)
-        e = std::min(e, track.samples[std::size_t(m)][3] + blend_.pull_speed * double(m - k) * record_.dt);
+        e = std::min(e, radius(m) + blend_.pull_speed * double(m - k) * record_.dt);
     for (std::size_t j = 1; j < out.size(); ++j) {
         const double dx = out[j].x - out[0].x, dy = out[j].y - out[0].y, d2 = dx * dx + dy * dy;
         if (d2 <= e * e) continue;

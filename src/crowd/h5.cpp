@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "mobb/core/assert.h"
+
 namespace mobb::crowd::h5 {
 
 Id& Id::operator=(Id&& o) noexcept {
@@ -192,70 +194,130 @@ void write_rows(hid_t file, const std::string& path, const std::vector<T>& data,
     });
 }
 
-template <class T>
-std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
-                                        hsize_t limit, hsize_t block_rows) {
-    if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
-    const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
+namespace {
+
+// Dataset `path` of rows of numbers shaped [rows, inner...] and chunked as the writer chunks it (`block`
+// rows): the dataset, its dims in `dims`. Throws Error when it is something else.
+Id open_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t block,
+             std::vector<hsize_t>& dims) {
+    Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
     if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
     const Id space(H5Dget_space(set.get()), H5Sclose);
     const int rank = H5Sget_simple_extent_ndims(space.get());
-    std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+    dims.assign(std::size_t(std::max(rank, 0)), 0);
     if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
         !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
         throw Error(path + ": unexpected shape");
     const Id type(H5Dget_type(set.get()), H5Tclose);
     const H5T_class_t c = H5Tget_class(type.get());
     if (c != H5T_INTEGER && c != H5T_FLOAT) throw Error(path + ": expected numbers");
-    check_chunks(set.get(), path, dims, block_rows);
-    const hsize_t block = block_rows;
-    dims[0] = std::min(dims[0], limit);
+    check_chunks(set.get(), path, dims, block);
     hsize_t size = 1;
     for (hsize_t d : inner) size *= d;
     if (dims[0] > (hsize_t(1) << 40) / std::max<hsize_t>(1, size)) throw Error(path + ": too large");
-    std::vector<T> out(std::size_t(dims[0] * size));
-    for (hsize_t first = 0, k = 0; first < dims[0]; first += block, ++k) {
-        std::vector<hsize_t> start(dims.size(), 0), counts = dims;
-        start[0] = first, counts[0] = std::min(block, dims[0] - first);
-        const Id file_space(H5Dget_space(set.get()), H5Sclose);
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
-        const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
-        if (H5Dread(set.get(), native<T>(), mem.get(), file_space.get(), H5P_DEFAULT, out.data() + first * size) < 0)
+    return set;
+}
+
+// Rows first .. first + count - 1 of the dataset (dims `dims`) into `out`, in the memory type of T (HDF5
+// converts whatever integer or float type the file holds). False when HDF5 cannot read them.
+template <class T>
+bool read_slab(hid_t set, const std::vector<hsize_t>& dims, hsize_t first, hsize_t count, T* out) {
+    std::vector<hsize_t> start(dims.size(), 0), counts = dims;
+    start[0] = first, counts[0] = count;
+    const Id file_space(H5Dget_space(set), H5Sclose);
+    if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr) < 0)
+        return false;
+    const Id mem(H5Screate_simple(int(dims.size()), counts.data(), nullptr), H5Sclose);
+    return H5Dread(set, native<T>(), mem.get(), file_space.get(), H5P_DEFAULT, out) >= 0;
+}
+
+}  // namespace
+
+template <class T>
+std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
+                                        hsize_t limit, hsize_t block) {
+    if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+    std::vector<hsize_t> dims;
+    const Id set = open_rows(file, path, inner, block, dims);
+    const hsize_t rows = std::min(dims[0], limit), size = row_size(Layout{inner});
+    std::vector<T> out(std::size_t(rows * size));
+    for (hsize_t first = 0, k = 0; first < rows; first += block, ++k)
+        if (!read_slab(set.get(), dims, first, std::min(block, rows - first), out.data() + first * size))
             throw Error(path + " block " + std::to_string(k) + ": cannot read (truncated or corrupt)");
-    }
     return out;
 }
 
 template <class T>
-std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
-                           hsize_t count, hsize_t block) {
+Column<T>::Column(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t block, hsize_t limit)
+    : path_(path), block_(std::max<hsize_t>(1, block)), size_(row_size(Layout{inner})) {
     if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) throw Error(path + ": missing");
-    const Id set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
-    if (!set.valid()) throw Error(path + ": cannot open (not a dataset, or corrupt)");
-    const Id space(H5Dget_space(set.get()), H5Sclose);
-    const int rank = H5Sget_simple_extent_ndims(space.get());
-    std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
-    if (rank != int(inner.size()) + 1 || H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 ||
-        !std::equal(inner.begin(), inner.end(), dims.begin() + 1))
-        throw Error(path + ": unexpected shape");
-    check_chunks(set.get(), path, dims, block);
-    if (first + count > dims[0])
-        throw Error(path + ": rows " + std::to_string(first) + " to " + std::to_string(first + count) + ", it has " +
-                    std::to_string(dims[0]));
-    std::vector<hsize_t> start(dims.size(), 0), counts = dims;
-    start[0] = first, counts[0] = count;
-    std::vector<T> out(std::size_t(count * row_size(Layout{inner})));
-    if (count == 0) return out;
-    H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, counts.data(), nullptr);
-    const Id mem(H5Screate_simple(rank, counts.data(), nullptr), H5Sclose);
-    if (H5Dread(set.get(), native<T>(), mem.get(), space.get(), H5P_DEFAULT, out.data()) < 0)
-        throw Error(path + " rows " + std::to_string(first) + " to " + std::to_string(first + count) +
-                    ": cannot read (truncated or corrupt)");
+    set_ = open_rows(file, path, inner, block_, dims_);
+    rows_ = std::min(dims_[0], limit);
+}
+
+template <class T>
+void Column<T>::read_into(hsize_t first, hsize_t count, T* out) {
+    if (first > rows_ || count > rows_ - first)
+        throw Error(path_ + ": rows " + std::to_string(first) + " to " + std::to_string(first + count) + ", it has " +
+                    std::to_string(rows_));
+    for (hsize_t row = first; row < first + count;) {  // a block at a time, so that an error names it
+        const hsize_t k = row / block_, n = std::min((k + 1) * block_, first + count) - row;
+        if (!read_slab(set_.get(), dims_, row, n, out + (row - first) * size_))
+            throw Error(path_ + " block " + std::to_string(k) + ": cannot read (truncated or corrupt)");
+        row += n;
+    }
+}
+
+template <class T>
+std::vector<T> Column<T>::read(hsize_t first, hsize_t count) {
+    if (count > 0 && first < rows_ && first / block_ == (first + count - 1) / block_ && block_ * size_ <= kKeptValues) {
+        const std::vector<T>& b = kept(first / block_);  // a few rows of a table: from the block kept
+        const hsize_t at = first % block_;
+        if (at + count <= b.size() / size_)
+            return std::vector<T>(b.begin() + std::ptrdiff_t(at * size_),
+                                  b.begin() + std::ptrdiff_t((at + count) * size_));
+    }
+    std::vector<T> out(std::size_t(count * size_));
+    read_into(first, count, out.data());
     return out;
 }
 
-template std::vector<double> read_window(hid_t, const std::string&, const std::vector<hsize_t>&, hsize_t, hsize_t,
-                                         hsize_t);
+template <class T>
+const std::vector<T>& Column<T>::kept(hsize_t k) {
+    auto it = std::find_if(kept_.begin(), kept_.end(), [&](const auto& b) { return b.first == k; });
+    if (it == kept_.end()) {
+        std::vector<T> values(std::size_t(std::min(block_, rows_ - k * block_) * size_));
+        read_into(k * block_, values.size() / size_, values.data());
+        if (kept_.size() == kKeptBlocks) kept_.pop_back();
+        kept_.emplace_back(k, std::move(values));
+        it = std::prev(kept_.end());
+    }
+    std::rotate(kept_.begin(), it, std::next(it));  // the last used first
+    return kept_.front().second;
+}
+
+template <class T>
+T Column<T>::at(hsize_t row) {
+    MOBB_ASSERT(size_ == 1);
+    if (row >= rows_) throw Error(path_ + ": row " + std::to_string(row) + ", it has " + std::to_string(rows_));
+    return kept(row / block_)[std::size_t(row % block_)];
+}
+
+template <class T>
+hsize_t Column<T>::lower_bound(T value, hsize_t lo, hsize_t hi) {
+    hi = std::min(hi, rows_);
+    while (lo < hi) {
+        const hsize_t mid = lo + (hi - lo) / 2;
+        if (at(mid) < value)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+template class Column<std::int64_t>;
+template class Column<double>;
 template void write_numbers(hid_t, const char*, const std::vector<std::int64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<std::uint64_t>&);
 template void write_numbers(hid_t, const char*, const std::vector<double>&);

@@ -97,9 +97,41 @@ template <class T>
 std::optional<std::vector<T>> read_rows(hid_t file, const std::string& path, const std::vector<hsize_t>& inner,
                                         hsize_t limit = ~hsize_t(0), hsize_t block = 4096);
 
-/// Rows first .. first + count - 1 of dataset `path` (shape checked as read_rows does), read alone.
+/// One dataset of rows (a table's column, or the samples), kept open for reads of ranges and of single
+/// rows, block by block (an error names the block: "PATH block K: cannot read (truncated or corrupt)");
+/// the last kKeptBlocks blocks of a table that single rows or a few rows came from are kept for the next
+/// (a binary search visits the same few again; one choice point's rows lie together). Its shape and chunks are checked as read_rows checks them when it opens; rows past
+/// `limit` are not read.
 template <class T>
-std::vector<T> read_window(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t first,
-                           hsize_t count, hsize_t block);
+class Column {
+public:
+    Column() = default;
+    /// Throws Error "PATH: missing" when the file has no such dataset.
+    Column(hid_t file, const std::string& path, const std::vector<hsize_t>& inner, hsize_t block = 4096,
+           hsize_t limit = ~hsize_t(0));
+    hsize_t rows() const { return rows_; }
+    hsize_t block() const { return block_; }
+    const std::string& path() const { return path_; }
+    /// Rows first .. first + count - 1 (row_size values each); Error "PATH: rows ..., it has N" past the end.
+    std::vector<T> read(hsize_t first, hsize_t count);
+    /// Row `row` of a column of one value a row.
+    T at(hsize_t row);
+    /// The first row in [lo, hi) whose value is not less than `value`, the column sorted there (hi when
+    /// none); on a column that is not sorted, some row in [lo, hi].
+    hsize_t lower_bound(T value, hsize_t lo, hsize_t hi);
+
+private:
+    void read_into(hsize_t first, hsize_t count, T* out);
+    const std::vector<T>& kept(hsize_t block);  // block `block`, read unless kept
+
+    static constexpr std::size_t kKeptBlocks = 16;             // 512 KB of a column of 4,096-row blocks of 8 bytes
+    static constexpr hsize_t kKeptValues = hsize_t(4096) * 4;  // tables' blocks are kept, not the samples'
+
+    Id set_;
+    std::string path_;
+    std::vector<hsize_t> dims_;
+    hsize_t rows_ = 0, block_ = 1, size_ = 1;
+    std::vector<std::pair<hsize_t, std::vector<T>>> kept_;  // blocks by index, the last used first
+};
 
 }  // namespace mobb::crowd::h5

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "frame_grid.h"
+#include "mobb/crowd/record_reader.h"
 
 namespace mobb::crowd {
 
@@ -67,6 +68,32 @@ std::vector<Contact> frame_contacts(const Record& record) {
     return out;
 }
 
+std::vector<Contact> frame_contacts(const SampleWindow& w, const Record& header) {
+    std::vector<Contact> out;
+    std::vector<FrameGrid::Disk> in_run;
+    FrameGrid grid;
+    const auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
+    for (std::int64_t f = w.first; f < w.last; ++f) {
+        in_run.clear();
+        double rmax = 0;  // contacts are closer than 2 rmax
+        for (std::size_t i = 0; i < w.width(); ++i) {
+            const std::array<double, 4>& d = w.samples[std::size_t(f - w.first) * w.width() + i];
+            if (std::isnan(d[0])) continue;
+            in_run.push_back({d[1], d[2], d[3], int(w.agent_first + i)});
+            rmax = std::max(rmax, d[3]);
+        }
+        if (in_run.size() < 2) continue;
+        grid.build(in_run.data(), in_run.size(), 2 * rmax);
+        const std::size_t first = out.size();
+        grid.overlaps([&](int a, int b) { out.push_back({f, std::min(a, b), std::max(a, b), false}); });
+        std::sort(out.begin() + std::ptrdiff_t(first), out.end(), by_pair);
+        for (std::size_t c = first; c < out.size(); ++c)
+            out[c].excused = fallback_at(header.tracks.at(std::size_t(out[c].a)), f) ||
+                             fallback_at(header.tracks.at(std::size_t(out[c].b)), f);
+    }
+    return out;
+}
+
 namespace {
 
 // The escape clips and held ground choice point `cp` reserved for `agent`: its own or a reroute's.
@@ -90,8 +117,15 @@ ReservedPlan reserved_plan(const ChoicePoint& cp, int agent) {
 
 std::optional<FramedClip> query_clip(const Record& r, const CandidateQuery& q) {
     if (q.agent < 0 || q.piece < 0) return std::nullopt;
-    const ChoicePoint& cp = r.choices.at(std::size_t(q.choice));
-    if (q.piece > 0) return reserved_plan(cp, q.agent).escape->at(std::size_t(q.piece - 1));
+    return query_clip(r, q, q.piece > 0 ? &r.choices.at(std::size_t(q.choice)) : nullptr);
+}
+
+std::optional<FramedClip> query_clip(const Record& r, const CandidateQuery& q, const ChoicePoint* named) {
+    if (q.agent < 0 || q.piece < 0) return std::nullopt;
+    if (q.piece > 0) {
+        if (!named) throw std::out_of_range("the choice point the query names is not at hand");
+        return reserved_plan(*named, q.agent).escape->at(std::size_t(q.piece - 1));
+    }
     const auto& clips = r.tracks.at(std::size_t(q.agent)).clips;
     const auto it = std::lower_bound(clips.begin(), clips.end(), std::int64_t(q.choice),
                                      [](const PlacedClip& c, std::int64_t x) { return c.choice < x; });

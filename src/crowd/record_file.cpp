@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <limits>
 #include <stdexcept>
 
 #include "record_json.h"
@@ -28,25 +27,6 @@ Record load_record(const std::string& file) {
     RecordFile r = read_record_file(file);
     if (!r.note.empty()) std::cerr << r.note << "\n";
     return std::move(r.record);
-}
-
-SampleWindow read_sample_window(const std::string& file, std::int64_t first, std::int64_t last) {
-    if (is_h5_record(file)) return read_h5_window(file, first, last);
-    RecordFile r = read_json_record(file);
-    SampleWindow w;
-    w.dt = r.record.dt;
-    w.frames = r.record.frames;
-    w.agents = r.record.tracks.size();
-    w.first = std::clamp<std::int64_t>(first, 0, w.frames);
-    w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (std::int64_t f = w.first; f < w.last; ++f)
-        for (const AgentTrack& t : r.record.tracks)
-            w.samples.push_back(f < std::int64_t(t.samples.size()) ? t.samples[std::size_t(f)]
-                                                                   : std::array<double, 4>{nan, nan, nan, nan});
-    w.summary_json = std::move(r.summary_json);
-    w.metrics_json = std::move(r.metrics_json);
-    return w;
 }
 
 void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,

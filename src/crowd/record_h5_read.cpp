@@ -10,12 +10,14 @@
 #include "frame_stream.h"
 #include "h5.h"
 #include "mobb/util/json_text.h"
+#include "record_h5_read.h"
 #include "record_json.h"
 
 namespace mobb::crowd {
 
 namespace {
 
+using h5read::Held;
 using J = nlohmann::ordered_json;
 using I = std::vector<std::int64_t>;
 using D = std::vector<double>;
@@ -41,19 +43,6 @@ J object(hid_t f, const char* name) {
         throw h5::Error(std::string("attribute ") + name + ": expected a JSON object");
     return j;
 }
-
-// What a file holds: all of it once finished; up to its last mark ("written") when its writing stopped.
-struct Held {
-    bool complete = true;
-    std::int64_t frames = 0, planned = 0;     // frames held; of the run
-    std::map<std::string, std::size_t> rows;  // per table (group): the rows held
-
-    // The rows of dataset `path` to read.
-    hsize_t limit(const std::string& path) const {
-        const auto it = rows.find(path.substr(0, path.rfind('/')));
-        return it == rows.end() ? ~hsize_t(0) : hsize_t(it->second);
-    }
-};
 
 template <class T>
 std::vector<T> rows(hid_t f, const std::string& path, const Held& held, std::vector<hsize_t> inner = {}) {
@@ -117,7 +106,9 @@ Held held_of(hid_t f, std::int64_t planned) {
     return h;
 }
 
-J header(hid_t f, Held& held) {
+}  // namespace
+
+J h5read::header(hid_t f, Held& held) {
     const auto complete = h5::read_numbers<std::int64_t>(f, "complete");
     if (complete && complete->size() == 1 && complete->front() != 1 && H5Aexists(f, "written") <= 0)
         throw h5::Error("incomplete: the writing stopped before its first mark (attribute written)");
@@ -144,7 +135,7 @@ J header(hid_t f, Held& held) {
     return j;
 }
 
-J obstacles(hid_t f) {
+J h5read::obstacles(hid_t f) {
     const Held all;
     const I polygon = rows<std::int64_t>(f, "/obstacles/polygon", all);
     const D vertex = rows<double>(f, "/obstacles/vertex", all, {2});
@@ -157,6 +148,8 @@ J obstacles(hid_t f) {
     }
     return out;
 }
+
+namespace {
 
 // An incomplete file's agents that left: the first frame of NaN in its samples (finish() writes the
 // frames they left at).
@@ -248,8 +241,6 @@ void framed(hid_t f, const std::string& group, const char* owner_name, std::size
 // A counter as the JSON reader has it (unsigned when not negative; a negative one it refuses).
 J count(std::int64_t v) { return v >= 0 ? J(std::uint64_t(v)) : J(v); }
 
-const char* const kOutcomes[] = {"candidate", "escape", "arrived", "fallback", "right of way"};
-
 J choices(hid_t f, double dt, const Held& held) {
     static const char* const kNames[] = {"agent",   "frame",   "taken",   "outcome", "fallback",  "queries",
                                          "tests2d", "tests3d", "samples", "pruned",  "hold_frame"};
@@ -273,7 +264,7 @@ J choices(hid_t f, double dt, const Held& held) {
                        {"frame", c[1][k]},
                        {"t", util::rounded(double(c[1][k]) * dt, 9)},
                        {"taken", c[2][k]},
-                       {"outcome", kOutcomes[c[3][k]]},
+                       {"outcome", h5read::kOutcomes[c[3][k]]},
                        {"fallback", c[4][k] != 0},
                        {"queries", count(c[5][k])},
                        {"tests2d", count(c[6][k])},
@@ -340,15 +331,14 @@ void candidates(hid_t f, J& choices, const Held& held, bool older) {
     }
 }
 
-// One line for an incomplete file, nothing for a finished one.
-std::string note(const std::string& file, const Held& held) {
+}  // namespace
+
+std::string h5read::note(const std::string& file, const Held& held) {
     if (held.complete) return "";
     return file + ": incomplete (its writing stopped before the end: killed, or a full disk): read up to its " +
            "last mark, frames 0 to " + std::to_string(held.frames - 1) + " (" + std::to_string(held.frames) +
            " of the run's " + std::to_string(held.planned) + ")";
 }
-
-}  // namespace
 
 RecordFile read_h5_record(const std::string& file) {
     h5::quiet();
@@ -359,8 +349,8 @@ RecordFile read_h5_record(const std::string& file) {
     try {
         const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
         if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
-        j = header(f.get(), held);
-        j["obstacles"] = obstacles(f.get());
+        j = h5read::header(f.get(), held);
+        j["obstacles"] = h5read::obstacles(f.get());
         const std::int64_t agents = j["agents"].get<std::int64_t>(), frames = j["frames"].get<std::int64_t>();
         if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
         if (frames < 1 || frames > 100'000'000) throw h5::Error("attribute frames: expected 1 to 100,000,000");
@@ -375,42 +365,8 @@ RecordFile read_h5_record(const std::string& file) {
     out.record = record_from_json(j, file);
     out.summary_json = stored_summary(j);
     if (j.contains("metrics")) out.metrics_json = j["metrics"].dump();
-    out.note = note(file, held);
+    out.note = h5read::note(file, held);
     return out;
-}
-
-}  // namespace mobb::crowd
-
-namespace mobb::crowd {
-
-SampleWindow read_h5_window(const std::string& file, std::int64_t first, std::int64_t last) {
-    h5::quiet();
-    if (H5Fis_hdf5(file.c_str()) <= 0)
-        throw std::runtime_error(file + ": not an HDF5 file (or truncated before its superblock)");
-    SampleWindow w;
-    Held held;
-    try {
-        const h5::Id f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-        if (!f.valid()) throw h5::Error("cannot open (truncated or corrupt)");
-        const J j = header(f.get(), held);
-        w.dt = j["dt"].get<double>();
-        w.frames = j["frames"].get<std::int64_t>();
-        const std::int64_t agents = j["agents"].get<std::int64_t>();
-        if (agents < 1 || agents > 10'000'000) throw h5::Error("attribute agents: expected 1 to 10,000,000");
-        w.agents = std::size_t(agents);
-        w.first = std::clamp<std::int64_t>(first, 0, w.frames);
-        w.last = std::clamp<std::int64_t>(last, w.first, w.frames);
-        const D v = h5::read_window<double>(f.get(), "/tracks/samples", {hsize_t(agents), 4}, hsize_t(w.first),
-                                            hsize_t(w.last - w.first), hsize_t(block_frames(w.agents)));
-        w.samples.resize(v.size() / 4);
-        for (std::size_t k = 0; k < w.samples.size(); ++k) std::copy_n(&v[4 * k], 4, w.samples[k].begin());
-        w.summary_json = stored_summary(j);
-        if (j.contains("metrics")) w.metrics_json = j["metrics"].dump();
-        w.note = note(file, held);
-    } catch (const h5::Error& e) {
-        throw std::runtime_error(file + ": " + e.what());
-    }
-    return w;
 }
 
 }  // namespace mobb::crowd

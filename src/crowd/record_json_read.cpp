@@ -22,9 +22,7 @@ namespace {
 // (PLACE like tracks[2].samples[7][3]); load_record puts the file in front.
 using json = nlohmann::ordered_json;  // ordered: the summary and metrics keep their order
 
-struct Bad : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+using Bad = FieldError;
 
 [[noreturn]] void fail(const std::string& place, const std::string& message) { throw Bad(place + ": " + message); }
 
@@ -64,14 +62,13 @@ constexpr double kFar = 1e6, kMaxRadius = 10;  // metres
 
 double coordinate(const json& v, const std::string& place) {
     const double x = finite(v, place);
-    if (std::abs(x) > kFar) fail(place, num(x) + ": farther than " + num(kFar) + " m from the origin");
+    check_coordinate(x, [&] { return place; });
     return x;
 }
 
 double radius(const json& v, const std::string& place) {
     const double x = finite(v, place);
-    if (x < 0) fail(place, num(x) + ": a radius is not negative");
-    if (x > kMaxRadius) fail(place, num(x) + ": a character's radius is at most " + num(kMaxRadius) + " m");
+    check_radius(x, [&] { return place; });
     return x;
 }
 
@@ -112,9 +109,7 @@ constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
 
 // Time t of global frame k (t = k * dt), up to the rounding of the text.
 void check_time(double t, std::int64_t frame, double dt, double slack, const std::string& place) {
-    const double want = double(frame) * dt;
-    if (!(std::abs(t - want) <= slack * (1 + std::abs(want))))
-        fail(place, num(t) + " s, frame " + std::to_string(frame) + " starts at " + num(want) + " s");
+    check_frame_time(t, frame, dt, slack, [&] { return place; });
 }
 
 void check_header(const json& j) {
@@ -278,7 +273,8 @@ void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string&
 // A query [agent, index, piece, mine, hit]: against a solid (agent -1, index the solid's: the obstacles,
 // then the four walls when walled), the ground an agent started on (index -1, piece -1), or a piece of
 // the plan of an earlier choice point (index its place in "choices"); mine >= -1; hit 0 or 1.
-CandidateQuery query_of(const json& q, const Record& r, const std::string& w) {
+// `earlier`: the choice points before the one asking.
+CandidateQuery query_of(const json& q, const Record& r, std::size_t earlier, const std::string& w) {
     const json& v = tuple(q, 5, w, "[agent, index, piece, mine, hit]");
     CandidateQuery cq;
     cq.agent = index(v[0], at(w, 0), -1, std::int64_t(r.tracks.size()) - 1);
@@ -294,15 +290,15 @@ CandidateQuery query_of(const json& q, const Record& r, const std::string& w) {
         cq.solid = i;
         return cq;
     }
-    const bool start = i == -1 && cq.piece == -1;                 // the ground the agent started on
-    if (!start && (i < 0 || std::size_t(i) >= r.choices.size()))  // queries name earlier ones only
-        fail(at(w, 1), std::to_string(i) + ": names no earlier choice point (" + std::to_string(r.choices.size()) +
-                           " before this one)");
+    const bool start = i == -1 && cq.piece == -1;        // the ground the agent started on
+    if (!start && (i < 0 || std::size_t(i) >= earlier))  // queries name earlier ones only
+        fail(at(w, 1),
+             std::to_string(i) + ": names no earlier choice point (" + std::to_string(earlier) + " before this one)");
     cq.choice = i;
     return cq;
 }
 
-Candidate candidate_of(const json& k, const Record& r, const std::string& w) {
+Candidate candidate_of(const json& k, const Record& r, std::size_t earlier, const std::string& w) {
     Candidate cand;
     cand.clip = index(need(k, "clip", w), dot(w, "clip"), 0, kNoLimit);
     cand.leaves_world = boolean(need(k, "leaves_world", w), dot(w, "leaves_world"));
@@ -314,12 +310,14 @@ Candidate candidate_of(const json& k, const Record& r, const std::string& w) {
         fail(dot(w, "against"),
              std::to_string(against.size()) + " queries listed, \"queries\" says " + std::to_string(cand.queries));
     for (std::size_t i = 0; i < against.size(); ++i)
-        cand.against.push_back(query_of(against[i], r, at(dot(w, "against"), i)));
+        cand.against.push_back(query_of(against[i], r, earlier, at(dot(w, "against"), i)));
     cand.crowded = k.contains("crowded") ? boolean(k["crowded"], dot(w, "crowded")) : false;
     return cand;
 }
 
-ChoicePoint choice_of(const json& c, const Record& r, const std::string& w) {
+// Choice point `row` (`row` before it).
+ChoicePoint choice_of(const json& c, const Record& r, std::size_t row) {
+    const std::string w = at("choices", row);
     ChoicePoint cp;
     cp.agent = index(need(c, "agent", w), dot(w, "agent"), 0, std::int64_t(r.tracks.size()) - 1);
     cp.frame = integer(need(c, "frame", w), dot(w, "frame"), 0, r.frames - 1);
@@ -341,11 +339,12 @@ ChoicePoint choice_of(const json& c, const Record& r, const std::string& w) {
     plan_of(c, cp, r, w);
     const json& cands = array(need(c, "candidates", w), dot(w, "candidates"), "an array of candidates");
     for (std::size_t k = 0; k < cands.size(); ++k)
-        cp.candidates.push_back(candidate_of(cands[k], r, at(dot(w, "candidates"), k)));
+        cp.candidates.push_back(candidate_of(cands[k], r, row, at(dot(w, "candidates"), k)));
     return cp;
 }
 
-Record record_of(const json& j) {
+// The header: everything before the tracks.
+Record header_of(const json& j) {
     check_header(j);
     Record r;
     r.graph = text(need(j, "graph", ""), "graph");
@@ -361,6 +360,11 @@ Record record_of(const json& j) {
     if (j.contains("scenario")) r.scenario = text(j["scenario"], "scenario");
     for (const char* key : {"summary", "metrics"})
         if (j.contains(key) && !j[key].is_object()) fail(key, "expected an object");
+    return r;
+}
+
+Record record_of(const json& j) {
+    Record r = header_of(j);
     const json& tracks = array(need(j, "tracks", ""), "tracks", "an array of agents");
     if (tracks.empty()) fail("tracks", "a record has at least one agent");
     if (j.contains("agents") && integer(j["agents"], "agents", 0, kNoLimit) != std::int64_t(tracks.size()))
@@ -370,7 +374,7 @@ Record record_of(const json& j) {
     for (std::size_t a = 0; a < tracks.size(); ++a) r.tracks.push_back(track_of(tracks[a], r, at("tracks", a)));
     const json& choices = array(need(j, "choices", ""), "choices", "an array of choice points");
     r.choices.reserve(choices.size());
-    for (std::size_t k = 0; k < choices.size(); ++k) r.choices.push_back(choice_of(choices[k], r, at("choices", k)));
+    for (std::size_t k = 0; k < choices.size(); ++k) r.choices.push_back(choice_of(choices[k], r, k));
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
             if (r.tracks[a].clips[k].choice >= std::int64_t(r.choices.size()))
@@ -429,6 +433,54 @@ Record record_from_json(const nlohmann::ordered_json& j, const std::string& file
     }
 }
 
+Record record_header_from_json(const nlohmann::ordered_json& j, const std::string& file) {
+    try {
+        return header_of(j);
+    } catch (const Bad& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+}
+
+ChoicePoint choice_from_json(const nlohmann::ordered_json& c, const Record& header, std::size_t row,
+                             const std::string& file) {
+    try {
+        return choice_of(c, header, row);
+    } catch (const Bad& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+}
+
+void check_finite(double x, const Place& place) {
+    if (!std::isfinite(x)) fail(place(), "expected a finite number");
+}
+
+void check_coordinate(double x, const Place& place) {
+    check_finite(x, place);
+    if (std::abs(x) > kFar) fail(place(), num(x) + ": farther than " + num(kFar) + " m from the origin");
+}
+
+void check_radius(double r, const Place& place) {
+    check_finite(r, place);
+    if (r < 0) fail(place(), num(r) + ": a radius is not negative");
+    if (r > kMaxRadius) fail(place(), num(r) + ": a character's radius is at most " + num(kMaxRadius) + " m");
+}
+
+bool disk_ok(const std::array<double, 4>& d, std::int64_t frame, double dt) {
+    const double want = double(frame) * dt;
+    return std::abs(d[0] - want) <= 1e-9 * (1 + std::abs(want)) && std::abs(d[1]) <= kFar && std::abs(d[2]) <= kFar &&
+           d[3] >= 0 && d[3] <= kMaxRadius;  // false for NaN
+}
+
+void check_frame_time(double t, std::int64_t frame, double dt, double slack, const Place& place) {
+    const double want = double(frame) * dt;
+    if (!(std::abs(t - want) <= slack * (1 + std::abs(want))))
+        fail(place(), num(t) + " s, frame " + std::to_string(frame) + " starts at " + num(want) + " s");
+}
+
 std::string stored_summary(const nlohmann::ordered_json& j) {
     const json& s = j["summary"];
     if (!older(j) || !s.is_object()) return s.dump();
@@ -450,29 +502,35 @@ RecordFile read_json_record(const std::string& file) {
     return out;
 }
 
-void check_graph_clips(const Record& r, std::size_t clips) {
-    const auto check = [&](int clip, const std::string& place) {
-        if (clip < 0 || std::size_t(clip) >= clips)
-            throw std::runtime_error(place + ": clip " + std::to_string(clip) + " is not in the graph " + r.graph +
-                                     " (" + std::to_string(clips) + " clips)");
-    };
+namespace {
+
+void check_clip(int clip, std::size_t clips, const std::string& graph, const std::string& place) {
+    if (clip < 0 || std::size_t(clip) >= clips)
+        throw std::runtime_error(place + ": clip " + std::to_string(clip) + " is not in the graph " + graph + " (" +
+                                 std::to_string(clips) + " clips)");
+}
+
+}  // namespace
+
+void check_choice_clips(const ChoicePoint& cp, std::size_t row, std::size_t clips, const std::string& graph) {
     const auto escape = [&](const std::vector<FramedClip>& e, const std::string& place) {
-        for (std::size_t k = 0; k < e.size(); ++k) check(e[k].clip, at(place, k) + "[0]");
+        for (std::size_t k = 0; k < e.size(); ++k) check_clip(e[k].clip, clips, graph, at(place, k) + "[0]");
     };
+    const std::string w = at("choices", row);
+    check_clip(cp.taken, clips, graph, w + ".taken");
+    for (std::size_t k = 0; k < cp.candidates.size(); ++k)
+        check_clip(cp.candidates[k].clip, clips, graph, at(w + ".candidates", k) + ".clip");
+    escape(cp.escape, w + ".plan.escape");
+    escape(cp.intended, w + ".plan.intended");
+    for (std::size_t k = 0; k < cp.reroutes.size(); ++k)
+        escape(cp.reroutes[k].escape, at(w + ".plan.reroutes", k) + ".escape");
+}
+
+void check_graph_clips(const Record& r, std::size_t clips) {
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
-            check(r.tracks[a].clips[k].clip, at(at("tracks", a) + ".clips", k) + ".clip");
-    for (std::size_t c = 0; c < r.choices.size(); ++c) {
-        const ChoicePoint& cp = r.choices[c];
-        const std::string w = at("choices", c);
-        check(cp.taken, w + ".taken");
-        for (std::size_t k = 0; k < cp.candidates.size(); ++k)
-            check(cp.candidates[k].clip, at(w + ".candidates", k) + ".clip");
-        escape(cp.escape, w + ".plan.escape");
-        escape(cp.intended, w + ".plan.intended");
-        for (std::size_t k = 0; k < cp.reroutes.size(); ++k)
-            escape(cp.reroutes[k].escape, at(w + ".plan.reroutes", k) + ".escape");
-    }
+            check_clip(r.tracks[a].clips[k].clip, clips, r.graph, at(at("tracks", a) + ".clips", k) + ".clip");
+    for (std::size_t c = 0; c < r.choices.size(); ++c) check_choice_clips(r.choices[c], c, clips, r.graph);
 }
 
 }  // namespace mobb::crowd

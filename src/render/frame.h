@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "colour_map.h"
+#include "space.h"
 
 #include "mobb/core/path.h"
 #include "mobb/core/query.h"
@@ -119,6 +120,9 @@ struct Frame {
     TraceView trace;
     std::vector<PosedSkeleton> posed;  ///< with the skeletons layer: drawn at the cursor, over everything
     std::vector<Prism> prisms;         ///< the ones not on top count in the scene's bounds
+    /// Space-time the scene spans beyond its clips and prisms, in its bounds (empty: none): a crowd read a
+    /// window of frames at a time spans its world over the whole run.
+    Bounds extent;
     /// Changes whenever clips, placements or trees change: the renderer rebuilds cached geometry.
     std::uint64_t revision = 0;
     /// The maps and ranges of the disk and box colourings (when not Clip / Level), and a number that

@@ -34,6 +34,10 @@ Bounds scene_bounds(const Frame& frame) {
             b.add({g[0], g[1], p.t1});
         }
     }
+    if (!frame.extent.empty) {
+        b.add(frame.extent.lo);
+        b.add(frame.extent.hi);
+    }
     return b;
 }
 

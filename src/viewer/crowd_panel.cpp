@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include <imgui.h>
 
@@ -37,11 +38,11 @@ float room_for_lists(const Ui& ui) {
 
 /// What a query was against, in words: another agent's clip (committed, or reserved to stop it), its
 /// held ground, or a wall or an obstacle.
-std::string query_target(const crowd::Record& r, const crowd::CandidateQuery& q) {
+std::string query_target(const CrowdView& v, const crowd::CandidateQuery& q) {
     if (q.agent < 0) return "wall or obstacle " + std::to_string(q.solid);
     if (q.piece < 0) return "agent " + std::to_string(q.agent) + ", held ground";
     try {
-        const auto c = crowd::query_clip(r, q);
+        const auto c = query_clip(v, q);
         return "agent " + std::to_string(q.agent) + ", clip " + std::to_string(c->clip) +
                (q.piece > 0 ? " (its escape)" : "");
     } catch (const std::out_of_range&) {
@@ -58,32 +59,60 @@ void view_buttons(Ui& ui) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("side view (S)");
 }
 
-/// The agent chosen, what its skeletons lack, and its choice points, in a list as tall as the panel
-/// allows (a share of it once a choice point's candidates are listed); choosing one moves the cursor to it.
-void choice_list(State& s, const Ui& ui) {
+/// Selects as select_choice does; a file that cannot be read leaves the choice point unselected and
+/// says why in the status line.
+void select(State& s, Ui& ui, int agent, int choice) {
+    try {
+        select_choice(s, agent, choice);
+    } catch (const std::runtime_error& e) {
+        select_choice(s, agent, -1);
+        ui.status = e.what();
+    }
+}
+
+/// The agent chosen, what its skeletons lack, and its choice points (those in the frames at hand of a
+/// record read in windows), in a list as tall as the panel allows (a share of it once a choice point's
+/// candidates are listed); choosing one moves the cursor to it.
+void choice_list(State& s, Ui& ui) {
     CrowdView& v = *s.crowd;
-    const crowd::Record& r = v.record;
+    const crowd::Record& r = v.record();
     int agent = v.agent;
-    if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select_choice(s, agent, -1);
+    if (ImGui::SliderInt("agent", &agent, 0, std::max(0, v.agents - 1))) select(s, ui, agent, -1);
     if (!v.graph)
         ImGui::TextWrapped("graph not loaded (%s): no skeletons, candidates listed only", v.graph_error.c_str());
     else if (!skeleton_problem(v).empty())
         ImGui::TextWrapped("skeletons not shown: %s", skeleton_problem(v).c_str());
-    ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
-    const std::vector<int> choices = agent_choices(v, v.agent);
+    if (v.whole())
+        ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points:", v.agent);
+    else
+        ImGui::TextColored(imvec(render::clip_color(v.agent)), "agent %d choice points, %.1f to %.1f s:", v.agent,
+                           double(v.window.first) * r.dt, double(v.window.last) * r.dt);
+    std::vector<crowd::ChoiceSummary> none;
+    const std::vector<crowd::ChoiceSummary>* listed = &none;
+    try {
+        listed = &agent_choices(v, v.agent);
+    } catch (const std::runtime_error& e) {
+        ui.status = e.what();
+    }
+    const std::vector<crowd::ChoiceSummary>& choices = *listed;
+    // A record without candidates (an HDF5 one unless recorded with them) lists none: no count to show.
+    const bool counted = v.reader->has_candidates();
+    if (!counted) ImGui::TextWrapped("candidates not recorded (mobb crowd --record-candidates keeps them)");
     const float room = room_for_lists(ui);
     const float height = v.choice < 0 ? room
                                       : std::min(list_height(float(choices.size())),
                                                  std::max(list_height(kLeastRows), kChoiceShare * room));
     ImGui::BeginChild("choices", ImVec2(0, std::max(height, list_height(kLeastRows))), true);
-    for (int k : choices) {
-        const crowd::ChoicePoint& c = r.choices[std::size_t(k)];
+    for (const crowd::ChoiceSummary& listed_choice : choices) {
+        const crowd::ChoicePoint& c = listed_choice.point;
+        const int k = int(listed_choice.row);
         char label[96];
         const std::string outcome = c.outcome == "candidate" ? "" : " (" + c.outcome + ")";
-        std::snprintf(label, sizeof label, "%.2f s: clip %d, %zu candidates%s##%d", double(c.frame) * r.dt, c.taken,
-                      c.candidates.size(), outcome.c_str(), k);
+        const std::string tested = counted ? ", " + std::to_string(listed_choice.candidates) + " candidates" : "";
+        std::snprintf(label, sizeof label, "%.2f s: clip %d%s%s##%d", double(c.frame) * r.dt, c.taken, tested.c_str(),
+                      outcome.c_str(), k);
         if (ImGui::Selectable(label, v.choice == k)) {
-            select_choice(s, v.agent, v.choice == k ? -1 : k);
+            select(s, ui, v.agent, v.choice == k ? -1 : k);
             if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;
         }
     }
@@ -126,8 +155,8 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
     if (!open) return;
     for (std::size_t j = 0; j < cand.against.size(); ++j) {
         const crowd::CandidateQuery& q = cand.against[j];
-        std::snprintf(label, sizeof label, "vs %s: %s###q%d_%zu", query_target(v.record, q).c_str(),
-                      q.hit ? "hit" : "clear", k, j);
+        std::snprintf(label, sizeof label, "vs %s: %s###q%d_%zu", query_target(v, q).c_str(), q.hit ? "hit" : "clear",
+                      k, j);
         const bool shown = v.opened_candidate == k && v.opened_query == int(j);
         if (ImGui::Selectable(label, shown) && v.graph && open_candidate_query(s, k, int(j), &ui.status))
             for (bool PanelsOpen::*p : {&PanelsOpen::query, &PanelsOpen::trace, &PanelsOpen::recursion})
@@ -138,7 +167,7 @@ void candidate_row(State& s, Ui& ui, const crowd::ChoicePoint& c, int k) {
 
 /// The selected choice point: its counts, who gave way, the plan looked ahead, and its candidates.
 void choice_details(State& s, Ui& ui) {
-    const crowd::ChoicePoint& c = s.crowd->record.choices[std::size_t(s.crowd->choice)];
+    const crowd::ChoicePoint& c = s.crowd->selected;
     ImGui::Text("%llu queries, %llu 2D tests, %llu pruned", static_cast<unsigned long long>(c.queries),
                 static_cast<unsigned long long>(c.tests2d), static_cast<unsigned long long>(c.pruned));
     for (const crowd::ReroutedPlan& rr : c.reroutes) ImGui::TextWrapped("agent %d gave way (right of way)", rr.agent);

@@ -53,12 +53,118 @@ void drop_opened(State& s) {
     s.colors.resize(keep);
 }
 
+/// Agent a's stack from the window's frames: its disks while in the run. An agent that left before the
+/// window has none there: one disk of radius 0 at its last goal (where it left), not drawn.
+Path agent_path(const crowd::SampleWindow& w, std::size_t a, const crowd::AgentTrack& track, bool& shown, double& t0) {
+    Path path;
+    path.dt = w.dt;
+    path.samples.reserve(std::size_t(w.last - w.first));
+    t0 = double(w.first) * w.dt;
+    for (std::int64_t f = w.first; f < w.last; ++f) {
+        const std::array<double, 4>* d = crowd::window_disk(w, a, f);
+        if (!d) break;
+        if (path.samples.empty()) t0 = (*d)[0];
+        path.samples.push_back({(*d)[1], (*d)[2], (*d)[3]});
+    }
+    shown = !path.samples.empty();
+    if (!shown) {
+        const std::array<double, 2> at = track.goals.empty() ? std::array<double, 2>{0, 0} : track.goals.back();
+        path.samples.push_back({at[0], at[1], 0.0});
+    }
+    return path;
+}
+
+/// The agents' stacks (the state's first clips) from the window's frames.
+void build_agents(State& s) {
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record();
+    for (std::size_t a = 0; a < r.tracks.size(); ++a) {
+        bool shown = true;
+        double t0 = 0;
+        Path path = agent_path(v.window, a, r.tracks[a], shown, t0);
+        LoadedClip& c = s.clips[a];
+        c.tree = std::make_unique<Tree>(Tree::build(path, s.scene.tree));
+        c.hidden = !shown;
+        s.places[a] = {0, 0, 0, t0};  // frame k of the record starts at t = k * dt
+        s.fixed_paths[a] = std::move(path);
+    }
+    ++s.revision;
+}
+
+/// Reads frames first .. last - 1 into the view: the window, its contacts, the timeline's marks.
+void read_window(CrowdView& v, std::int64_t first, std::int64_t last) {
+    v.window = v.reader->samples(first, last);  // the poser reads it where it stands
+    mark_contacts(v);
+}
+
 }  // namespace
 
-State load_crowd_state(const std::string& record_file, float aspect) {
+void mark_contacts(CrowdView& v) {
+    v.contacts = crowd::frame_contacts(v.window, v.record());
+    // The window's frames marked anew (a frame read again counts once).
+    auto it = v.contact_marks.lower_bound(v.window.first);
+    while (it != v.contact_marks.end() && it->first < v.window.last) it = v.contact_marks.erase(it);
+    for (const crowd::Contact& c : v.contacts)
+        ++v.contact_marks.try_emplace(c.frame, TimelineMark{TimelineMark::Contact, c.frame, c.a, -1, 0})
+              .first->second.count;
+    v.marks = timeline_marks(v);
+}
+
+namespace {
+
+/// Frame k's first and last covered by seconds t0 .. t1, clamped to the run.
+std::pair<std::int64_t, std::int64_t> frames_of(double t0, double t1, double dt, std::int64_t frames) {
+    const auto lo = std::int64_t(std::floor(t0 / dt)), hi = std::int64_t(std::ceil(t1 / dt)) + 1;
+    return {std::clamp<std::int64_t>(lo, 0, frames), std::clamp<std::int64_t>(hi, 0, frames)};
+}
+
+}  // namespace
+
+std::pair<std::int64_t, std::int64_t> crowd_frames_wanted(const State& s) {
+    const CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record();
+    const std::size_t agents = std::max<std::size_t>(1, r.tracks.size());
+    if (std::size_t(r.frames) <= v.window_disks / agents) return {0, r.frames};
+    const double w = s.scene.window > 0 ? s.scene.window + kCrowdReadAhead : double(r.frames) * r.dt;
+    auto [lo, hi] = frames_of(s.scene.cursor - w, s.scene.cursor + w, r.dt, r.frames);
+    // At most window_disks disks, about the cursor.
+    const auto most = std::max<std::int64_t>(1, std::int64_t(v.window_disks / agents));
+    if (hi - lo > most) {
+        const auto at = std::clamp<std::int64_t>(std::int64_t(std::floor(s.scene.cursor / r.dt)), 0, r.frames - 1);
+        lo = std::clamp<std::int64_t>(at - most / 2, 0, r.frames - most);
+        hi = lo + most;
+    }
+    return {lo, hi};
+}
+
+bool sync_crowd(State& s) {
+    if (!s.crowd) return false;
+    CrowdView& v = *s.crowd;
+    const crowd::Record& r = v.record();
+    const auto [lo, hi] = crowd_frames_wanted(s);
+    // The frames drawn (the window around the cursor), as many of them as can be had at once.
+    auto [need_lo, need_hi] =
+        s.scene.window > 0 ? frames_of(s.scene.cursor - s.scene.window, s.scene.cursor + s.scene.window, r.dt, r.frames)
+                           : std::pair<std::int64_t, std::int64_t>{0, r.frames};
+    need_lo = std::max(need_lo, lo), need_hi = std::min(need_hi, hi);
+    if (v.window.first <= need_lo && need_hi <= v.window.last && v.window.last > v.window.first) return false;
+    if (v.unread == std::pair{lo, hi}) return false;  // it failed: once is enough
+    try {
+        read_window(v, lo, hi);
+    } catch (const std::runtime_error&) {
+        v.unread = {lo, hi};
+        throw;
+    }
+    build_agents(s);
+    return true;
+}
+
+State load_crowd_state(const std::string& record_file, float aspect, double cursor, double window,
+                       std::size_t window_disks) {
     auto view = std::make_shared<CrowdView>();
-    view->record = crowd::load_record(record_file);
-    const crowd::Record& r = view->record;
+    view->reader = crowd::open_record(record_file);
+    view->window_disks = window_disks;
+    const crowd::Record& r = view->record();
     try {
         view->graph = std::make_shared<crowd::MotionGraph>(crowd::load_graph(r.graph));
         view->poses = std::make_shared<PoseSources>(view->graph);
@@ -67,7 +173,7 @@ State load_crowd_state(const std::string& record_file, float aspect) {
     }
     if (view->graph) {
         try {  // a graph that reads but lacks the record's clips is not the record's graph
-            crowd::check_graph_clips(r, view->graph->clips.size());
+            view->reader->check_graph_clips(view->graph->clips.size());
         } catch (const std::runtime_error& e) {
             throw std::runtime_error(record_file + ": " + e.what());
         }
@@ -85,54 +191,79 @@ State load_crowd_state(const std::string& record_file, float aspect) {
             s.scene.time_scale = scale;
             break;
         }
-    s.scene.window = kCrowdWindow;
+    s.scene.window = window >= 0 ? window : kCrowdWindow;
+    s.scene.cursor = cursor >= 0 ? cursor : 0.5 * run;
     s.scene.width = 960;
     s.scene.height = 540;
     view->agents = int(r.tracks.size());
-    view->contacts = crowd::frame_contacts(r);
-    view->marks = timeline_marks(*view);
+    view->fallbacks = view->reader->fallbacks();
     s.crowd = view;
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
-        Path path;
-        path.dt = r.dt;
-        for (const auto& q : r.tracks[a].samples) path.samples.push_back({q[1], q[2], q[3]});
-        if (path.samples.empty())
-            throw std::runtime_error(record_file + ": agent " + std::to_string(a) + " has no samples");
-        // Frame k of the record starts at t = k * dt: the path starts at the record's first sample time.
-        add_clip(s, "agent " + std::to_string(a), path, {0, 0, 0, r.tracks[a].samples.front()[0]},
-                 render::clip_color(int(a)));
+        s.clips.emplace_back().name = "agent " + std::to_string(a);
+        s.places.emplace_back();
+        s.fixed_paths.emplace_back();
+        s.colors.push_back(render::clip_color(int(a)));
     }
-    ++s.revision;
+    try {
+        sync_crowd(s);
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        throw std::runtime_error(m.rfind(record_file, 0) == 0 ? m : record_file + ": " + m);
+    }
     frame_all(s, aspect);
     return s;
 }
 
-std::vector<int> agent_choices(const CrowdView& v, int agent) {
-    std::vector<int> out;
-    for (std::size_t k = 0; k < v.record.choices.size(); ++k)
-        if (v.record.choices[k].agent == agent) out.push_back(int(k));
-    std::stable_sort(out.begin(), out.end(), [&](int a, int b) {
-        return v.record.choices[std::size_t(a)].frame < v.record.choices[std::size_t(b)].frame;
-    });
-    return out;
+const std::vector<crowd::ChoiceSummary>& agent_choices(CrowdView& v, int agent) {
+    if (agent != v.listed_agent || v.window.first != v.listed_first || v.window.last != v.listed_last) {
+        const auto [lo, hi] = v.whole() ? std::pair<std::size_t, std::size_t>{0, v.reader->choice_count()}
+                                        : v.reader->choice_rows(v.window.first, v.window.last);
+        v.listed = v.reader->summaries(lo, hi, agent);
+        std::stable_sort(v.listed.begin(), v.listed.end(),
+                         [](const auto& a, const auto& b) { return a.point.frame < b.point.frame; });
+        v.listed_agent = agent, v.listed_first = v.window.first, v.listed_last = v.window.last;
+    }
+    return v.listed;
 }
 
 const crowd::PlacedClip* committed_at(const CrowdView& v, const crowd::ChoicePoint& c) {
-    if (c.agent < 0 || std::size_t(c.agent) >= v.record.tracks.size()) return nullptr;
-    for (const crowd::PlacedClip& p : v.record.tracks[std::size_t(c.agent)].clips)
+    if (c.agent < 0 || std::size_t(c.agent) >= v.record().tracks.size()) return nullptr;
+    for (const crowd::PlacedClip& p : v.record().tracks[std::size_t(c.agent)].clips)
         if (p.start == c.frame && p.clip == c.taken) return &p;
     return nullptr;
+}
+
+std::optional<crowd::FramedClip> query_clip(const CrowdView& v, const crowd::CandidateQuery& q) {
+    const auto it = q.choice >= 0 ? v.named.find(std::size_t(q.choice)) : v.named.end();
+    return crowd::query_clip(v.record(), q, it == v.named.end() ? nullptr : &it->second);
+}
+
+render::Bounds crowd_extent(const CrowdView& v) {
+    render::Bounds b;
+    if (v.whole()) return b;  // the agents' stacks span the run
+    const crowd::Record& r = v.record();
+    b.add({r.world.x0, r.world.y0, 0.0});
+    b.add({r.world.x1, r.world.y1, double(r.frames) * r.dt});
+    return b;
 }
 
 void select_choice(State& s, int agent, int choice) {
     CrowdView& v = *s.crowd;
     drop_extra(s);
     if (agent >= 0 && agent < v.agents) v.agent = agent;
-    v.choice = choice >= 0 && std::size_t(choice) < v.record.choices.size() ? choice : -1;
+    v.choice = choice >= 0 && std::size_t(choice) < v.reader->choice_count() ? choice : -1;
+    v.named.clear();
     for (int a = 0; a < v.agents; ++a)
         s.colors[std::size_t(a)] = v.choice < 0 || a == v.agent ? render::clip_color(a) : glm::vec3(0.55f);
     if (v.choice >= 0) {
-        const crowd::ChoicePoint& c = v.record.choices[std::size_t(v.choice)];
+        v.selected = v.reader->choice(std::size_t(v.choice));
+        const crowd::ChoicePoint& c = v.selected;
+        // The choice points whose escape clips its queries met (the clips taken are the tracks').
+        for (const crowd::Candidate& cand : c.candidates)
+            for (const crowd::CandidateQuery& q : cand.against)
+                if (q.agent >= 0 && q.piece > 0 && q.choice >= 0 && std::size_t(q.choice) < v.reader->choice_count() &&
+                    !v.named.count(std::size_t(q.choice)))
+                    v.named.emplace(std::size_t(q.choice), v.reader->choice(std::size_t(q.choice)));
         v.agent = c.agent;
         s.colors.assign(std::size_t(v.agents), glm::vec3(0.55f));
         s.colors[std::size_t(v.agent)] = render::clip_color(v.agent);
@@ -162,7 +293,7 @@ bool open_candidate_query(State& s, int k, int j, std::string* message) {
     };
     if (v.choice < 0) return fail("no choice point selected");
     if (!v.graph) return fail("the record's graph cannot be read: " + v.graph_error);
-    const crowd::ChoicePoint& c = v.record.choices[std::size_t(v.choice)];
+    const crowd::ChoicePoint& c = v.selected;
     if (k < 0 || std::size_t(k) >= c.candidates.size() || std::size_t(k) >= v.candidate_clips.size())
         return fail("no candidate " + std::to_string(k));
     const crowd::Candidate& cand = c.candidates[std::size_t(k)];
@@ -178,7 +309,7 @@ bool open_candidate_query(State& s, int k, int j, std::string* message) {
                     ": not a clip to trace");
     std::optional<crowd::FramedClip> against;
     try {
-        against = crowd::query_clip(v.record, q);
+        against = query_clip(v, q);
     } catch (const std::out_of_range&) {
         return fail("query " + std::to_string(j) + " names no clip of the record");
     }
@@ -210,13 +341,13 @@ bool open_candidate_query(State& s, int k, int j, std::string* message) {
 namespace {
 
 /// A record frame is a graph sample only when both share dt (else the poses would drift off the disks).
-bool same_rate(const CrowdView& v) { return v.graph && std::abs(v.record.dt - v.graph->dt()) < 1e-9; }
+bool same_rate(const CrowdView& v) { return v.graph && std::abs(v.record().dt - v.graph->dt()) < 1e-9; }
 
 }  // namespace
 
 std::string skeleton_problem(const CrowdView& v) {
     if (!v.graph) return "no graph: " + v.graph_error;
-    if (!same_rate(v)) return "the record's dt differs from its graph's (" + v.record.graph + ")";
+    if (!same_rate(v)) return "the record's dt differs from its graph's (" + v.record().graph + ")";
     if (!v.pose_error.empty()) return v.pose_error;
     return v.poses ? v.poses->error() : std::string();
 }
@@ -225,7 +356,8 @@ std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const
     if (!v.graph || !v.poses || !same_rate(v)) return {};
     if (!v.poser && v.pose_error.empty()) {
         try {
-            v.poser = std::make_shared<crowd::CrowdPoser>(v.record, v.poses);
+            v.poser = std::make_shared<crowd::CrowdPoser>(v.record(), v.poses);
+            v.poser->use_samples(&v.window);
             v.bones = drawn_bones(v.poser->rig());
         } catch (const std::exception& e) {
             v.pose_error = e.what();
@@ -236,7 +368,7 @@ std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const
 
 void update_crowd_playback(State& s, double seconds) {
     if (!s.crowd || !s.crowd->playing) return;
-    const double end = double(s.crowd->record.frames) * s.crowd->record.dt;
+    const double end = double(s.crowd->record().frames) * s.crowd->record().dt;
     s.scene.cursor += seconds * double(s.crowd->rate);
     if (end > 0 && s.scene.cursor > end) s.scene.cursor = std::fmod(s.scene.cursor, end);
 }
@@ -255,7 +387,7 @@ std::vector<std::array<double, 2>> circle(double x, double y, double r, int side
 }  // namespace
 
 std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
-    const crowd::Record& r = v.record;
+    const crowd::Record& r = v.record();
     const double end = double(r.frames) * r.dt;
     std::vector<render::Prism> out;
     const crowd::World& w = r.world;
@@ -265,7 +397,7 @@ std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
     // Goals in the agent's colour while it is in the run: a sequence's goals small, its last one larger.
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         const crowd::AgentTrack& track = r.tracks[a];
-        const double until = double(track.samples.size()) * r.dt;
+        const double until = double(track.left_frame.value_or(r.frames)) * r.dt;
         for (std::size_t k = 0; k < track.goals.size(); ++k) {
             const double size = k + 1 == track.goals.size() ? 0.15 : 0.08;
             out.push_back({circle(track.goals[k][0], track.goals[k][1], size, 4), 0, until, render::clip_color(int(a)),
@@ -276,25 +408,18 @@ std::vector<render::Prism> crowd_prisms(const CrowdView& v, double t) {
     auto it = std::lower_bound(v.contacts.begin(), v.contacts.end(), frame,
                                [](const crowd::Contact& c, std::int64_t f) { return c.frame < f; });
     for (; it != v.contacts.end() && it->frame == frame; ++it)
-        for (int a : {it->a, it->b}) {
-            const auto& d = r.tracks[std::size_t(a)].samples[std::size_t(frame)];
-            out.push_back({circle(d[1], d[2], d[3] + 0.04, 24), t, t, glm::vec3(0.95f, 0.1f, 0.1f), 0, true});
-        }
+        for (int a : {it->a, it->b})
+            if (const auto* d = crowd::window_disk(v.window, std::size_t(a), frame))
+                out.push_back(
+                    {circle((*d)[1], (*d)[2], (*d)[3] + 0.04, 24), t, t, glm::vec3(0.95f, 0.1f, 0.1f), 0, true});
     return out;
 }
 
 std::vector<TimelineMark> timeline_marks(const CrowdView& v) {
     std::vector<TimelineMark> out;
-    for (std::size_t k = 0; k < v.record.choices.size(); ++k) {
-        const crowd::ChoicePoint& c = v.record.choices[k];
-        if (c.fallback) out.push_back({TimelineMark::Fallback, c.frame, c.agent, int(k), 1});
-    }
-    for (const crowd::Contact& c : v.contacts) {
-        if (!out.empty() && out.back().kind == TimelineMark::Contact && out.back().frame == c.frame)
-            ++out.back().count;
-        else
-            out.push_back({TimelineMark::Contact, c.frame, c.a, -1, 1});
-    }
+    for (const crowd::ChoiceMark& c : v.fallbacks)
+        out.push_back({TimelineMark::Fallback, c.frame, c.agent, int(c.row), 1});
+    for (const auto& [frame, mark] : v.contact_marks) out.push_back(mark);
     std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
     return out;
 }
@@ -315,7 +440,7 @@ void jump_to(State& s, const TimelineMark& m) {
     else
         select_choice(s, m.agent, -1);
     // Inside the frame, so the contacts of that frame show at the cursor.
-    s.scene.cursor = (double(m.frame) + 0.5) * v.record.dt;
+    s.scene.cursor = (double(m.frame) + 0.5) * v.record().dt;
 }
 
 }  // namespace mobb::viewer

@@ -1,5 +1,7 @@
 #include "headless.h"
 
+#include "crowd_view.h"
+
 #include <chrono>
 
 #include <imgui.h>
@@ -116,6 +118,7 @@ int target_samples(const render::Frame& frame) { return render::multisampled(fra
 }  // namespace
 
 render::Image render_headless(State& state, const HeadlessOptions& options) {
+    sync_crowd(state);  // a crowd read in windows: the frames around the cursor
     render::OsMesaContext context(options.width, options.height);
     render::Target target(options.width, options.height, target_samples(frame_of(state)));
     render::Renderer renderer;
@@ -130,6 +133,7 @@ render::Image render_headless(State& state, const HeadlessOptions& options) {
 }
 
 BenchResult bench_headless(State& state, int width, int height, int frames) {
+    sync_crowd(state);
     render::OsMesaContext context(width, height);
     const render::Frame frame = frame_of(state);
     render::Target target(width, height, target_samples(frame));

@@ -103,8 +103,47 @@ void run_query(State& s) {
     s.queried = true;
 }
 
+namespace {
+
+/// What the renderer draws but the crowd's skeletons (frame_of poses them).
+render::Frame unposed_frame(const State& s) {
+    render::Frame f;
+    Colouring& colouring = *s.colouring;
+    update_colouring(s, colouring);
+    for (std::size_t k = 0; k < s.clips.size(); ++k) {
+        render::ClipView v;
+        v.tree = s.clips[k].tree.get();
+        if (s.clips[k].clip) {
+            v.animation = &s.clips[k].clip->animation;
+            v.up = s.clips[k].clip->up;
+        }
+        v.place = s.places[k];
+        v.color = k < s.colors.size() ? s.colors[k] : render::clip_color(int(k));
+        v.visible = !s.clips[k].hidden && (k >= s.scene.clips.size() || s.scene.clips[k].visible);
+        if (k < colouring.samples.size() && !colouring.samples[k].empty()) v.sample_values = &colouring.samples[k];
+        if (k < colouring.nodes.size() && !colouring.nodes[k].empty()) v.node_values = &colouring.nodes[k];
+        f.clips.push_back(v);
+    }
+    f.layers = s.scene.layers;
+    f.time_scale = s.scene.time_scale;
+    f.cursor = s.scene.cursor;
+    f.window = s.scene.window;
+    f.skeleton_scale = s.scene.skeleton_scale;
+    f.multisample = s.scene.multisample;
+    f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
+    if (s.crowd) f.prisms = crowd_prisms(*s.crowd, s.scene.cursor);
+    if (s.crowd) f.extent = crowd_extent(*s.crowd);
+    f.revision = s.revision;
+    f.disk_scale = colouring.disk_scale;
+    f.box_scale = colouring.box_scale;
+    f.colour_revision = colouring.serial;
+    return f;
+}
+
+}  // namespace
+
 void frame_all(State& s, float aspect) {
-    const render::Frame f = frame_of(s);
+    const render::Frame f = unposed_frame(s);  // the bounds hold no skeleton: a crowd's need not be posed
     const render::Bounds b = render::scene_bounds(f);
     if (b.empty) return;
     // The scene's space-time box and the time axis, which stands at the grid's corner (grid_bounds, up to
@@ -135,37 +174,9 @@ int shown_step(const State& s) {
 }
 
 render::Frame frame_of(const State& s) {
-    render::Frame f;
-    Colouring& colouring = *s.colouring;
-    update_colouring(s, colouring);
-    for (std::size_t k = 0; k < s.clips.size(); ++k) {
-        render::ClipView v;
-        v.tree = s.clips[k].tree.get();
-        if (s.clips[k].clip) {
-            v.animation = &s.clips[k].clip->animation;
-            v.up = s.clips[k].clip->up;
-        }
-        v.place = s.places[k];
-        v.color = k < s.colors.size() ? s.colors[k] : render::clip_color(int(k));
-        v.visible = k >= s.scene.clips.size() || s.scene.clips[k].visible;
-        if (k < colouring.samples.size() && !colouring.samples[k].empty()) v.sample_values = &colouring.samples[k];
-        if (k < colouring.nodes.size() && !colouring.nodes[k].empty()) v.node_values = &colouring.nodes[k];
-        f.clips.push_back(v);
-    }
-    f.layers = s.scene.layers;
-    f.time_scale = s.scene.time_scale;
-    f.cursor = s.scene.cursor;
-    f.window = s.scene.window;
-    f.skeleton_scale = s.scene.skeleton_scale;
-    f.multisample = s.scene.multisample;
-    f.trace = {&s.trace, shown_step(s), s.scene.query_a, s.scene.query_b};
+    render::Frame f = unposed_frame(s);
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
     if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
-    if (s.crowd) f.prisms = crowd_prisms(*s.crowd, s.scene.cursor);
-    f.revision = s.revision;
-    f.disk_scale = colouring.disk_scale;
-    f.box_scale = colouring.box_scale;
-    f.colour_revision = colouring.serial;
     return f;
 }
 

@@ -24,6 +24,7 @@ struct LoadedClip {
     std::string name;                ///< file name, or "walk N"
     std::shared_ptr<io::Clip> clip;  ///< null for synthetic paths (no skeleton)
     std::unique_ptr<Tree> tree;      ///< built with the scene's tree options
+    bool hidden = false;             ///< not drawn: a crowd's agent out of the run in the frames at hand
 };
 
 struct State {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include <imgui.h>
 
@@ -19,9 +20,9 @@ namespace {
 /// The run as a strip: fallbacks (upper half) and frames with contacts (lower half) at their time, the
 /// cursor in white. Hover names the nearest mark; a click jumps to it (or to the time clicked),
 /// dragging scrubs.
-void timeline_strip(State& s) {
+void timeline_strip(State& s, Ui& ui) {
     CrowdView& v = *s.crowd;
-    const crowd::Record& r = v.record;
+    const crowd::Record& r = v.record();
     const float w = std::max(ImGui::GetContentRegionAvail().x, 50.0f), h = 18.0f;
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("timeline", ImVec2(w, h));
@@ -46,9 +47,13 @@ void timeline_strip(State& s) {
         ImGui::SetTooltip("fallback: agent %d at %.2f s", near->agent, double(near->frame) * r.dt);
     else if (near)
         ImGui::SetTooltip("%d agent pairs in contact at %.2f s", near->count, double(near->frame) * r.dt);
-    if (ImGui::IsItemClicked() && near)
-        jump_to(s, *near);
-    else if (ImGui::IsItemActive())
+    if (ImGui::IsItemClicked() && near) {
+        try {
+            jump_to(s, *near);
+        } catch (const std::runtime_error& e) {  // the choice point cannot be read
+            ui.status = e.what();
+        }
+    } else if (ImGui::IsItemActive())
         s.scene.cursor = std::clamp(double(frame), 0.0, frames) * r.dt;
 }
 
@@ -56,7 +61,7 @@ void timeline_strip(State& s) {
 /// time cursor there.
 void events_over_time(State& s) {
     if (s.crowd->marks.empty()) return;  // nothing to plot: the counts below say so
-    const crowd::Record& r = s.crowd->record;
+    const crowd::Record& r = s.crowd->record();
     const double seconds = double(r.frames) * r.dt;
     const int bins = std::clamp(int(std::ceil(seconds)), 1, 600);
     std::vector<float> fallbacks(std::size_t(bins), 0.0f), contacts(std::size_t(bins), 0.0f);
@@ -87,7 +92,7 @@ void events_over_time(State& s) {
 /// The record in one line, then play, rate and the time slider.
 void playback(State& s) {
     CrowdView& v = *s.crowd;
-    const crowd::Record& r = v.record;
+    const crowd::Record& r = v.record();
     const std::string scenario = r.scenario.empty() ? "" : "scenario " + r.scenario + ", ";
     ImGui::Text("%s%d agents, %.1f s, %s, seed %llu", scenario.c_str(), v.agents, double(r.frames) * r.dt,
                 r.select.c_str(), static_cast<unsigned long long>(r.seed));
@@ -101,14 +106,20 @@ void playback(State& s) {
     if (ImGui::SliderFloat("time", &t, 0.0f, float(double(r.frames) * r.dt), "%.2f s")) s.scene.cursor = double(t);
 }
 
-/// How many fallbacks and frames with contacts the run has.
+/// How many fallbacks and frames with contacts the run has (of a record read in windows: the frames
+/// read so far, and the frames at hand).
 void event_counts(const CrowdView& v) {
     const auto count = [&](TimelineMark::Kind kind) {
         return std::count_if(v.marks.begin(), v.marks.end(), [&](const auto& m) { return m.kind == kind; });
     };
     ImGui::TextColored(kFallbackColour, "%ld fallbacks", long(count(TimelineMark::Fallback)));
     ImGui::SameLine();
-    ImGui::TextColored(kContactColour, "%ld contact frames", long(count(TimelineMark::Contact)));
+    ImGui::TextColored(kContactColour, "%ld contact frames%s", long(count(TimelineMark::Contact)),
+                       v.whole() ? "" : " in the frames read");
+    if (v.whole()) return;
+    const crowd::Record& r = v.record();
+    ImGui::SameLine();
+    ImGui::TextDisabled("frames at hand: %.1f to %.1f s", double(v.window.first) * r.dt, double(v.window.last) * r.dt);
 }
 
 }  // namespace
@@ -116,7 +127,7 @@ void event_counts(const CrowdView& v) {
 void timeline_panel(State& s, Ui& ui) {
     if (!begin_panel(s, ui, &PanelsOpen::timeline)) return;
     playback(s);
-    timeline_strip(s);
+    timeline_strip(s, ui);
     events_over_time(s);
     event_counts(*s.crowd);
     ImGui::End();

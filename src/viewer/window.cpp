@@ -1,6 +1,7 @@
 #include "window.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -9,6 +10,7 @@
 #include <imgui_internal.h>
 
 #include "context_glfw.h"
+#include "crowd_view.h"
 #include "gl.h"
 #include "image.h"
 #include "layout.h"
@@ -129,6 +131,17 @@ void keyboard(State& s, Ui& ui, Events& events) {
 /// ImGui's ini in the user's config folder, with the user's panel choices, the columns and the camera of
 /// `key` in it; the panels open are the defaults for the state with the choices over them.
 /// Loaded now (not at the first frame) so the camera is in place before anything is drawn.
+/// A crowd read in windows: the frames around the cursor, read as it moves; a file that cannot be read
+/// stops the playing and says why in the status line.
+void sync_window(State& s, Ui& ui) {
+    try {
+        sync_crowd(s);
+    } catch (const std::runtime_error& e) {
+        ui.status = e.what();
+        s.crowd->playing = false;
+    }
+}
+
 void load_settings(State& s, Ui& ui, ViewSettings& settings, const std::string& file, const std::string& key) {
     add_settings_handler(settings);
     ui.panels = default_panels(s);
@@ -199,6 +212,7 @@ void run_window(State& s, const WindowOptions& options) {
             update_playback(s, ui, ImGui::GetIO().DeltaTime);
             draw_panels(s, ui);
             apply_requests(s, ui);
+            sync_window(s, ui);
             keep_settings(s, ui, settings, options.settings_key);
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -12,6 +12,7 @@
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/record_file.h"
 #include "mobb/crowd/scenario.h"
+#include "record_parts.h"
 
 namespace mobb::crowd {
 namespace {
@@ -138,6 +139,11 @@ TEST(RecordStream, AStoppedWriterLeavesItsFramesUpToTheLastMark) {
     EXPECT_EQ(w.frames, held);
     EXPECT_EQ(w.last, held);
     EXPECT_EQ(w.note, r.note);
+    // Read in parts (record_reader.h), the same frames and choice points.
+    const auto parts = open_record(file);
+    EXPECT_EQ(parts->info().note, r.note);
+    EXPECT_EQ(record_to_text(test::record_from_parts(*parts), parts->info().summary_json),
+              record_to_text(expected, "{}"));
     std::remove(file.c_str());
 }
 

@@ -36,7 +36,8 @@ TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 1.5f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
-    const crowd::Record& r = s.crowd->record;
+    const crowd::Record r = crowd::load_record(record);  // the whole record, read on its own
+    ASSERT_EQ(s.crowd->reader->choice_count(), r.choices.size());
     int opened = 0, hits = 0, refused = 0;
     for (std::size_t k = 0; k < r.choices.size(); ++k) {
         const crowd::ChoicePoint& c = r.choices[k];
@@ -63,6 +64,7 @@ TEST(CrowdTrace, EveryListedQueryOpensWithTheRecordedAnswer) {
                 EXPECT_EQ(s.crowd->opened_query, int(j));
                 // The query's other clip is where the record placed it.
                 const crowd::FramedClip other = *crowd::query_clip(r, q);
+                EXPECT_EQ(viewer::query_clip(*s.crowd, q)->frame, other.frame);
                 EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].x, other.place.x);
                 EXPECT_EQ(s.places[std::size_t(s.scene.query_b)].t0, other.place.t0);
                 // Opening another query replaces the other clip instead of piling them up.
@@ -90,7 +92,7 @@ TEST(CrowdTrace, BadQueryIndicesAreRefused) {
     EXPECT_FALSE(viewer::open_candidate_query(s, 0, 0, &message));
     EXPECT_EQ(message, "no choice point selected");
     viewer::select_choice(s, -1, 0);
-    const auto& c = s.crowd->record.choices[0];
+    const auto& c = s.crowd->selected;
     EXPECT_FALSE(viewer::open_candidate_query(s, int(c.candidates.size()), 0, &message));
     EXPECT_FALSE(viewer::open_candidate_query(s, 0, int(c.candidates[0].against.size()), &message));
     EXPECT_FALSE(viewer::open_candidate_query(s, 0, -1, &message));
@@ -106,7 +108,7 @@ TEST(CrowdSkeletons, RootsStandOnTheirDisks) {
     ASSERT_FALSE(record.empty());
     State s = viewer::load_crowd_state(record, 1.5f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
-    const crowd::Record& r = s.crowd->record;
+    const crowd::Record r = crowd::load_record(record);
     int checked = 0;
     for (std::int64_t k = 0; k < r.frames; k += 5) {
         const double t = (double(k) + 0.5) * r.dt;
@@ -133,8 +135,8 @@ TEST(CrowdSkeletons, SourcesLoadOnce) {
     ASSERT_FALSE(record.empty());
     State s = viewer::load_crowd_state(record, 1.5f);
     ASSERT_TRUE(s.crowd->poses);
-    // Loading the state posed the agents at t = 0 (framing the camera): every source is loaded, once (the
-    // poses carry the joints all sources share, and blend across them at clip starts).
+    // Posing the agents at t = 0 loads every source, once (the poses carry the joints all sources share,
+    // and blend across them at clip starts).
     viewer::agent_skeletons(*s.crowd, 0.0, s.colors);
     EXPECT_EQ(s.crowd->poses->loaded(), int(s.crowd->graph->sources.size()));
     ASSERT_TRUE(s.crowd->poser);
@@ -149,7 +151,7 @@ TEST(CrowdSkeletons, SourcesLoadOnce) {
     s.scene.layers.skeletons = false;
     EXPECT_TRUE(viewer::frame_of(s).posed.empty());
     s.scene.layers.skeletons = true;
-    EXPECT_EQ(viewer::frame_of(s).posed.size(), s.crowd->record.tracks.size());
+    EXPECT_EQ(viewer::frame_of(s).posed.size(), s.crowd->record().tracks.size());
 }
 
 TEST(CrowdSkeletons, UnreadableGraphKeepsTheDisks) {
@@ -159,7 +161,7 @@ TEST(CrowdSkeletons, UnreadableGraphKeepsTheDisks) {
         edited_copy(record, "crowd_no_graph.json", [](nlohmann::json& j) { j["graph"] = "/no/such/graph.json"; });
     State s = viewer::load_crowd_state(bad, 1.5f);
     EXPECT_FALSE(s.crowd->graph);
-    EXPECT_EQ(s.clips.size(), s.crowd->record.tracks.size());
+    EXPECT_EQ(s.clips.size(), s.crowd->record().tracks.size());
     EXPECT_NE(viewer::skeleton_problem(*s.crowd).find("/no/such/graph.json"), std::string::npos);
     EXPECT_TRUE(viewer::frame_of(s).posed.empty());
     viewer::select_choice(s, -1, 0);
@@ -183,7 +185,7 @@ TEST(CrowdSkeletons, MissingSourceNamesTheFile) {
     const std::string problem = viewer::skeleton_problem(*s.crowd);
     EXPECT_NE(problem.find("no_such_take.bvh"), std::string::npos) << problem;
     EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
-    EXPECT_EQ(s.clips.size(), s.crowd->record.tracks.size());
+    EXPECT_EQ(s.clips.size(), s.crowd->record().tracks.size());
 }
 
 // A scenario record draws its walls, its obstacles (filled) and a post per goal; contacts at the cursor
@@ -192,7 +194,8 @@ TEST(CrowdOverlay, WallsObstaclesGoalsAndContacts) {
     const std::string record = scenario_record("doorway_two_way");
     ASSERT_FALSE(record.empty());
     State s = viewer::load_crowd_state(record, 1.5f);
-    crowd::Record& r = s.crowd->record;
+    const crowd::Record& r = s.crowd->record();
+    const crowd::Record whole = crowd::load_record(record);
     const double end = double(r.frames) * r.dt;
     auto prisms = viewer::crowd_prisms(*s.crowd, 1.0);
     ASSERT_EQ(prisms.size(), 1 + r.world.obstacles.size() + 2);  // walls, the door's two posts, two goals
@@ -207,14 +210,15 @@ TEST(CrowdOverlay, WallsObstaclesGoalsAndContacts) {
     }
     EXPECT_NEAR(prisms[3].ground[0][0], r.tracks[0].goals[0][0] + 0.15, 1e-12);
     EXPECT_TRUE(s.crowd->marks.empty()) << "a passed scenario: no fallback, no contact";
-    // Two contacts: agent 1 put onto agent 0 at frames 40 and 41.
+    // Two contacts: agent 1 put onto agent 0 at frames 40 and 41 (of the window: all frames).
+    crowd::SampleWindow& w = s.crowd->window;
+    ASSERT_TRUE(s.crowd->whole());
     for (std::size_t f : {40u, 41u}) {
-        r.tracks[1].samples[f][1] = r.tracks[0].samples[f][1];
-        r.tracks[1].samples[f][2] = r.tracks[0].samples[f][2];
+        w.samples[f * w.width() + 1][1] = w.samples[f * w.width()][1];
+        w.samples[f * w.width() + 1][2] = w.samples[f * w.width()][2];
     }
-    r.choices[5].fallback = true;
-    s.crowd->contacts = crowd::frame_contacts(r);
-    s.crowd->marks = viewer::timeline_marks(*s.crowd);
+    s.crowd->fallbacks.push_back({5, whole.choices[5].agent, whole.choices[5].frame});
+    viewer::mark_contacts(*s.crowd);
     prisms = viewer::crowd_prisms(*s.crowd, 40.5 * r.dt);
     ASSERT_EQ(prisms.size(), 1 + r.world.obstacles.size() + 2 + 2);
     EXPECT_TRUE(prisms.back().on_top);
@@ -239,11 +243,134 @@ TEST(CrowdOverlay, WallsObstaclesGoalsAndContacts) {
     viewer::jump_to(s, *near);
     EXPECT_EQ(std::int64_t(s.scene.cursor / r.dt), 41);
     EXPECT_EQ(s.crowd->agent, 0);
-    const viewer::TimelineMark* fallback = viewer::nearest_mark(marks, r.choices[5].frame, 0);
+    const viewer::TimelineMark* fallback = viewer::nearest_mark(marks, whole.choices[5].frame, 0);
     ASSERT_TRUE(fallback);
     viewer::jump_to(s, *fallback);
     EXPECT_EQ(s.crowd->choice, 5);
-    EXPECT_EQ(s.crowd->agent, r.choices[5].agent);
+    EXPECT_EQ(s.crowd->agent, whole.choices[5].agent);
+}
+
+/// A 60-agent, 30 s crowd streamed to HDF5 by the real `mobb crowd`: 900 frames in blocks of 256, right
+/// of way and escapes among its choice points. Written once per test process.
+std::string long_record() {
+    struct Made {
+        std::string path;
+        ~Made() {
+            if (!path.empty()) std::remove(path.c_str());
+        }
+    };
+    static const Made made = [] {
+        // With its candidates (an HDF5 record keeps none unless asked): their queries open.
+        const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_long_" + std::to_string(getpid()) + ".h5";
+        const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
+                                "\" --agents 60 --world 13x15 --seconds 30 --seed 2 --record-candidates --record \"" +
+                                out + "\" > /dev/null";
+        return Made{std::system(cmd.c_str()) == 0 ? out : std::string()};
+    }();
+    return made.path;
+}
+
+// A record larger than the viewer reads at once opens with the frames around the cursor alone: the
+// header, clips and one block of samples read, the agents' stacks those frames of the record read
+// whole; moving the cursor out of them reads those around it (from the cache when read before); the
+// choice points listed are the agent's of those frames, and one selected opens its queries as recorded.
+TEST(CrowdWindow, ALargeRecordOpensReadingTheFramesAroundTheCursor) {
+    const std::string file = long_record();
+    ASSERT_FALSE(file.empty()) << "mobb crowd --record failed";
+    const crowd::RecordFile whole = crowd::read_record_file(file);
+    const crowd::Record& r = whole.record;
+    ASSERT_EQ(r.frames, 900);
+    // At most 200 frames of the 60 agents at once; the cursor at 15 s, 1 s drawn either side.
+    State s = viewer::load_crowd_state(file, 1.5f, 15.0, 1.0, 60 * 200);
+    viewer::CrowdView& v = *s.crowd;
+    ASSERT_TRUE(v.reader->lazy());
+    EXPECT_FALSE(v.whole());
+    // Frames of 15 s -/+ 1 s drawn -/+ 1 s read ahead (390 to 510): block 1, frames 256 to 511, read alone.
+    EXPECT_EQ(v.window.first, 390);
+    EXPECT_EQ(v.window.last, 511);
+    EXPECT_EQ(v.reader->counts().frames, 256);
+    EXPECT_EQ(v.reader->counts().choices, 0);
+    EXPECT_FALSE(viewer::crowd_extent(v).empty);  // framed as the whole run
+    const auto check_stacks = [&] {
+        for (std::size_t a = 0; a < r.tracks.size(); ++a) {
+            const Path& path = s.clips[a].tree->path();
+            ASSERT_EQ(std::int64_t(path.size()), v.window.last - v.window.first) << "agent " << a;
+            EXPECT_EQ(s.places[a].t0, r.tracks[a].samples[std::size_t(v.window.first)][0]);
+            for (std::size_t k = 0; k < path.size(); ++k) {
+                const auto& d = r.tracks[a].samples[std::size_t(v.window.first) + k];
+                ASSERT_TRUE(path.samples[k].x == d[1] && path.samples[k].y == d[2] && path.samples[k].r == d[3])
+                    << "agent " << a << " frame " << v.window.first + std::int64_t(k);
+            }
+        }
+    };
+    check_stacks();
+    // Still within the frames at hand: nothing read. Out of them: the frames around the cursor.
+    s.scene.cursor = 15.5;
+    EXPECT_FALSE(viewer::sync_crowd(s));
+    s.scene.cursor = 25.0;
+    EXPECT_TRUE(viewer::sync_crowd(s));
+    EXPECT_TRUE(v.window.first <= 24 * 30 && v.window.last >= 26 * 30 + 1);
+    EXPECT_EQ(v.reader->counts().frames, 256 + 256 + (900 - 768));  // blocks 2 and 3
+    check_stacks();
+    s.scene.cursor = 15.0;
+    EXPECT_TRUE(viewer::sync_crowd(s));
+    EXPECT_EQ(v.reader->counts().frames, 256 + 256 + (900 - 768));  // block 1 again, from the cache
+    EXPECT_GT(v.reader->counts().cached, 0);
+    // Agent 3's choice points at those frames, as the whole record has them.
+    const auto& listed = viewer::agent_choices(v, 3);
+    std::vector<std::size_t> rows;
+    for (std::size_t k = 0; k < r.choices.size(); ++k)
+        if (r.choices[k].agent == 3 && r.choices[k].frame >= v.window.first && r.choices[k].frame < v.window.last)
+            rows.push_back(k);
+    ASSERT_EQ(listed.size(), rows.size());
+    ASSERT_FALSE(rows.empty());
+    for (std::size_t k = 0; k < rows.size(); ++k) EXPECT_EQ(listed[k].row, rows[k]);
+    // Every query of their candidates opens as the crowd answered it.
+    ASSERT_TRUE(v.graph) << v.graph_error;
+    int opened = 0;
+    for (const std::size_t row : rows) {
+        viewer::select_choice(s, -1, int(row));
+        ASSERT_EQ(v.selected.candidates.size(), r.choices[row].candidates.size());
+        for (std::size_t i = 0; i < v.selected.candidates.size(); ++i)
+            for (std::size_t j = 0; j < v.selected.candidates[i].against.size(); ++j) {
+                const crowd::CandidateQuery& q = v.selected.candidates[i].against[j];
+                std::string message;
+                if (!viewer::open_candidate_query(s, int(i), int(j), &message)) continue;
+                EXPECT_EQ(s.answer, q.hit) << message;
+                EXPECT_EQ(viewer::query_clip(v, q)->place.t0, crowd::query_clip(r, q)->place.t0);
+                ++opened;
+            }
+    }
+    EXPECT_GT(opened, 0);
+    // Each read once, with the choice points whose escape clips its queries met.
+    std::int64_t named = 0;
+    for (const std::size_t row : rows) {
+        std::set<int> met;
+        for (const auto& cand : r.choices[row].candidates)
+            for (const auto& q : cand.against)
+                if (q.agent >= 0 && q.piece > 0) met.insert(q.choice);
+        named += std::int64_t(met.size());
+    }
+    EXPECT_EQ(v.reader->counts().choices, std::int64_t(rows.size()) + named);
+}
+
+// The skeletons at the cursor of a record read in windows are those of the record read whole (their
+// bound looks at the disks ahead, which the window holds).
+TEST(CrowdWindow, SkeletonsAreThoseOfTheWholeRecord) {
+    MOBB_NEEDS_MOCAP();
+    const std::string file = long_record();
+    ASSERT_FALSE(file.empty()) << "mobb crowd --record failed";
+    State part = viewer::load_crowd_state(file, 1.5f, 15.0, 1.0, 60 * 200);
+    State all = viewer::load_crowd_state(file, 1.5f, 15.0, 1.0);
+    ASSERT_FALSE(part.crowd->whole());
+    ASSERT_TRUE(all.crowd->whole());
+    for (const double t : {14.01, 15.0, 16.49}) {
+        const auto a = viewer::agent_skeletons(*part.crowd, t, part.colors);
+        const auto b = viewer::agent_skeletons(*all.crowd, t, all.colors);
+        ASSERT_EQ(a.size(), b.size()) << viewer::skeleton_problem(*part.crowd);
+        ASSERT_EQ(a.size(), 60u);
+        for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k].joints, b[k].joints) << "agent " << k << " at " << t;
+    }
 }
 
 }  // namespace

@@ -281,9 +281,12 @@ TEST(Golden, CrowdSkeletons) {
 
 /// Looks at agent `agent` at the cursor from `distance` metres: its body fills the image.
 void look_at_agent(State& s, int agent, float distance) {
-    const auto& sample = s.crowd->record.tracks[std::size_t(agent)].samples;
-    const auto k = std::size_t(std::floor(s.scene.cursor / s.crowd->record.dt + 1e-9));
-    const auto& at = sample[std::min(k, sample.size() - 1)];
+    const crowd::Record& r = s.crowd->record();
+    const auto k = std::int64_t(std::floor(s.scene.cursor / r.dt + 1e-9));
+    const auto last = r.tracks[std::size_t(agent)].left_frame.value_or(r.frames) - 1;
+    const auto* disk = crowd::window_disk(s.crowd->window, std::size_t(agent), std::min(k, last));
+    ASSERT_TRUE(disk);
+    const auto& at = *disk;
     s.camera.target = glm::vec3(float(at[1]), float(s.scene.cursor * s.scene.time_scale + 0.8), float(-at[2]));
     s.camera.distance = distance;
     s.camera.pitch = 15.0f;
@@ -337,11 +340,12 @@ TEST(Golden, CrowdBlendUnderWay) {
     ASSERT_FALSE(viewer::agent_skeletons(*s.crowd, 0.0, {}).empty()) << viewer::skeleton_problem(*s.crowd);
     crowd::PoseBlend off;
     off.window = 0;
-    auto raw = std::make_shared<crowd::CrowdPoser>(s.crowd->record, s.crowd->poses, crowd::RigJoints::All, off);
+    auto raw = std::make_shared<crowd::CrowdPoser>(s.crowd->record(), s.crowd->poses, crowd::RigJoints::All, off);
+    raw->use_samples(&s.crowd->window);
     const BlendMoment m = largest_blend(*s.crowd->poser, *raw);
     ASSERT_GE(m.agent, 0);
     EXPECT_GT(m.offset, 0.1) << "agent " << m.agent << " frame " << m.frame;  // visibly under way
-    s.scene.cursor = (double(m.frame) + 0.5) * s.crowd->record.dt;
+    s.scene.cursor = (double(m.frame) + 0.5) * s.crowd->record().dt;
     s.scene.window = 0.3;
     s.scene.layers.bodies = true;
     look_at_agent(s, m.agent, 4.0f);
@@ -375,12 +379,12 @@ TEST(Golden, CrowdChoicePoint) {
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
-    const int pick = small_rejection(s.crowd->record);
+    const int pick = small_rejection(crowd::load_record(record));
     ASSERT_GE(pick, 0);
     viewer::select_choice(s, -1, pick);
-    const auto& c = s.crowd->record.choices[std::size_t(pick)];
+    const auto& c = s.crowd->selected;
     ASSERT_EQ(s.crowd->candidate_clips.size(), c.candidates.size());
-    s.scene.cursor = double(c.frame) * s.crowd->record.dt;
+    s.scene.cursor = double(c.frame) * s.crowd->record().dt;
     s.scene.layers.disks_translucent = true;
     s.camera.top();  // the "top" preset: the candidates fan out from the agent's disk
     // The candidates' rows are wider than the column: their list scrolls sideways (not cut text).
@@ -395,11 +399,11 @@ TEST(Golden, CrowdQueryOpened) {
     ASSERT_FALSE(record.empty()) << "mobb crowd --record failed";
     State s = viewer::load_crowd_state(record, 1280.0f / 720.0f);
     ASSERT_TRUE(s.crowd->graph) << s.crowd->graph_error;
-    const auto& r = s.crowd->record;
-    const int pick = small_rejection(r);
+    const auto& r = s.crowd->record();
+    const int pick = small_rejection(crowd::load_record(record));
     ASSERT_GE(pick, 0);
     viewer::select_choice(s, -1, pick);
-    const auto& c = r.choices[std::size_t(pick)];
+    const auto& c = s.crowd->selected;
     int k = 0;
     auto has_clip_hit = [&](int i) {
         const auto& a = c.candidates[std::size_t(i)].against;
@@ -439,13 +443,12 @@ TEST(Golden, CrowdQueryOpened) {
 
 /// Moves agent 1 onto agent 0 at a third of the run (one contact); returns that frame.
 std::size_t add_contact(State& s) {
-    const auto& r = s.crowd->record;
-    const auto frame = std::size_t(r.frames / 3);
-    auto& moved = s.crowd->record.tracks[1].samples[frame];
-    moved[1] = r.tracks[0].samples[frame][1] + 0.3;
-    moved[2] = r.tracks[0].samples[frame][2];
-    s.crowd->contacts = crowd::frame_contacts(r);
-    s.crowd->marks = viewer::timeline_marks(*s.crowd);
+    crowd::SampleWindow& w = s.crowd->window;  // every frame of the record
+    const auto frame = std::size_t(s.crowd->record().frames / 3);
+    auto& moved = w.samples[frame * w.width() + 1];
+    moved[1] = w.samples[frame * w.width()][1] + 0.3;
+    moved[2] = w.samples[frame * w.width()][2];
+    viewer::mark_contacts(*s.crowd);
     ++s.revision;
     return frame;
 }
@@ -457,7 +460,7 @@ TEST(Golden, CrowdScenario) {
     ASSERT_FALSE(record.empty()) << "mobb crowd --scenario failed";
     State s = viewer::load_crowd_state(record, 640.0f / 480.0f);
     s.scene.layers.skeletons = false;  // no mocap needed
-    const auto& r = s.crowd->record;
+    const auto& r = s.crowd->record();
     ASSERT_EQ(r.world.obstacles.size(), 2u);
     ASSERT_TRUE(r.tracks[0].goals.size() == 1 && r.tracks[1].goals.size() == 1);
     s.scene.cursor = 0.5 * double(r.frames) * r.dt;
@@ -482,7 +485,7 @@ TEST(Golden, CrowdGoalSequencesAndLeaving) {
     ASSERT_FALSE(waypoints.empty()) << "mobb crowd --scenario failed";
     State s = viewer::load_crowd_state(waypoints, 640.0f / 480.0f);
     s.scene.layers.skeletons = false;  // no mocap needed
-    for (const auto& t : s.crowd->record.tracks) ASSERT_EQ(t.goals.size(), 3u);
+    for (const auto& t : s.crowd->record().tracks) ASSERT_EQ(t.goals.size(), 3u);
     s.scene.window = 0;  // all of the run
     s.scene.cursor = 0;
     s.camera.top();
@@ -493,7 +496,7 @@ TEST(Golden, CrowdGoalSequencesAndLeaving) {
     ASSERT_FALSE(exit.empty()) << "mobb crowd --scenario failed";
     State e = viewer::load_crowd_state(exit, 640.0f / 480.0f);
     e.scene.layers.skeletons = false;
-    const auto& r = e.crowd->record;
+    const auto& r = e.crowd->record();
     double last = 0;
     for (const auto& t : r.tracks) {
         ASSERT_TRUE(t.left_frame);
@@ -517,7 +520,7 @@ TEST(Golden, CrowdEventPlots) {
     s.scene.layers.skeletons = false;  // no mocap needed
     add_contact(s);
     ASSERT_FALSE(s.crowd->marks.empty());
-    s.scene.cursor = 0.5 * double(s.crowd->record.frames) * s.crowd->record.dt;
+    s.scene.cursor = 0.5 * double(s.crowd->record().frames) * s.crowd->record().dt;
     std::vector<std::string> cut;
     check_image("crowd_plots", viewer::render_headless(s, {1280, 720, true, false, nullptr, &cut}));
     for (const std::string& line : cut) ADD_FAILURE() << line;

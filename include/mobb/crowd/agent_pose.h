@@ -14,6 +14,7 @@
 
 #include "mobb/crowd/motion_graph.h"
 #include "mobb/crowd/record.h"
+#include "mobb/crowd/record_file.h"
 
 namespace mobb::crowd {
 
@@ -101,6 +102,10 @@ public:
                PoseBlend blend = {});
     const Rig& rig() const { return rig_; }
     const Record& record() const { return record_; }
+    /// The agents' disks from `window` (frames there; kept by the caller, null: the record's tracks) for
+    /// a record read in parts (record_reader.h), whose tracks hold none: the bound below uses the disks
+    /// of the frames ahead, so a pose near the window's end is bound by the frames the window has.
+    void use_samples(const SampleWindow* window) { window_ = window; }
     PoseSources& sources() const { return *sources_; }
     const PoseBlend& blend() const { return blend_; }
     /// Joint positions of agent `agent` at global frame k: world ground coordinates (x, y, h), metres, h
@@ -120,9 +125,10 @@ public:
 private:
     /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor).
     bool raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
-    void keep_inside(const AgentTrack& track, std::int64_t k, std::vector<glm::dvec3>& out) const;
+    void keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const;
 
     const Record& record_;
+    const SampleWindow* window_ = nullptr;
     std::shared_ptr<PoseSources> sources_;
     Rig rig_;
     PoseBlend blend_;

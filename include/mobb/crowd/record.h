@@ -197,6 +197,11 @@ std::vector<Contact> frame_contacts(const Record& record);
 /// its escape clips; for another agent than the choice point's, one of the escape clips of its reroute);
 /// nothing for held ground and solids. Throws std::out_of_range for a bad query.
 std::optional<FramedClip> query_clip(const Record& record, const CandidateQuery& query);
+/// The same for a record whose choice points are read one at a time (record_reader.h): `named` is the
+/// choice point the query names (query.choice), needed for its escape clips (piece > 0) only; the
+/// record's tracks give the clips taken. Throws std::out_of_range for a bad query or a needed `named`
+/// that is null.
+std::optional<FramedClip> query_clip(const Record& record, const CandidateQuery& query, const ChoicePoint* named);
 
 /// Held ground: the disk x, y, r (metres) an agent keeps from global frame `frame` on.
 struct HeldGround {

@@ -74,23 +74,27 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-/// Frames first .. last - 1 of a record: every agent's disk then, and what the file says of the run.
+/// Frames first .. last - 1 of a record, of agents agent_first .. agent_last - 1: their disks then, and
+/// what the file says of the run.
 struct SampleWindow {
     double dt = 0;            ///< seconds per frame
     std::int64_t frames = 0;  ///< the run's frames
     std::size_t agents = 0;   ///< the run's agents
     std::int64_t first = 0, last = 0;
-    /// (last - first) x agents disks [t, x, y, r] (seconds, metres): agent a at frame f is
-    /// samples[(f - first) * agents + a]; NaN from the frame it left the run on.
+    std::size_t agent_first = 0, agent_last = 0;
+    /// (last - first) x width() disks [t, x, y, r] (seconds, metres): agent a at frame f is
+    /// samples[(f - first) * width() + a - agent_first]; NaN from the frame it left the run on.
     std::vector<std::array<double, 4>> samples;
     std::string summary_json, metrics_json;
     std::string note;  ///< as RecordFile::note (frames: those the incomplete file holds)
+
+    std::size_t width() const { return agent_last - agent_first; }
 };
 
-/// Reads frames first .. last - 1 (clamped to the run) of a record file: of an HDF5 file only those
-/// frames' blocks and the header (a long run's window in the time it takes to read the window); of a JSON
-/// file, the whole record (checked as read_record_file does). Throws std::runtime_error as
-/// read_record_file does.
+/// Reads frames first .. last - 1 (clamped to the run) of every agent of a record file: of an HDF5 file
+/// only the header, the clips and those frames' blocks (a long run's window in the time it takes to
+/// read the window; record_reader.h reads other parts); of a JSON file, the whole record (checked as
+/// read_record_file does). Throws std::runtime_error as read_record_file does.
 SampleWindow read_sample_window(const std::string& file, std::int64_t first, std::int64_t last);
 
 }  // namespace mobb::crowd
