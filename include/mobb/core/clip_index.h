@@ -3,6 +3,7 @@
 // queried under any placement.
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "mobb/core/obb.h"
@@ -41,27 +42,35 @@ public:
     /// Root MOBB (paper 3.1, chord axis, conservative margin): the 1-level test of both queries.
     const Obb2& root_box() const { return root_; }
     /// Sample columns as float, padded with zeros to size() + 16 so blocks of 16 loads stay in bounds.
-    const float* xs() const { return x_.data(); }
-    const float* ys() const { return y_.data(); }
-    const float* rs() const { return r_.data(); }
+    const float* xs() const { return samples_.x; }
+    const float* ys() const { return samples_.y; }
+    const float* rs() const { return samples_.r; }
     int levels() const { return int(levels_.size()); }
-    /// Level k's circles, 0 <= k < levels().
-    Circles level(int k) const {
-        const Columns& c = levels_[std::size_t(k)];
-        return {c.x.data(), c.y.data(), c.r.data(), c.x.size() - 8};
-    }
+    /// Level k's circles, 0 <= k < levels(); 8 NaN entries follow the last.
+    Circles level(int k) const { return levels_[std::size_t(k)]; }
+    /// Sliding windows for time-aligned tests against another clip's aligned blocks of s = 1 << shift
+    /// samples (shift 0: single samples; kLeafShift; kLeafShift + 1). Window g of phase p,
+    /// 0 <= p < s, holds samples [s g + p - 1, s g + p + s + 1) clipped to the path: for a block
+    /// [s k, s k + s) of the other clip whose time-aligned partners lie on diagonals j - i in
+    /// [m - 1, m + 1], m = s G + p, they all lie in window k + G. Entry g + 1 holds window g, for
+    /// g = -1 .. size() / s + 1; windows without samples are NaN, and so are the padding entries
+    /// that follow (16 for shift 0, so blocks of 16 loads stay in bounds; 4 otherwise).
+    Circles windows(int shift, int phase) const { return windows_[std::size_t(window_offset(shift) + phase)]; }
     /// Largest |x| + |y| of any sample (metres) and largest radius: scale for rounding margins.
     double max_abs() const { return max_abs_; }
     double max_radius() const { return max_r_; }
 
 private:
-    struct Columns {
-        std::vector<float> x, y, r;
-    };
+    // Index of windows(shift, 0) in windows_: shift 0 has one phase, the leaf's 16, the next 32.
+    static int window_offset(int shift) { return shift == 0 ? 0 : shift == kLeafShift ? 1 : 1 + kLeaf; }
     Path path_;
     Obb2 root_;
-    std::vector<float> x_, y_, r_;
-    std::vector<Columns> levels_;
+    // Every float column in one allocation, never changed after build(): copies share it, so the
+    // columns' pointers below stay valid in every copy.
+    std::shared_ptr<const std::vector<float>> floats_;
+    Circles samples_;
+    std::vector<Circles> levels_;
+    std::vector<Circles> windows_;
     double max_abs_ = 0, max_r_ = 0;
 };
 
