@@ -113,6 +113,8 @@ ClipIndex ClipIndex::build(Path path) {
     for (const Columns& l : windows) c.windows_.push_back(w.circles(*floats, l));
     c.floats_ = floats;
     c.root_ = fit_obb2(path, 0, n);
+    c.size_ = n;
+    c.reach_ = c.max_abs_ + c.max_r_;
     c.path_ = std::move(path);
     return c;
 }

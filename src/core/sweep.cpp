@@ -122,43 +122,34 @@ bool aligned_query(SweepQuery& q) {
     return sweep(q);
 }
 
-// Clips with different spacings or far apart in time: the whole time ranges first.
-bool unaligned_query(SweepQuery& q) {
+// The plan of both overloads: the time window; then, when the clips are aligned in time, the frames
+// and aligned_query(); else the whole time ranges, the root test and the exact two-pointer walk.
+bool query(SweepQuery& q) {
+    if (q.hit) *q.hit = {};
+    if (q.aligned()) {
+        if (q.ilo >= q.ihi) return false;
+        q.set_relative();
+        return aligned_query(q);
+    }
     const double dta = q.a.path().dt, dtb = q.b.path().dt;
     if (!times_overlap(sample_time(q.pa, dta, 0), sample_time(q.pa, dta, std::int64_t(q.a.size())),
                        sample_time(q.pb, dtb, 0), sample_time(q.pb, dtb, std::int64_t(q.b.size()))))
         return false;
-    q.exact_frames();
-    if (!q.root_boxes_overlap()) return false;
-    return q.general_scan();
+    q.set_relative();
+    return q.root_boxes_overlap() && q.general_scan();
 }
 
 }  // namespace
 
 bool collide_sweep(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb, SamplePair* hit) {
-    if (hit) *hit = {};
-    SweepQuery q(a, pa, b, pb, hit);
-    if (!q.aligned()) return unaligned_query(q);
-    if (q.ilo >= q.ihi) return false;
-    q.approximate_frames();
-    return aligned_query(q);
+    SweepQuery q(a, pa, nullptr, b, pb, nullptr, hit);
+    return query(q);
 }
 
 bool collide_sweep(const ClipIndex& a, const Placement& pa, const Rigid2& ta, const ClipIndex& b, const Placement& pb,
                    const Rigid2& tb, SamplePair* hit) {
-    if (hit) *hit = {};
-    SweepQuery q(a, pa, b, pb, hit);
-    if (!q.aligned()) {
-        const double dta = a.path().dt, dtb = b.path().dt;
-        if (!times_overlap(sample_time(pa, dta, 0), sample_time(pa, dta, std::int64_t(a.size())),
-                           sample_time(pb, dtb, 0), sample_time(pb, dtb, std::int64_t(b.size()))))
-            return false;
-        q.given_frames(ta, tb);
-        return q.root_boxes_overlap() && q.general_scan();
-    }
-    if (q.ilo >= q.ihi) return false;
-    q.given_frames(ta, tb);
-    return aligned_query(q);
+    SweepQuery q(a, pa, &ta, b, pb, &tb, hit);
+    return query(q);
 }
 
 }  // namespace mobb

@@ -26,11 +26,14 @@ public:
     // Time-aligned diagonals, when both clips share one sample spacing (aligned()): pair (i, i + d)
     // can overlap in time only for d in [dmin, dmax] (at most three), centre = floor of their mean;
     // A's samples with a partner on one of them are [ilo, ihi).
-    std::int64_t dmin = 0, dmax = -1, center = 0, ilo = 0, ihi = 0;
-    float c = 1, s = 0, tx = 0, ty = 0, margin = 0;  // B's frame in A's, float filters' margin (metres)
+    std::int64_t dmin, dmax, center, ilo, ihi;
+    float c, s, tx, ty, margin;  // B's frame in A's, float filters' margin (metres): set_float_frame()
 
-    SweepQuery(const ClipIndex& ia, const Placement& qa, const ClipIndex& ib, const Placement& qb, SamplePair* h)
-        : a(ia), b(ib), pa(qa), pb(qb), hit(h) {}
+    /// ra and rb: the placements' rotations (Rigid2::of(pa), Rigid2::of(pb)) when the caller has
+    /// them, else null (computed only if a candidate pair needs the exact test).
+    SweepQuery(const ClipIndex& ia, const Placement& qa, const Rigid2* ra, const ClipIndex& ib, const Placement& qb,
+               const Rigid2* rb, SamplePair* h)
+        : a(ia), b(ib), pa(qa), pb(qb), hit(h), given_a_(ra), given_b_(rb) {}
 
     /// Both clips share one sample spacing and the offsets are small enough to reason about
     /// arithmetically: fills the diagonals. Else false (then the exact two-pointer walk decides).
@@ -53,25 +56,23 @@ public:
         return true;
     }
 
-    /// The placements' rotations, approximately (approx_cos_sin2(), its error bounded by rel_error_
-    /// in the root test's and the filters' margins) or exactly when an angle is out of its range.
-    void approximate_frames() {
-        if (!approx_cos_sin2(pa.theta, pb.theta, ta.c, ta.s, tb.c, tb.s)) return exact_frames();
-        ta.tx = pa.x, ta.ty = pa.y, tb.tx = pb.x, tb.ty = pb.y;
-        exact_ = false;
-        // Each of ta.c, ta.s, tb.c, tb.s is off by at most e = kApproxCosSinError: rel.c and rel.s
-        // by 4e (plus rounding), the shift by 2e (|dx| + |dy|); a point p of B (|p.x| + |p.y| <= the
-        // box's or the samples' reach, max_abs + max_radius + the box's fit margin) by
+    /// B's frame in A's for the root test and the filters: from the given rotations, else from
+    /// approx_cos_sin2() with its error bounded as a length in rel_error_ (exact rotations when an
+    /// angle is beyond its range).
+    void set_relative() {
+        if (given_a_) return set_relative(given_a_->c, given_a_->s, given_b_->c, given_b_->s, 0.0);
+        double ca = 0, sa = 0, cb = 0, sb = 0;
+        if (!approx_cos_sin2(pa.theta, pb.theta, ca, sa, cb, sb)) {
+            const Rigid2 ra = Rigid2::of(pa), rb = Rigid2::of(pb);
+            return set_relative(ra.c, ra.s, rb.c, rb.s, 0.0);
+        }
+        // Each of ca, sa, cb, sb is off by at most e = kApproxCosSinError: rel's cos and sin by 4e
+        // (plus rounding), the shift by 2e (|dx| + |dy|); a point p of B (|p.x| + |p.y| <= the box's
+        // or the samples' reach, max_abs + max_radius + the box's fit margin) by
         // 8e |p| + 2e (|dx| + |dy|). Taken 10x wider.
-        const double reach = 2 * (b.max_abs() + b.max_radius()) + 1;
-        rel_error_ = 10 * kApproxCosSinError * (8 * reach + 2 * (std::abs(pb.x - pa.x) + std::abs(pb.y - pa.y)));
-        set_relative();
-    }
-    /// The rotations as the exact test uses them (Rigid2::of).
-    void exact_frames() { given_frames(Rigid2::of(pa), Rigid2::of(pb)); }
-    void given_frames(const Rigid2& ra, const Rigid2& rb) {
-        ta = ra, tb = rb, exact_ = true, rel_error_ = 0;
-        set_relative();
+        const double reach = 2 * b.reach() + 1;
+        set_relative(ca, sa, cb, sb,
+                     10 * kApproxCosSinError * (8 * reach + 2 * (std::abs(pb.x - pa.x) + std::abs(pb.y - pa.y))));
     }
 
     /// The root boxes' separating-axis test (as overlap(Obb2, Obb2)) written out in A's frame: B's
@@ -95,8 +96,7 @@ public:
     /// coordinates; the approximate rotations' error is rel_error_. The margin bounds how far a
     /// float distance test can be from the exact one, either way.
     void set_float_frame() {
-        const double scale =
-            a.max_abs() + b.max_abs() + std::abs(sx_) + std::abs(sy_) + a.max_radius() + b.max_radius();
+        const double scale = a.reach() + b.reach() + std::abs(sx_) + std::abs(sy_);
         const double world = std::abs(pa.x) + std::abs(pa.y) + std::abs(pb.x) + std::abs(pb.y);
         margin = float(scale * 0x1p-18 + (world + scale) * 0x1p-40 + rel_error_);
         c = float(rc_), s = float(rs_), tx = float(sx_), ty = float(sy_);
@@ -126,39 +126,41 @@ public:
         const float d2 = distance2(a.xs()[i], a.ys()[i], b.xs()[j], b.ys()[j]);
         const float outer = rr + margin, inner = rr - margin;
         if (!(d2 < outer * outer)) return false;
-        if (!(inner > 0 && d2 < inner * inner)) {
-            if (!exact_) ta = Rigid2::of(pa), tb = Rigid2::of(pb), exact_ = true;
-            if (!samples_overlap(ta, a.path().samples[std::size_t(i)], tb, b.path().samples[std::size_t(j)]))
-                return false;
-        }
+        if (!(inner > 0 && d2 < inner * inner) &&
+            !samples_overlap(frame_a(), a.path().samples[std::size_t(i)], frame_b(), b.path().samples[std::size_t(j)]))
+            return false;
         if (hit) *hit = {i, j};
         return true;
     }
 
     /// Different sample spacings, or offsets beyond aligned()'s arithmetic: the exact two-pointer walk
     /// shared with the trees' leaves.
-    bool general_scan() {
-        if (!exact_) ta = Rigid2::of(pa), tb = Rigid2::of(pb), exact_ = true;
+    bool general_scan() const {
         std::uint64_t tested = 0;
         SamplePair h;
-        const bool found = leaf_test(a.path(), pa, ta, 0, std::int64_t(a.size()), b.path(), pb, tb, 0,
+        const bool found = leaf_test(a.path(), pa, frame_a(), 0, std::int64_t(a.size()), b.path(), pb, frame_b(), 0,
                                      std::int64_t(b.size()), tested, h);
         if (found && hit) *hit = h;
         return found;
     }
 
 private:
-    mutable Rigid2 ta, tb;                      // placements' frames: exact when exact_, else approximate
-    mutable bool exact_ = true;                 // ta and tb hold Rigid2::of(pa) and Rigid2::of(pb)
-    double rel_error_ = 0;                      // bound on rel's error from approximate rotations, as a length (metres)
-    double rc_ = 1, rs_ = 0, sx_ = 0, sy_ = 0;  // B's frame in A's: R_a^T R_b and R_a^T (t_b - t_a)
+    const Rigid2* given_a_;
+    const Rigid2* given_b_;
+    double rc_, rs_, sx_, sy_;  // B's frame in A's: R_a^T R_b and R_a^T (t_b - t_a)
+    double rel_error_;          // bound on the error of rel from approximate rotations, as a length (metres)
 
-    void set_relative() {
-        rc_ = ta.c * tb.c + ta.s * tb.s;
-        rs_ = ta.c * tb.s - ta.s * tb.c;
-        const double dx = tb.tx - ta.tx, dy = tb.ty - ta.ty;
-        sx_ = ta.c * dx + ta.s * dy, sy_ = -ta.s * dx + ta.c * dy;
+    void set_relative(double ca, double sa, double cb, double sb, double error) {
+        rc_ = ca * cb + sa * sb;
+        rs_ = ca * sb - sa * cb;
+        const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+        sx_ = ca * dx + sa * dy, sy_ = -sa * dx + ca * dy;
+        rel_error_ = error;
     }
+    // The placements' frames as the exact test uses them (a candidate within the margin of touching
+    // is rare: they are not kept).
+    Rigid2 frame_a() const { return given_a_ ? *given_a_ : Rigid2::of(pa); }
+    Rigid2 frame_b() const { return given_b_ ? *given_b_ : Rigid2::of(pb); }
 
     // Squared distance between A's point (x, y) and B's (bx, by) moved into A's frame, in float.
     float distance2(float x, float y, float bx, float by) const {

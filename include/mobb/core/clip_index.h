@@ -38,7 +38,7 @@ public:
     static ClipIndex build(Path path);
 
     const Path& path() const { return path_; }
-    std::size_t size() const { return path_.size(); }
+    std::size_t size() const { return size_; }
     /// Root MOBB (paper 3.1, chord axis, conservative margin): the 1-level test of both queries.
     const Obb2& root_box() const { return root_; }
     /// Sample columns as float, padded with zeros to size() + 16 so blocks of 16 loads stay in bounds.
@@ -59,6 +59,8 @@ public:
     /// Largest |x| + |y| of any sample (metres) and largest radius: scale for rounding margins.
     double max_abs() const { return max_abs_; }
     double max_radius() const { return max_r_; }
+    /// max_abs() + max_radius().
+    double reach() const { return reach_; }
 
 private:
     // Index of windows(shift, 0) in windows_: shift 0 has one phase, the leaf's 16, the next 32.
@@ -71,7 +73,8 @@ private:
     Circles samples_;
     std::vector<Circles> levels_;
     std::vector<Circles> windows_;
-    double max_abs_ = 0, max_r_ = 0;
+    std::size_t size_ = 0;
+    double max_abs_ = 0, max_r_ = 0, reach_ = 0;
 };
 
 }  // namespace mobb
