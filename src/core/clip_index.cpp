@@ -88,7 +88,8 @@ ClipIndex ClipIndex::build(Path path) {
     const Columns samples = w.add(n, 16, 0.0f);
     for (std::size_t i = 0; i < n; ++i)
         w.set(samples, i, float(path.samples[i].x), float(path.samples[i].y), float(path.samples[i].r));
-    std::vector<Columns> levels, windows;
+    std::vector<Columns> levels;
+    Columns windows[kWindowShifts];  // phase 0 of each shift; the other phases follow it
     for (std::size_t block = std::size_t(kLeaf);; block *= 2) {
         const std::size_t count = (n + block - 1) / block;
         levels.push_back(w.add(count, 8, NAN));
@@ -96,21 +97,24 @@ ClipIndex ClipIndex::build(Path path) {
             w.bound(levels.back(), k, path, std::int64_t(k * block), std::int64_t((k + 1) * block));
         if (block >= n) break;
     }
-    for (int shift : {0, kLeafShift, kLeafShift + 1}) {
+    for (int k = 0; k < kWindowShifts; ++k) {
+        const int shift = k == 0 ? 0 : kLeafShift + k - 1;
         const auto s = std::int64_t(1) << shift;
         const std::size_t count = std::size_t(std::int64_t(n) / s + 3);
         for (std::int64_t p = 0; p < s; ++p) {
-            windows.push_back(w.add(count, shift == 0 ? 16 : 4, NAN));
+            const Columns phase = w.add(count, shift == 0 ? 16 : 4, NAN);
+            if (p == 0) windows[k] = phase;
             for (std::size_t e = 0; e < count; ++e) {
                 const std::int64_t first = (std::int64_t(e) - 1) * s + p - 1;
-                w.bound(windows.back(), e, path, first, first + s + 2);
+                w.bound(phase, e, path, first, first + s + 2);
             }
         }
     }
     const auto floats = std::make_shared<const std::vector<float>>(std::move(w.floats));
     c.samples_ = w.circles(*floats, samples);
     for (const Columns& l : levels) c.levels_.push_back(w.circles(*floats, l));
-    for (const Columns& l : windows) c.windows_.push_back(w.circles(*floats, l));
+    for (int k = 0; k < kWindowShifts; ++k)
+        c.windows_[k] = {floats->data() + windows[k].offset, windows[k].stride, windows[k].count};
     c.floats_ = floats;
     c.root_ = fit_obb2(path, 0, n);
     c.size_ = n;

@@ -55,7 +55,11 @@ public:
     /// [m - 1, m + 1], m = s G + p, they all lie in window k + G. Entry g + 1 holds window g, for
     /// g = -1 .. size() / s + 1; windows without samples are NaN, and so are the padding entries
     /// that follow (16 for shift 0, so blocks of 16 loads stay in bounds; 4 otherwise).
-    Circles windows(int shift, int phase) const { return windows_[std::size_t(window_offset(shift) + phase)]; }
+    Circles windows(int shift, int phase) const {
+        const Windows& w = windows_[shift == 0 ? 0 : shift - kLeafShift + 1];
+        const float* x = w.x + std::size_t(phase) * 3 * w.stride;
+        return {x, x + w.stride, x + 2 * w.stride, w.count};
+    }
     /// Largest |x| + |y| of any sample (metres) and largest radius: scale for rounding margins.
     double max_abs() const { return max_abs_; }
     double max_radius() const { return max_r_; }
@@ -63,8 +67,12 @@ public:
     double reach() const { return reach_; }
 
 private:
-    // Index of windows(shift, 0) in windows_: shift 0 has one phase, the leaf's 16, the next 32.
-    static int window_offset(int shift) { return shift == 0 ? 0 : shift == kLeafShift ? 1 : 1 + kLeaf; }
+    // The windows of one shift: phase p's columns x, y, r (each `stride` floats long) at
+    // x + 3 p stride.
+    struct Windows {
+        const float* x = nullptr;
+        std::size_t stride = 0, count = 0;
+    };
     Path path_;
     Obb2 root_;
     // Every float column in one allocation, never changed after build(): copies share it, so the
@@ -72,7 +80,8 @@ private:
     std::shared_ptr<const std::vector<float>> floats_;
     Circles samples_;
     std::vector<Circles> levels_;
-    std::vector<Circles> windows_;
+    static constexpr int kWindowShifts = 3;  // 0, kLeafShift, kLeafShift + 1
+    Windows windows_[kWindowShifts];
     std::size_t size_ = 0;
     double max_abs_ = 0, max_r_ = 0, reach_ = 0;
 };
