@@ -22,6 +22,7 @@ namespace {
 
 struct CrowdArgs {
     std::optional<std::string> graph, scenario, record;
+    std::optional<bool> record_candidates;  // none: as the record's kind has it (keeps_candidates)
     std::optional<int> agents;
     std::optional<std::pair<double, double>> world;
     std::optional<double> seconds;
@@ -60,7 +61,9 @@ crowd::CrowdOptions crowd_options(const CrowdArgs& a, crowd::Scenario& scenario)
         if (o.agents < 1) throw std::invalid_argument("agents: expected at least 1");
         if (!(o.seconds > 0)) throw std::invalid_argument("seconds: expected a positive number");
     }
-    o.record_queries = bool(a.record);  // as `mobb crowd`: only a written record shows them
+    // As `mobb crowd`: only a written record shows them, an HDF5 one only when asked.
+    if (a.record_candidates && !a.record) throw std::invalid_argument("crowd: record_candidates goes with record");
+    o.record_queries = a.record.has_value() && a.record_candidates.value_or(crowd::keeps_candidates(*a.record));
     o.seed = a.seed;
     o.cell = a.cell;
     if (a.threads < 0) throw std::invalid_argument("threads: expected 0 (every core) or more");
@@ -184,7 +187,7 @@ void add_crowd(py::module_& m) {
            const std::optional<std::pair<double, double>>& world, const std::optional<double>& seconds,
            std::uint64_t seed, const std::optional<std::string>& select, double cell, int threads,
            const std::optional<std::string>& tree, const std::optional<std::string>& scenario,
-           const std::optional<std::string>& record) {
+           const std::optional<std::string>& record, const std::optional<bool>& record_candidates) {
             CrowdArgs a;
             a.graph = graph;
             a.agents = agents;
@@ -197,12 +200,13 @@ void add_crowd(py::module_& m) {
             a.tree = tree;
             a.scenario = scenario;
             a.record = record;
+            a.record_candidates = record_candidates;
             return run(a);
         },
         py::arg("graph") = py::none(), py::kw_only(), py::arg("agents") = py::none(), py::arg("world") = py::none(),
         py::arg("seconds") = py::none(), py::arg("seed") = 1, py::arg("select") = py::none(), py::arg("cell") = 4.0,
         py::arg("threads") = 0, py::arg("tree") = py::none(), py::arg("scenario") = py::none(),
-        py::arg("record") = py::none(),
+        py::arg("record") = py::none(), py::arg("record_candidates") = py::none(),
         R"doc(Simulates a graph-driven crowd with collision-free clip choice (paper section 5), as `mobb crowd`.
 
 graph     motion graph JSON (None: assets/graphs/cmu_locomotion.json).
@@ -212,7 +216,8 @@ seed      random seed; cell broad-phase grid cell (metres); threads (0: every co
           same for any count; the GIL is released while it runs);
 tree      None: the circle sweep; else a tree type ("mobb", "umobb", ...) whose counters fill the summary;
 scenario  a scenario JSON (it sets agents, world, select and seconds); record: write the record there
-          (JSON, or HDF5 for .h5; mobb.read_record reads it).
+          (JSON, or HDF5 for .h5; mobb.read_record reads it); record_candidates: keep each choice point's
+          candidates and their queries in it (None: in JSON yes, in HDF5 no; docs/formats.md).
 Returns a dict: summary (the record's counts, plus threads, seconds and cd_seconds of wall time),
 metrics (as `mobb crowd` prints them), tracks ((agents, frames, 4) float64 array of every agent's disk
 (t, x, y, r) per frame, seconds and metres; NaN from the frame an agent left the run on), clips (per

@@ -34,6 +34,24 @@ def test_crowd_equals_mobb_crowd(tmp_path, mobb_exe):
     assert summary["queries"] > 0 and summary["choice_points"] > 0
 
 
+def test_crowd_records_candidates_as_mobb_crowd(tmp_path):
+    # A JSON record keeps the choice points' candidates, an HDF5 one only when asked; the choice points
+    # and their counts are there either way.
+    run = dict(agents=8, world=(10, 10), seconds=4, seed=2, threads=1)
+    mobb.crowd(GRAPH, record=str(tmp_path / "r.json"), **run)
+    choices = json.loads((tmp_path / "r.json").read_text())["choices"]
+    assert sum(len(c["candidates"]) for c in choices) > 0
+    h5py = pytest.importorskip("h5py")
+    for asked, kept in ((None, False), (True, True)):
+        file = tmp_path / ("r_%s.h5" % asked)
+        mobb.crowd(GRAPH, record=str(file), record_candidates=asked, **run)
+        with h5py.File(file, "r") as f:
+            assert len(f["choices/agent"]) == len(choices)
+            assert (len(f["candidates/choice"]) > 0) == kept and (len(f["queries/hit"]) > 0) == kept
+    with pytest.raises(ValueError, match="record_candidates goes with record"):
+        mobb.crowd(GRAPH, record_candidates=True, **run)
+
+
 def test_crowd_scenario_refuses_its_own_options():
     folder = os.path.join(SOURCE_DIR, "assets", "scenarios")
     scenario = os.path.join(folder, sorted(f for f in os.listdir(folder) if f.endswith(".json"))[0])

@@ -120,6 +120,10 @@ void add_crowd(CLI::App& app, int& exit_code) {
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
     cmd->add_option("--record", *record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
+    auto candidates = std::make_shared<bool>(false);
+    cmd->add_flag("--record-candidates,!--no-record-candidates", *candidates,
+                  "Keep each choice point's candidates and their queries in the record (default: in a JSON record, "
+                  "not in HDF5, where they would be most of the file's tables and slow the run)");
     cmd->add_option("--scenario", *scenario,
                     "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
     // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
@@ -130,13 +134,12 @@ void add_crowd(CLI::App& app, int& exit_code) {
     };
     rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
              "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
+    rule_off("--no-follow", &crowd::CrowdTuning::follow,
+             "Goal agents' look-ahead treats the reservations of agents going their way as walls, beyond the "
+             "first clip too");
     rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
              "An agent that waited never pushes others' reservations aside");
     rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
-    cmd->add_flag_callback(
-        "--make-way", [off] { off->make_way = true; },
-        "A goal agent stuck for 2 s asks agents it outranks, stuck and heading against it, to keep clear "
-        "of its way (off by default)");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
     auto tune = std::make_shared<std::vector<std::string>>();
@@ -155,6 +158,11 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 exit_code = kUsage;
                 return;
             }
+        if (record->empty() && cmd->count("--record-candidates")) {
+            std::cerr << "crowd: --record-candidates and --no-record-candidates go with --record\n";
+            exit_code = kUsage;
+            return;
+        }
         for (const std::string& t : *tune) {
             try {
                 crowd::set_tuning(*off, t);
@@ -177,7 +185,9 @@ void add_crowd(CLI::App& app, int& exit_code) {
                 opt.cell = o->cell;
             }
             opt.tuning = *off;
-            opt.record_queries = !record->empty();  // only a written record shows them
+            // Only a written record shows them, and an HDF5 one only when asked.
+            opt.record_queries = !record->empty() &&
+                                 (cmd->count("--record-candidates") ? *candidates : crowd::keeps_candidates(*record));
             const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
             const crowd::MotionGraph g = crowd::load_graph(file);
             // The fastest exact query unless a tree is asked for (its counters then fill the summary).

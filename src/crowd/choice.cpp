@@ -247,8 +247,9 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, {}, {}};
+    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
+    if (s.options.tuning.follow) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
@@ -260,14 +261,13 @@ void Choice::order(const CrowdState& s) {
         query_pieces(s, around, agent_, near_);
         for (int id : near_) {
             const Piece& p = s.pieces[std::size_t(id)];
-            if (p.kind == Piece::Held) site.neighbours.push_back({p.hold.x, p.hold.y});
+            const std::optional<double> facing = leader_facing(s, p.agent);
+            if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing});
             if (p.kind == Piece::Clip)
                 site.neighbours.push_back(
-                    {0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)});
+                    {{0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)}, facing});
         }
-        ways_to_make(s, site);
     }
-    ask_way(s, site);
     next_ = drawn_;
     s.policy.order(site, next_);
     searched_ = false;
@@ -532,8 +532,9 @@ void Choice::evaluate(const CrowdState& s) {
 }
 
 // A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live
-// piece of the others but the `excluded` ids. Its queries count for the choice point, not for a candidate.
-bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded) {
+// piece of the others but the `excluded` ids (and, `following`, those of agents expected to walk on:
+// follow.cpp). Its queries count for the choice point, not for a candidate.
+bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded, bool following) {
     solids_near(s, solid_box(s, piece));
     for (int i : near_) {
         count_query({});
@@ -544,6 +545,7 @@ bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vect
     query_pieces(s, box, piece.agent, near_);
     for (int id : near_) {
         if (excluded && std::find(excluded->begin(), excluded->end(), id) != excluded->end()) continue;
+        if (following && walks_on(s, s.pieces[std::size_t(id)])) continue;
         QueryStats st;
         const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
         count_query(st);

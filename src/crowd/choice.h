@@ -107,15 +107,8 @@ struct Agent {
     std::vector<int> reserved;               ///< broad-phase ids of the plan's pieces
     bool arrived = false;                    ///< reached its goal: stays for good
     int stalled = 0;                         ///< choice points in a row it followed its escape or stayed in place
-    std::int64_t moved_until = 0;     ///< where its last clip that moves (EscapeTable::moves) ended, or its start
-    LearnedCost learned;              ///< what its look-aheads learned of the time to go (look_ahead.h)
-    std::int64_t heading_since = 0;   ///< the frame it set off for the goal it heads for (its priority)
-    double best_to_go = 1e300;        ///< the least time to go (Policy::to_go) it reached for that goal
-    std::int64_t progress_frame = 0;  ///< when it last came make_way_progress nearer
-    /// The way it asked the others to make (make_way.cpp): points down its path, asked until way_until
-    /// (a frame).
-    std::vector<std::array<double, 2>> way;
-    std::int64_t way_until = -1;
+    std::int64_t moved_until = 0;  ///< where its last clip that moves (EscapeTable::moves) ended, or its start
+    LearnedCost learned;           ///< what its look-aheads learned of the time to go (look_ahead.h)
 
     /// The goal it heads for now; nothing for an agent that wanders.
     std::optional<std::array<double, 2>> goal() const {
@@ -198,10 +191,6 @@ public:
     const std::vector<SearchStep>& intended() const { return intended_; }
     /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
     const std::vector<std::array<double, 3>>& learned() const { return learned_; }
-    /// The way the agent asks the others to make (CrowdTuning::make_way; empty when it asks none).
-    const std::vector<std::array<double, 2>>& way() const { return way_; }
-    /// The time to go from where the choice point stands (Policy::to_go, alone), for the agent's progress.
-    double to_go() const { return to_go_; }
 
 private:
     /// What a piece's queries do at a hit: stop; go on and count them all (fallback); or, with the right
@@ -211,9 +200,8 @@ private:
 
     void order(const CrowdState& s);
     void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
-    void ways_to_make(const CrowdState& s, ChoiceSite& site);
-    void ask_way(const CrowdState& s, const ChoiceSite& site);
-    bool piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded);
+    bool piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded, bool following = false);
+    bool walks_on(const CrowdState& s, const Piece& other) const;
     void note_query(const SpaceTimeBox& box);
     void solids_near(const CrowdState& s, const SpaceTimeBox& box);
     bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
@@ -246,20 +234,18 @@ private:
     std::vector<int> scratch_;                    // scratch: next_ before the look-ahead's reorder
     std::vector<std::pair<double, int>> ranked_;  // scratch: (look-ahead score, policy rank)
     LookAhead search_;
-    bool searched_ = false;  // order_ comes from the look-ahead (ranked_ maps it to its nodes)
+    bool searched_ = false;              // order_ comes from the look-ahead (ranked_ maps it to its nodes)
+    std::optional<double> way_heading_;  // following: the direction the agent wants to go (Policy::heading)
     std::vector<SearchStep> intended_;
     std::vector<std::array<double, 3>> learned_;
-    std::vector<std::array<double, 2>> way_;  // make way: the way asked of the others
-    double to_go_ = 0;                        // make way: Policy::to_go at the base, neighbours aside
-    std::vector<int> asking_;                 // scratch: agents whose ways were gathered
-    Placement base_;                          // where and when the next clip starts
-    Rigid2 base_m_;                           // Rigid2::of(base_): every candidate starts there
-    std::vector<PlacedCandidate> placed_;     // order_[0 .. placed_.size()) placed
-    int random_pick_ = 0;                     // random mode: index of the clip taken
-    bool arriving_ = false;                   // at its goal: stops as soon as it can
-    std::vector<int> near_;                   // scratch: broad-phase ids of one query
-    std::vector<int> waiters_;                // scratch: agents waiting near a candidate
-    int deferred_ = -1;                       // the first free moving candidate that passes a waiting agent
+    Placement base_;                       // where and when the next clip starts
+    Rigid2 base_m_;                        // Rigid2::of(base_): every candidate starts there
+    std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
+    int random_pick_ = 0;                  // random mode: index of the clip taken
+    bool arriving_ = false;                // at its goal: stops as soon as it can
+    std::vector<int> near_;                // scratch: broad-phase ids of one query
+    std::vector<int> waiters_;             // scratch: agents waiting near a candidate
+    int deferred_ = -1;                    // the first free moving candidate that passes a waiting agent
     Plan deferred_plan_;
     std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
     SpaceTimeBox queried_all_;                 // their union (bounding box)
@@ -321,6 +307,11 @@ bool build_plan(const CrowdState& s, const BoxedClip& c, const std::vector<int>&
 
 /// The frame that never comes: held ground lasts until then.
 inline constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
+
+/// The way agent `agent` faces at the end of the clip it plays (radians, world frame) when others may
+/// follow it (follow.cpp); none when it stopped for good, ends that clip within follow_goal_reach of the
+/// goal it stops at (it is about to), or has played no clip yet.
+std::optional<double> leader_facing(const CrowdState& s, int agent);
 
 /// Whether two held disks come closer than `gap` metres beyond touching.
 inline bool holds_meet(const Hold& a, const Hold& b, double gap = 0) {

@@ -108,7 +108,6 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     }
     flush();
     apply_waiting();
-    apply_ways();
     unused_.insert(unused_.end(), left_.begin(), left_.end());
     left_.clear();
 }
@@ -212,18 +211,6 @@ void Simulation::note_waiting(int agent, std::int64_t end) {
     wait_changes_.push_back({agent, waits});
 }
 
-// The ways asked this frame (make_way.cpp) reach the agents after the frame's commits, as the waiting do:
-// every choice point of a frame sees the same asks.
-void Simulation::apply_ways() {
-    const auto keep = std::int64_t(std::llround(o_.tuning.make_way_keep / g_.dt()));
-    for (WayAsked& w : way_changes_) {
-        Agent& a = agents_[std::size_t(w.agent)];
-        a.way = std::move(w.way);
-        a.way_until = w.frame + keep;
-    }
-    way_changes_.clear();
-}
-
 void Simulation::apply_waiting() {
     const double reach = o_.tuning.give_way_reach;
     for (const auto& [agent, waits] : wait_changes_) {
@@ -272,19 +259,17 @@ void Simulation::commit(Choice& c) {
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
     if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     note_waiting(c.agent(), end);
-    if (!c.way().empty()) way_changes_.push_back({c.agent(), t.frame, c.way()});
-    if (c.to_go() < a.best_to_go - o_.tuning.make_way_progress) {
-        a.best_to_go = c.to_go();
-        a.progress_frame = t.frame;
-    }
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     record_plan(c, cp);
     count(c, cp);
-    if (o_.sink) return o_.sink->choice(std::size_t(choice), cp);  // streamed: the record keeps none
+    if (o_.sink && o_.record_queries) return o_.sink->choice(std::size_t(choice), cp);  // the record keeps none
     if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
     // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
-    std::vector<Candidate> candidates = std::move(cp.candidates);
-    out_.record.choices.push_back(std::move(cp));
+    std::vector<Candidate> candidates = std::move(cp.candidates);  // leaves cp.candidates empty
+    if (o_.sink)
+        o_.sink->choice(std::size_t(choice), cp);
+    else
+        out_.record.choices.push_back(std::move(cp));
     // Assigning a member of the moved-from slot is defined; Choice::prepare resets the rest.
     cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }
@@ -312,8 +297,6 @@ void Simulation::reach_goals(std::int64_t frame, std::vector<int>& batch) {
             const auto [x, y] = last_position(a);
             if (std::hypot(x - (*goal)[0], y - (*goal)[1]) < o_.goal_radius) {
                 ++a.next_goal;
-                a.heading_since = a.progress_frame = frame;
-                a.best_to_go = 1e300;
                 a.learned.clear();  // times to go to the goal reached
             }
         }

@@ -18,6 +18,14 @@ Id::~Id() {
 void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
 template <>
+hid_t native<std::int8_t>() {
+    return H5T_NATIVE_INT8;
+}
+template <>
+hid_t native<std::int32_t>() {
+    return H5T_NATIVE_INT32;
+}
+template <>
 hid_t native<std::int64_t>() {
     return H5T_NATIVE_INT64;
 }

@@ -1,6 +1,6 @@
 // A thin layer over HDF5's C API for the record files (record_h5_write.cpp, record_h5_read.cpp): ids that
-// close themselves, attributes, and datasets of rows of int64 or float64 written and read in blocks of
-// rows (the dataset's chunks), so an error names the block.
+// close themselves, attributes, and datasets of rows of integers (8 to 64 bits) or float64 written and
+// read in blocks of rows (the dataset's chunks), so an error names the block.
 #pragma once
 #include <hdf5.h>
 
@@ -40,7 +40,7 @@ private:
 void quiet();
 
 template <class T>
-hid_t native();  // std::int64_t, std::uint64_t, double
+hid_t native();  // std::int8_t, std::int32_t, std::int64_t, std::uint64_t, double
 
 // Attributes: text (variable-length UTF-8), numbers and arrays of numbers; writing one replaces it.
 void write_text(hid_t object, const char* name, const std::string& text);
@@ -51,9 +51,9 @@ template <class T>
 std::optional<std::vector<T>> read_numbers(hid_t object, const char* name);
 
 /// A dataset of `rows` rows of `inner` values each (dims [rows, inner...]; [rows] when inner is empty),
-/// chunked by `block` rows and extendible in rows; created with its intermediate groups. Tables are
-/// shuffled and deflated (the integer columns shrink many times); the samples are not (doubles barely
-/// compress, and the writing time counts).
+/// chunked by `block` rows and extendible in rows; created with its intermediate groups. Integer columns
+/// are shuffled and deflated (they shrink many times); doubles - the samples, the tables' real columns -
+/// are not (they barely shrink, and the writing time counts).
 struct Layout {
     std::vector<hsize_t> inner;
     hsize_t block = 4096;

@@ -133,11 +133,12 @@ std::vector<SearchStep> LookAhead::sequence(int k) const {
 void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
     const CrowdTuning& t = s.options.tuning;
     const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
+    way_heading_ = site.way;
     const auto free = [&](const SearchStep& step) {
         Piece piece;
         piece.agent = agent_;
         piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
-        return piece_free(s, piece, nullptr);
+        return piece_free(s, piece, nullptr, way_heading_ && step.frame > frame_);  // beyond the first clip
     };
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
     const auto to_go = [&](const Placement& end) {

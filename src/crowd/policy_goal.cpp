@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 
+#include "follow.h"
 #include "mobb/core/angle.h"
 #include "mobb/crowd/policy.h"
 #include "nav_field.h"
@@ -15,13 +16,6 @@
 namespace mobb::crowd {
 
 namespace {
-
-/// Metres from (x, y) to the segment (x0, y0)-(x1, y1).
-double segment_distance(double x, double y, const std::array<double, 4>& s) {
-    const double dx = s[2] - s[0], dy = s[3] - s[1], len2 = dx * dx + dy * dy;
-    const double u = len2 > 0 ? std::clamp(((x - s[0]) * dx + (y - s[1]) * dy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(x - s[0] - u * dx, y - s[1] - u * dy);
-}
 
 class GoalPolicy : public Policy {
 public:
@@ -64,21 +58,9 @@ public:
         return seconds(fields_.at(*site.goal), end, site);
     }
 
-    // Down the navigation field from where the agent stands, in steps of a quarter of a metre.
-    std::vector<std::array<double, 2>> way(const ChoiceSite& site, double length) const override {
-        if (!site.goal) return {};
-        const NavField& field = fields_.at(*site.goal);
-        constexpr double kStep = 0.25;  // metres
-        std::vector<std::array<double, 2>> out{{site.base.x, site.base.y}};
-        double x = site.base.x, y = site.base.y;
-        const int steps = int(std::ceil(length / kStep));
-        for (int k = 0; k < steps && field.distance(x, y) > kStep; ++k) {
-            const double heading = field.downhill(x, y);
-            x += kStep * std::cos(heading);
-            y += kStep * std::sin(heading);
-            out.push_back({x, y});
-        }
-        return out;
+    std::optional<double> heading(const ChoiceSite& site) const override {
+        if (!site.goal) return std::nullopt;
+        return fields_.at(*site.goal).downhill(site.base.x, site.base.y);
     }
 
     // Agents standing at their goals are obstacles for the others' paths.
@@ -104,30 +86,29 @@ private:
         if (distance < stop_radius_) return distance / k.goal_walking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
         double t = distance / k.goal_walking + turn / k.goal_turning;
-        for (const auto& n : site.neighbours) {  // squared first: most neighbours are farther (and hypot is slow)
-            const double dx = end.x - n[0], dy = end.y - n[1], d2 = dx * dx + dy * dy;
-            if (d2 < k.goal_personal * k.goal_personal) t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
-        }
-        return t + in_the_way(end, site);
-    }
-
-    // Seconds for ending within make_way_clearance of a way an agent that outranks this one asked for.
-    double in_the_way(const Placement& end, const ChoiceSite& site) const {
-        double t = 0;
-        for (const auto& w : site.make_way) {
-            const double d = segment_distance(end.x, end.y, w);
-            if (d < tuning_.make_way_clearance) t += tuning_.make_way_cost * (tuning_.make_way_clearance - d);
+        for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
+            const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
+            if (d2 >= k.goal_personal * k.goal_personal || goes_my_way(site, n)) continue;
+            t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
         }
         return t;
     }
 
+    // Following (CrowdTuning::follow): a leader is one to follow, not to keep away from.
+    bool goes_my_way(const ChoiceSite& site, const Neighbour& n) const {
+        return site.way && n.facing &&
+               follows(*site.way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow_angle);
+    }
+
     // Walking on: the estimated time to the goal; standing idle last. A stuck agent
-    // (CrowdTuning::goal_patience) keeps the stream's random order instead, which moves it out of the way
-    // of the agents it waits for - unless one that outranks it asked for a way (make_way.cpp): it makes
-    // that way.
+    // (CrowdTuning::goal_patience) keeps the stream's random order instead, clips that move before those
+    // in place, which moves it out of the way of the agents it waits for: two agents meeting head-on in a
+    // door each step aside or back rather than turn on the spot in front of the other
+    // (bench/results/README.md "following").
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.stalled >= tuning_.goal_patience && site.make_way.empty()) return idle;
+        if (site.stalled >= tuning_.goal_patience)
+            return idle + (kinds_[std::size_t(c)] == ClipKind::InPlace ? 1e6 : 0.0);
         const Placement end = graph_.next(site.base, m, c);
         return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);
     }

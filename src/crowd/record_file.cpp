@@ -18,6 +18,8 @@ bool is_h5_record(const std::string& file) {
     return ends(".h5") || ends(".hdf5");
 }
 
+bool keeps_candidates(const std::string& file) { return !is_h5_record(file); }
+
 RecordFile read_record_file(const std::string& file) {
     return is_h5_record(file) ? read_h5_record(file) : read_json_record(file);
 }

@@ -4,14 +4,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <limits>
+#include <mutex>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "frame_stream.h"
 #include "h5.h"
 #include "mobb/crowd/record_file.h"
+#include "mobb/util/task_queue.h"
 #include "record_json.h"
 
 namespace mobb::crowd {
@@ -29,6 +34,13 @@ const h5::Layout kPair{{2}}, kTriple{{3}}, kPlace{{4}};
 // (compressed), so marking every block of a large crowd (6 frames at 10,000 agents) would cost more than
 // it saves. 30 frames: one second of a 30 fps graph is what a killed run loses at most.
 constexpr std::int64_t kMarkFrames = 30;
+
+// Tasks waiting for the writer's thread at most: a block of samples holds up to 2 MB (block_frames), a
+// table's block up to 4,096 rows of 12 columns, so the queue holds at most some 16 MB; enough for the
+// simulation not to wait on a busy disk for a moment. A kill loses what waits here, past the last mark.
+constexpr std::size_t kQueued = 8;
+
+using Disks = std::vector<std::array<double, 4>>;
 
 // The root's attributes; the graph and the scenario from `names`.
 void write_header(hid_t f, const Record& r, const Record& names, const std::string& summary,
@@ -79,32 +91,93 @@ void write_left(hid_t f, const Record& r) {
     h5::write_rows(f, "/tracks/left_frame", left, kColumn);
 }
 
-// A table written as it grows: named columns of int64 (one value a row) and float64 (`width` a row),
-// appended a block of rows at a time.
-class Table {
-public:
-    Table(hid_t f, const std::string& group, std::initializer_list<const char*> ints,
-          std::initializer_list<std::pair<const char*, hsize_t>> reals) {
-        for (const char* name : ints)
-            ints_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_INT64, kColumn), I{});
-        for (const auto& [name, width] : reals)
-            reals_.emplace_back(h5::Appender(f, group + "/" + name, H5T_NATIVE_DOUBLE, h5::Layout{{width}}), D{});
+// An integer column's type on disk, by what its values can be (docs/formats.md): flags and the outcome
+// 8 bits; ids, a candidate's counts and frames 32; row numbers and a choice point's counters (a count of
+// pairs grows with the crowd) 64. Most columns are flags and small numbers: narrower, they cost zlib
+// and the disk less. HDF5 converts on read, so a reader takes any of them as int64 (ours does).
+enum class Bits : std::uint8_t { B8, B32, B64 };
+
+// `rows` as T, every value checked to fit: one that does not is refused, never cut short.
+template <class T>
+const T* narrowed(const I& rows, std::vector<T>& out, const std::string& path) {
+    out.resize(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        if (rows[k] < std::numeric_limits<T>::min() || rows[k] > std::numeric_limits<T>::max())
+            throw h5::Error(path + ": " + std::to_string(rows[k]) + " does not fit in " +
+                            std::to_string(8 * sizeof(T)) + " bits");
+        out[k] = T(rows[k]);
     }
-    I& i(std::size_t k) { return ints_[k].second; }
-    D& d(std::size_t k) { return reals_[k].second; }
-    std::size_t rows() const { return std::size_t(ints_[0].first.rows()) + ints_[0].second.size(); }
-    /// Writes the rows gathered when a block is full (`all`: whatever there is); the file is flushed by
-    /// the caller.
-    void flush(bool all) {
-        if (!all && ints_[0].second.size() < kColumn.block) return;
-        for (auto& [out, rows] : ints_) out.append(rows.data(), rows.size(), false), rows.clear();
-        for (auto& [out, rows] : reals_)
-            out.append(rows.data(), rows.size() / h5::row_size(out.layout()), false), rows.clear();
+    return out.data();
+}
+
+// A column of integers on disk (one a row), written from int64 rows as its Bits.
+class IntColumn {
+public:
+    IntColumn(hid_t f, const std::string& path, Bits bits)
+        : out_(f, path,
+               bits == Bits::B8    ? h5::native<std::int8_t>()
+               : bits == Bits::B32 ? h5::native<std::int32_t>()
+                                   : h5::native<std::int64_t>(),
+               kColumn),
+          path_(path),
+          bits_(bits) {}
+    /// Appends `rows` (`b8`, `b32`: scratch).
+    void write(const I& rows, std::vector<std::int8_t>& b8, std::vector<std::int32_t>& b32) {
+        const void* data = bits_ == Bits::B8    ? static_cast<const void*>(narrowed(rows, b8, path_))
+                           : bits_ == Bits::B32 ? static_cast<const void*>(narrowed(rows, b32, path_))
+                                                : static_cast<const void*>(rows.data());
+        out_.append(data, rows.size(), false);
     }
 
 private:
-    std::vector<std::pair<h5::Appender, I>> ints_;
-    std::vector<std::pair<h5::Appender, D>> reals_;
+    h5::Appender out_;
+    std::string path_;
+    Bits bits_;
+};
+
+// A table written as it grows: named columns of integers (one value a row) and float64 (`width` a row,
+// not compressed: doubles barely shrink, and deflating them took as many instructions as the rest of the
+// writing). The calling thread gathers the rows; the writer's queue writes them, a block at a time.
+class Table {
+public:
+    Table(hid_t f, const std::string& group, std::initializer_list<std::pair<const char*, Bits>> ints,
+          std::initializer_list<std::pair<const char*, hsize_t>> reals)
+        : ints_(ints.size()), reals_(reals.size()) {
+        for (const auto& [name, bits] : ints) int_out_.emplace_back(f, group + "/" + name, bits);
+        for (const auto& [name, width] : reals)
+            real_out_.emplace_back(f, group + "/" + name, H5T_NATIVE_DOUBLE, h5::Layout{{width}, kColumn.block, false});
+    }
+    I& i(std::size_t k) { return ints_[k]; }
+    D& d(std::size_t k) { return reals_[k]; }
+    std::size_t rows() const { return posted_ + ints_[0].size(); }
+    /// Hands the rows gathered to `queue` when a block is full (`all`: whatever there is); the file is
+    /// flushed by the caller.
+    void flush(bool all, util::TaskQueue& queue) {
+        if (ints_[0].empty() || (!all && ints_[0].size() < kColumn.block)) return;
+        posted_ += ints_[0].size();
+        queue.post([this, ints = std::exchange(ints_, std::vector<I>(ints_.size())),
+                    reals = std::exchange(reals_, std::vector<D>(reals_.size()))] { write(ints, reals); });
+    }
+
+private:
+    // On the queue's thread.
+    void write(const std::vector<I>& ints, const std::vector<D>& reals) {
+        for (std::size_t k = 0; k < ints.size(); ++k) int_out_[k].write(ints[k], b8_, b32_);
+        for (std::size_t k = 0; k < reals.size(); ++k) {
+            h5::Appender& out = real_out_[k];
+            out.append(reals[k].data(), reals[k].size() / h5::row_size(out.layout()), false);
+        }
+    }
+
+    // Gathered by the calling thread.
+    std::vector<I> ints_;
+    std::vector<D> reals_;
+    std::size_t posted_ = 0;  // rows handed to the queue
+    // Touched by the queue's thread alone.
+    std::vector<IntColumn> int_out_;
+    std::vector<h5::Appender> real_out_;
+    std::vector<std::int8_t> b8_;  // scratch: a block narrowed
+    std::vector<std::int32_t> b32_;
 };
 
 std::int64_t outcome_index(const std::string& outcome) {
@@ -116,19 +189,39 @@ std::int64_t outcome_index(const std::string& outcome) {
 
 // The choice points' tables (docs/formats.md): rows appended as choice points come.
 struct Tables {
+    static constexpr Bits B8 = Bits::B8, B32 = Bits::B32, B64 = Bits::B64;
+
     explicit Tables(hid_t f)
         : choices(f, "/choices",
-                  {"agent", "frame", "taken", "outcome", "fallback", "queries", "tests2d", "tests3d", "samples",
-                   "pruned", "hold_frame"},
+                  {{"agent", B32},
+                   {"frame", B32},
+                   {"taken", B32},
+                   {"outcome", B8},
+                   {"fallback", B8},
+                   {"queries", B64},
+                   {"tests2d", B64},
+                   {"tests3d", B64},
+                   {"samples", B64},
+                   {"pruned", B64},
+                   {"hold_frame", B32}},
                   {{"hold", 3}}),
-          escapes(f, "/escapes", {"choice", "clip", "frame"}, {{"place", 3}}),
-          intended(f, "/intended", {"choice", "clip", "frame"}, {{"place", 3}}),
-          reroutes(f, "/reroutes", {"choice", "agent", "hold_frame"}, {{"hold", 3}}),
-          reroute_escapes(f, "/reroute_escapes", {"reroute", "clip", "frame"}, {{"place", 3}}),
-          candidates(f, "/candidates", {"choice", "clip", "leaves_world", "meets_solid", "queries", "hits", "crowded"},
+          escapes(f, "/escapes", {{"choice", B64}, {"clip", B32}, {"frame", B32}}, {{"place", 3}}),
+          intended(f, "/intended", {{"choice", B64}, {"clip", B32}, {"frame", B32}}, {{"place", 3}}),
+          reroutes(f, "/reroutes", {{"choice", B64}, {"agent", B32}, {"hold_frame", B32}}, {{"hold", 3}}),
+          reroute_escapes(f, "/reroute_escapes", {{"reroute", B64}, {"clip", B32}, {"frame", B32}}, {{"place", 3}}),
+          candidates(f, "/candidates",
+                     {{"choice", B64},
+                      {"clip", B32},
+                      {"leaves_world", B8},
+                      {"meets_solid", B8},
+                      {"queries", B32},
+                      {"hits", B32},
+                      {"crowded", B8}},
                      {}),
-          queries(f, "/queries", {"candidate", "agent", "index", "piece", "mine", "hit"}, {}),
-          clips(f, "/clips", {"agent", "clip", "start", "fallback", "choice"}, {{"place", 4}}) {}
+          queries(f, "/queries",
+                  {{"candidate", B64}, {"agent", B32}, {"index", B32}, {"piece", B32}, {"mine", B32}, {"hit", B8}}, {}),
+          clips(f, "/clips", {{"agent", B32}, {"clip", B32}, {"start", B32}, {"fallback", B8}, {"choice", B64}},
+                {{"place", 4}}) {}
 
     static void framed(Table& t, std::size_t owner, const std::vector<FramedClip>& clips) {
         for (const FramedClip& c : clips) {
@@ -137,7 +230,7 @@ struct Tables {
         }
     }
 
-    void add(std::size_t c, const ChoicePoint& cp) {
+    void add(std::size_t c, const ChoicePoint& cp, util::TaskQueue& queue) {
         const std::int64_t row[] = {cp.agent,
                                     cp.frame,
                                     cp.taken,
@@ -169,14 +262,14 @@ struct Tables {
                                       k.queries,       k.hits, k.crowded};
             for (std::size_t j = 0; j < std::size(r); ++j) candidates.i(j).push_back(r[j]);
         }
-        for (Table* t : all()) t->flush(false);
+        for (Table* t : all()) t->flush(false, queue);
     }
 
-    void add(int agent, const PlacedClip& c) {
+    void add(int agent, const PlacedClip& c, util::TaskQueue& queue) {
         const std::int64_t row[] = {agent, c.clip, c.start, c.fallback, c.choice};
         for (std::size_t k = 0; k < std::size(row); ++k) clips.i(k).push_back(row[k]);
         clips.d(0).insert(clips.d(0).end(), {c.place.x, c.place.y, c.place.theta, c.place.t0});
-        clips.flush(false);
+        clips.flush(false, queue);
     }
 
     /// In the order of the "written" attribute (docs/formats.md).
@@ -196,14 +289,37 @@ struct H5RecordWriter::Impl {
     std::optional<h5::Appender> samples;  // from begin()
     std::size_t agents = 0, choices = 0;
     std::int64_t frames = 0, marked = 0;  // frames written; at the last mark
+    std::mutex spare_mutex;
+    std::vector<Disks> spare;  // blocks of samples written, their memory used again
+    // Between begin() and finish() the file is written here alone (HDF5's serial library is not to be
+    // called from two threads at once), in the order the calls came; last, so that it goes first, once
+    // what it holds is written.
+    util::TaskQueue queue{kQueued};
 
     // Every table's rows so far, then the mark: the frames a reader may take, and each table's rows.
     void mark() {
         std::vector<std::int64_t> written{frames};
-        for (Table* t : tables->all()) t->flush(true), written.push_back(std::int64_t(t->rows()));
-        h5::write_numbers<std::int64_t>(f.get(), "written", written);
-        if (H5Fflush(f.get(), H5F_SCOPE_GLOBAL) < 0) throw h5::Error("cannot write");
+        for (Table* t : tables->all()) t->flush(true, queue), written.push_back(std::int64_t(t->rows()));
+        queue.post([this, written] {
+            h5::write_numbers<std::int64_t>(f.get(), "written", written);
+            if (H5Fflush(f.get(), H5F_SCOPE_GLOBAL) < 0) throw h5::Error("cannot write");
+        });
         marked = frames;
+    }
+
+    // A block of samples to the queue, copied: the stream uses its own again.
+    void append(const FrameBlock& block) {
+        Disks disks;
+        {
+            const std::lock_guard<std::mutex> lock(spare_mutex);
+            if (!spare.empty()) disks = std::move(spare.back()), spare.pop_back();
+        }
+        disks.assign(block.disks, block.disks + std::ptrdiff_t(block.count * std::int64_t(agents)));
+        queue.post([this, disks = std::move(disks), count = block.count]() mutable {
+            samples->append(disks.data(), hsize_t(count), false);
+            const std::lock_guard<std::mutex> lock(spare_mutex);
+            spare.push_back(std::move(disks));
+        });
     }
 };
 
@@ -245,6 +361,7 @@ H5RecordWriter::~H5RecordWriter() = default;
 void H5RecordWriter::begin(const Record& header) {
     guarded(impl_->file, [&] {
         if (impl_->samples) throw h5::Error("begun twice");
+        impl_->queue.drain();
         Record named;  // the names the writer was given, where the header has none
         named.graph = header.graph.empty() ? impl_->graph : header.graph;
         named.scenario = header.scenario.empty() ? impl_->scenario : header.scenario;
@@ -262,20 +379,20 @@ void H5RecordWriter::begin(const Record& header) {
 void H5RecordWriter::choice(std::size_t index, const ChoicePoint& choice) {
     guarded(impl_->file, [&] {
         if (index != impl_->choices) throw h5::Error("choice point " + std::to_string(index) + " sent out of order");
-        impl_->tables->add(index, choice);
+        impl_->tables->add(index, choice, impl_->queue);
         ++impl_->choices;
     });
 }
 
 void H5RecordWriter::clip(int agent, const PlacedClip& clip) {
-    guarded(impl_->file, [&] { impl_->tables->add(agent, clip); });
+    guarded(impl_->file, [&] { impl_->tables->add(agent, clip, impl_->queue); });
 }
 
 void H5RecordWriter::frames(const FrameBlock& block) {
     guarded(impl_->file, [&] {
         if (!impl_->samples || block.first != impl_->frames || block.agents != impl_->agents)
             throw h5::Error("/tracks/samples: frames " + std::to_string(block.first) + " sent out of order");
-        impl_->samples->append(block.disks->data(), hsize_t(block.count), false);
+        impl_->append(block);
         impl_->frames += block.count;
         if (impl_->frames - impl_->marked >= kMarkFrames) impl_->mark();
     });
@@ -290,6 +407,7 @@ void H5RecordWriter::finish(const Record& r, const std::string& summary_json, co
         if (impl_->frames != r.frames)
             throw h5::Error("/tracks/samples: " + std::to_string(impl_->frames) + " frames sent, the record has " +
                             std::to_string(r.frames));
+        impl_->queue.drain();  // the file is this thread's again
         const hid_t f = impl_->f.get();
         Record named;
         named.graph = r.graph.empty() ? impl_->graph : r.graph;
@@ -297,6 +415,7 @@ void H5RecordWriter::finish(const Record& r, const std::string& summary_json, co
         write_header(f, r, named, summary_json, metrics_json);
         write_left(f, r);
         impl_->mark();
+        impl_->queue.drain();
         // Last: a reader tells a finished file from one whose writing stopped (killed, disk full).
         const h5::Id done(H5Aopen(f, "complete", H5P_DEFAULT), H5Aclose);
         const std::int64_t one = 1;

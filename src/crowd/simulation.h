@@ -43,7 +43,6 @@ private:
     [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void note_waiting(int agent, std::int64_t end);
     void apply_waiting();
-    void apply_ways();
     void gather(std::size_t n);
     int add_piece(const Piece& piece, bool pending);
     void reserve(int agent, int choice, const Plan& plan);
@@ -85,13 +84,7 @@ private:
     BroadPhase waiting_;                             // agents that waited give_way_after or longer: their ground, by id
     std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
     std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
-    struct WayAsked {
-        int agent;
-        std::int64_t frame;
-        std::vector<std::array<double, 2>> way;
-    };
-    std::vector<WayAsked> way_changes_;  // this frame's asks to make way, applied after it
-    std::vector<char> in_waiting_;       // per agent: in waiting_
+    std::vector<char> in_waiting_;                    // per agent: in waiting_
     CrowdRun out_;
     std::optional<FrameStream> stream_;
 };

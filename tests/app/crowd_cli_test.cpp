@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -125,16 +126,17 @@ TEST(CrowdCli, RecordDoesNotDependOnRunOrThreads) {
     EXPECT_TRUE(text[2] == text[0]);
 }
 
-// --record by extension: the HDF5 record of a run converts to its JSON record byte for byte, and back; a
-// file cut short is refused in one line naming it, exit 1, nothing on stdout and no file written. (The
-// motion metrics left out: a streamed HDF5 run keeps no clips to pose.)
+// --record by extension: the HDF5 record of a run (its candidates asked for, as a JSON record keeps them)
+// converts to its JSON record byte for byte, and back; a file cut short is refused in one line naming it,
+// exit 1, nothing on stdout and no file written. (The motion metrics left out: a streamed HDF5 run keeps
+// no clips to pose.)
 TEST(CrowdCli, RecordConvertBothWays) {
     const std::string args =
         "crowd --quiet --no-motion --graph " + kGraph + " --agents 12 --seconds 6 --world 12x14 --record ";
     const std::string json = temp_file("conv.json"), h5 = temp_file("conv.h5"), back = temp_file("back.json"),
                       again = temp_file("again.h5"), cut = temp_file("cut.h5"), none = temp_file("none.json");
     ASSERT_EQ(run(args + json).code, 0);
-    ASSERT_EQ(run(args + h5).code, 0);
+    ASSERT_EQ(run(args + h5 + " --record-candidates").code, 0);
     const Result r = run("record convert " + h5 + " " + back);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("12 agents, 180 frames"), std::string::npos) << r.out;
@@ -150,6 +152,37 @@ TEST(CrowdCli, RecordConvertBothWays) {
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
     EXPECT_FALSE(std::ifstream(none).good());
     for (const std::string& f : {json, h5, back, again, cut}) std::remove(f.c_str());
+}
+
+// The choice points' candidates and their queries by the record's kind: a JSON record keeps them, an HDF5
+// one only when asked. Without them the two kinds hold the same record, byte for byte once converted, its
+// choice points there with their counts and empty candidate lists.
+TEST(CrowdCli, CandidatesOnlyWhenAsked) {
+    const std::string args =
+        "crowd --quiet --no-motion --graph " + kGraph + " --agents 12 --seconds 6 --world 12x14 --record ";
+    const std::string json = temp_file("cand.json"), bare = temp_file("bare.json"), h5 = temp_file("bare.h5"),
+                      back = temp_file("bare_back.json");
+    ASSERT_EQ(run(args + json).code, 0);
+    ASSERT_EQ(run(args + bare + " --no-record-candidates").code, 0);
+    ASSERT_EQ(run(args + h5).code, 0);
+    ASSERT_EQ(run("record convert " + h5 + " " + back).code, 0);
+    EXPECT_TRUE(test::slurp(back) == test::slurp(bare));
+    const auto candidates = [](const std::string& file) {
+        std::size_t n = 0, queries = 0;
+        const nlohmann::json record = nlohmann::json::parse(test::slurp(file));
+        for (const auto& c : record["choices"]) {
+            n += c["candidates"].size();
+            queries += c["queries"].get<std::size_t>();
+        }
+        return std::pair{n, queries};
+    };
+    const auto [kept, counted] = candidates(json);
+    EXPECT_GT(kept, 0u);
+    EXPECT_EQ(candidates(bare), std::pair(std::size_t(0), counted));  // the counts stay
+    const Result r = run("crowd --quiet --graph " + kGraph + " --agents 3 --seconds 1 --record-candidates");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, "crowd: --record-candidates and --no-record-candidates go with --record\n");
+    for (const std::string& f : {json, bare, h5, back}) std::remove(f.c_str());
 }
 
 TEST(CrowdCli, ScenarioRunsToItsGoals) {

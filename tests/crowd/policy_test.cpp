@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mobb/core/angle.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/policy.h"
 
@@ -46,7 +47,7 @@ TEST(Policy, RandomKeepsTheStreamOrder) {
     const Fixture& f = fixture();
     const auto p = make_policy(Selection::Random, {f.graph, w, f.in_place, {}, 1.0, {}});
     std::vector<int> c = {5, 2, 9, 1};
-    p->order({0, {10, 10, 0, 0}, std::nullopt, false, 0, false, {}, {}}, c);
+    p->order({0, {10, 10, 0, 0}, std::nullopt, false, 0, false, std::nullopt, {}}, c);
     EXPECT_EQ(c, (std::vector<int>{5, 2, 9, 1}));
     EXPECT_EQ(p->kind(), Selection::Random);
 }
@@ -57,7 +58,7 @@ TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
     const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: every walking clip before every slow one that moves (at the idle speed or faster),
     // before every clip in place, before the slow ones that only creep.
-    const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, {}, {}};
+    const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, std::nullopt, {}};
     auto rank = [&](int c) {
         const ClipKind k = f.kinds[std::size_t(c)];
         const GraphClip& g = f.graph.clips[std::size_t(c)];
@@ -73,7 +74,7 @@ TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
         if (rank(x) == 0) walks.push_back(x);
     EXPECT_TRUE(std::equal(walks.begin(), walks.end(), c.begin()));
     // Facing the wall 2 m ahead: the first clips walk back into the open, away from it.
-    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, false, 0, false, {}, {}};
+    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, false, 0, false, std::nullopt, {}};
     const std::vector<int> d = ordered(*p, wall);
     const Placement first = end_of(wall, d.front());
     EXPECT_LT(std::cos(first.theta), std::cos(end_of(wall, walks.front()).theta) + 1e-12);
@@ -104,14 +105,14 @@ TEST(Policy, AvoidSlowsDownAsLittleAsItCanAndTurnsToTheOpen) {
     const Fixture& f = fixture();
     const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: the slow clips the faster first.
-    const std::vector<int> c = ordered(*p, {0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, {}, {}});
+    const std::vector<int> c = ordered(*p, {0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, std::nullopt, {}});
     std::vector<double> slow;
     for (int x : c)
         if (f.kinds[std::size_t(x)] == ClipKind::Slow) slow.push_back(exit_speed(x));
     ASSERT_GT(slow.size(), 2u);
     EXPECT_TRUE(std::is_sorted(slow.rbegin(), slow.rend()));
     // Facing the wall 2 m ahead: clips in place that end facing away from it before those facing it.
-    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, false, 0, false, {}, {}};
+    const ChoiceSite wall{0, {28, 20, 0, 0}, std::nullopt, false, 0, false, std::nullopt, {}};
     bool faced_wall = false, turned_after = false, turned = false;
     for (int x : ordered(*p, wall)) {
         if (f.kinds[std::size_t(x)] != ClipKind::InPlace) continue;
@@ -131,7 +132,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     const Fixture& f = fixture();
     const std::array<double, 2> goal{18, 10};
     const auto p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {goal}, 1.0, {}});
-    const ChoiceSite site{0, {5, 10, 0, 0}, goal, true, 0, false, {}, {}};
+    const ChoiceSite site{0, {5, 10, 0, 0}, goal, true, 0, false, std::nullopt, {}};
     const std::vector<int> c = ordered(*p, site);
     const double before = std::hypot(goal[0] - 5, goal[1] - 10);
     const Placement e = end_of(site, c.front());
@@ -139,13 +140,25 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     EXPECT_EQ(f.kinds[std::size_t(c.back())], ClipKind::Idle) << "standing comes last";
     // A neighbour where that clip ends moves it down the order.
     ChoiceSite crowded = site;
-    crowded.neighbours.push_back({e.x, e.y});
+    crowded.neighbours.push_back({{e.x, e.y}, std::nullopt});
     const std::vector<int> d = ordered(*p, crowded);
     EXPECT_NE(d.front(), c.front());
+    // Following (CrowdTuning::follow): the agent wants to go at its goal (down the navigation field, whose
+    // eight-direction grid bends it by up to pi / 8); a neighbour there that faces the same way is one to
+    // follow, not to keep away from - but one facing it is kept away from.
+    const std::optional<double> way = p->heading(site);
+    ASSERT_TRUE(way);
+    EXPECT_LT(std::abs(*way), kPi / 8 + 1e-9);
+    ChoiceSite following = site;
+    following.way = way;
+    following.neighbours.push_back({{e.x, e.y}, 0.1});
+    EXPECT_EQ(ordered(*p, following), c);
+    following.neighbours.back().facing = kPi;
+    EXPECT_NE(ordered(*p, following).front(), c.front());
     // Arrived within the goal radius, not outside.
-    EXPECT_TRUE(p->arrived({0, {17.3, 10.5, 0, 0}, goal, true, 0, false, {}, {}}));
-    EXPECT_FALSE(p->arrived({0, {16.9, 10, 0, 0}, goal, true, 0, false, {}, {}}));
-    EXPECT_FALSE(p->arrived({0, {17.3, 10.5, 0, 0}, std::nullopt, false, 0, false, {}, {}}));
+    EXPECT_TRUE(p->arrived({0, {17.3, 10.5, 0, 0}, goal, true, 0, false, std::nullopt, {}}));
+    EXPECT_FALSE(p->arrived({0, {16.9, 10, 0, 0}, goal, true, 0, false, std::nullopt, {}}));
+    EXPECT_FALSE(p->arrived({0, {17.3, 10.5, 0, 0}, std::nullopt, false, 0, false, std::nullopt, {}}));
 }
 
 // The goal straight ahead behind a wall: the first clips veer left, toward the way around it (its open
@@ -158,7 +171,7 @@ TEST(Policy, GoalFindsTheWayAroundAnObstacle) {
     walled.obstacles.push_back(Polygon::rectangle(8, 0, 9, 14));
     const Fixture& f = fixture();
     const std::array<double, 2> goal{15, 10};
-    const ChoiceSite site{0, {4, 10, 0, 0}, goal, true, 0, false, {}, {}};
+    const ChoiceSite site{0, {4, 10, 0, 0}, goal, true, 0, false, std::nullopt, {}};
     auto mean_turn = [&](const Policy& p) {
         const std::vector<int> c = ordered(p, site);
         double sum = 0;

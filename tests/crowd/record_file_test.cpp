@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,19 @@ const Written& leaving() {
         o.seconds = 20;
         CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
         run.record.scenario = s.name;
+        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
+        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
+    }();
+    return w;
+}
+
+// The wandering crowd without its candidates and their queries (CrowdOptions::record_queries off, as an
+// HDF5 record of `mobb crowd` is unless asked).
+const Written& bare() {
+    static const Written w = [] {
+        CrowdOptions o = wandering().options;
+        o.record_queries = false;
+        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
         const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
         return Written{std::move(run.record), summary_json(run.summary), metrics, o};
     }();
@@ -121,6 +135,39 @@ TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
         EXPECT_EQ(slurp(j2), json);
         for (const std::string& f : {h5, j, h5b, j2}) std::remove(f.c_str());
     }
+}
+
+// Without candidates, the streamed file still reads as the JSON record of the same run, on 1 and 2
+// threads: the same choice points, counts and plans, their candidate lists empty.
+TEST(RecordFile, WithoutCandidatesTheStreamedFileIsTheJson) {
+    const std::string json = record_to_text(bare().record, bare().summary, bare().metrics);
+    const std::string h5 = temp("bare.h5");
+    for (int threads : {1, 2}) {
+        const RecordFile s = streamed(bare(), h5, threads);
+        EXPECT_EQ(text_of(s), json) << threads << " threads";
+        ASSERT_EQ(s.record.choices.size(), wandering().record.choices.size());
+        for (std::size_t c = 0; c < s.record.choices.size(); ++c) {
+            const ChoicePoint &got = s.record.choices[c], &with = wandering().record.choices[c];
+            EXPECT_TRUE(got.candidates.empty());
+            EXPECT_EQ(std::pair(got.taken, got.queries), std::pair(with.taken, with.queries)) << "choice " << c;
+        }
+    }
+    std::remove(h5.c_str());
+}
+
+// Integer columns are narrower on disk than in memory (docs/formats.md); a value that does not fit its
+// column is refused in one line naming the file and the column, never cut short.
+TEST(RecordFile, AValueWiderThanItsColumnIsRefused) {
+    Record r = wandering().record;
+    r.choices[5].frame = std::int64_t(1) << 31;
+    const std::string h5 = temp("wide.h5");
+    try {
+        write_record_file(h5, r, wandering().summary, wandering().metrics);
+        ADD_FAILURE() << "written";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), h5 + ": /choices/frame: 2147483648 does not fit in 32 bits");
+    }
+    std::remove(h5.c_str());
 }
 
 TEST(RecordFile, TheRunsKeepWhatTheLayoutNeeds) {

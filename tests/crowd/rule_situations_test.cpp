@@ -1,11 +1,13 @@
-// Three crowd rules, each on a small situation built by hand in which it must act, run with the rule on
+// Four crowd rules, each on a small situation built by hand in which it must act, run with the rule on
 // and switched off (CrowdTuning), besides the dense wandering crowd of rules_test.cpp:
 // - the standing gap: a wanderer in a corridor closed by an agent standing still - it turns back, again
 //   and again, and reserves no ground within the gap of the standing agent's;
 // - giving way: a walker passing an agent boxed in by four walls (so it waits) takes, where it has one, a
 //   free walk clear of the waiting agent instead of the first free one, which passes by it;
 // - the right of way: an agent in a niche off a corridor, kept in by a column of walkers, takes its way
-//   out through a walker's reserved stop once it has waited, and that walker stops another way.
+//   out through a walker's reserved stop once it has waited, and that walker stops another way;
+// - following: a column of goal agents in front of a door waits in line behind the one ahead and goes
+//   through, rather than walking round a queue that has no way round.
 // Each is the smallest situation found in which the rule must act - a few agents placed by hand, walls
 // where the rule needs the others kept out - and asserts what the rule is for; with the rule off, what it
 // prevents happens, and neither run has a contact. Wanderers' choices depend on the seed: several each.
@@ -250,6 +252,54 @@ TEST(RuleSituations, RightOfWayReroutesTheOneBlockingAWaitingAgent) {
         EXPECT_NE(c->reroutes[0].agent, 0);
     }
     EXPECT_GE(sooner, 3) << "out of the niche sooner in most seeds";
+}
+
+// ---- Following ----
+
+// A wall across the world with a 2.4 m door; five goal agents in a column 1.5 m apart in front of it,
+// facing it, for an exit 6 m beyond, where each leaves the run.
+CrowdOptions door_column(std::uint64_t seed, bool follow) {
+    CrowdOptions o;
+    o.world = {-8, -4, 10, 4, true, {Polygon::rectangle(-0.5, -4, 0.5, -1.2), Polygon::rectangle(-0.5, 1.2, 0.5, 4)}};
+    o.seconds = 60;
+    o.seed = seed;
+    o.select = Selection::Goal;
+    o.tuning.follow = follow;
+    for (int k = 0; k < 5; ++k) {
+        AgentSpec a = agent(2.0 + 1.5 * k, 0, M_PI);
+        a.goals = {{-6, 0}};
+        a.at_goal = AtGoal::Leave;
+        o.placed.push_back(a);
+    }
+    o.agents = int(o.placed.size());
+    return o;
+}
+
+// Clips agent `a` played standing in place (turning on the spot, idle) before it left.
+int in_place_clips(const Record& r, int a) {
+    static const EscapeTable table = EscapeTable::build(graph());
+    int n = 0;
+    for (const PlacedClip& c : r.tracks[std::size_t(a)].clips) n += table.in_place[std::size_t(c.clip)] ? 1 : 0;
+    return n;
+}
+
+TEST(RuleSituations, FollowingKeepsAColumnInLineThroughADoor) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const CrowdRun on = run(door_column(seed, true));
+        const CrowdRun off = run(door_column(seed, false));
+        EXPECT_TRUE(frame_contacts(on.record).empty()) << "seed " << seed;
+        EXPECT_TRUE(frame_contacts(off.record).empty()) << "seed " << seed;
+        const CrowdMetrics m_on = crowd_metrics(on.record, graph()), m_off = crowd_metrics(off.record, graph());
+        ASSERT_EQ(m_on.reached, 5) << "seed " << seed;
+        ASSERT_EQ(m_off.reached, 5) << "seed " << seed;
+        // Off, the agents behind turn on the spot and walk round a queue that has no way round; on, they
+        // wait behind the one ahead and are through sooner.
+        EXPECT_LT(m_on.mean_time_to_goal, m_off.mean_time_to_goal) << "seed " << seed;
+        int turns_on = 0, turns_off = 0;
+        for (int a = 1; a < 5; ++a)
+            turns_on += in_place_clips(on.record, a), turns_off += in_place_clips(off.record, a);
+        EXPECT_LT(turns_on, turns_off) << "seed " << seed;
+    }
 }
 
 }  // namespace

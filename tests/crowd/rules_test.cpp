@@ -1,9 +1,7 @@
 // Each crowd rule on a situation built for it, with the rule on and switched off (CrowdTuning): the
 // look-ahead gets an agent out of a ring of standing agents through its gap; the right of way, giving way
 // and the standing gap act in a dense wandering crowd, and leave no trace when off (each on a small
-// situation of its own: rule_situations_test.cpp); making way ends the
-// standoff of two agents meeting in a door; the policies decide
-// what is theirs (whether choices reserve anything, who keeps the standing gap).
+// situation of its own: rule_situations_test.cpp); the policies decide what is theirs (whether choices reserve anything, who keeps the standing gap).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -137,54 +135,6 @@ TEST(Rules, StandingGapIsTheWanderersAndSwitchesOff) {
     // Goal agents converge on purpose: their policy keeps no gap, whatever the switch says.
     const CrowdRun goal = run(ring(1, true));
     EXPECT_EQ(crowded(goal.record), 0);
-}
-
-// Two agents meeting in a door: a 4.1 m corridor cut by a wall with a 1.6 m door, one agent on each side
-// heading through it (SteerSuite's doorway-two-way). Both stand at the door, each waiting for the other.
-CrowdOptions door(std::uint64_t seed, bool make_way) {
-    CrowdOptions o;
-    o.world = {-16, -1, 16, 3.1, true, {Polygon::rectangle(-0.2, -1, 0, -0.3), Polygon::rectangle(-0.2, 1.3, 0, 3.1)}};
-    o.select = Selection::Goal;
-    o.seconds = 60;
-    o.seed = seed;
-    o.tuning.make_way = make_way;
-    AgentSpec left, right;
-    left.start = {-10, 1, 0, 0};
-    left.goals = {{14, 1}};
-    right.start = {10, 1, M_PI, 0};
-    right.goals = {{-14, 1}};
-    o.placed = {left, right};
-    o.agents = 2;
-    return o;
-}
-
-// The frame the later of the two agents first comes within 1 m of its goal.
-std::int64_t both_through(const Record& r) {
-    std::int64_t last = 0;
-    for (const AgentTrack& t : r.tracks) {
-        std::int64_t f = 0;
-        while (f < std::int64_t(t.samples.size()) &&
-               std::hypot(t.samples[std::size_t(f)][1] - t.goals.back()[0],
-                          t.samples[std::size_t(f)][2] - t.goals.back()[1]) >= 1.0)
-            ++f;
-        last = std::max(last, f);
-    }
-    return last;
-}
-
-TEST(Rules, MakingWayLetsOneThroughTheDoorSooner) {
-    std::int64_t with_total = 0, without_total = 0;
-    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-        const CrowdRun with = run(door(seed, true));
-        const CrowdRun without = run(door(seed, false));
-        EXPECT_TRUE(frame_contacts(with.record).empty());
-        EXPECT_TRUE(crowd_metrics(with.record, graph()).passed) << "seed " << seed;
-        const std::int64_t a = both_through(with.record), b = both_through(without.record);
-        EXPECT_LE(a, b) << "seed " << seed;
-        with_total += a;
-        without_total += b;
-    }
-    EXPECT_LT(with_total, without_total) << "the standoffs end sooner";
 }
 
 TEST(Rules, EachPolicySaysWhatIsItsOwn) {

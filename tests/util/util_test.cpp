@@ -1,12 +1,16 @@
-// The utilities below the crowd: the worker pool and the median.
+// The utilities below the crowd: the worker pool, the task queue and the median.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "mobb/util/median.h"
+#include "mobb/util/task_queue.h"
 #include "mobb/util/worker_pool.h"
 
 namespace mobb::util {
@@ -42,6 +46,48 @@ TEST(WorkerPool, RunsEveryIndexOnceAndRethrowsTheLowestError) {
         pool.for_each(0, [](std::size_t, int) { ADD_FAILURE(); });
     }
     EXPECT_THROW(WorkerPool(0), std::invalid_argument);
+}
+
+// Tasks run one at a time in the order posted, off the posting thread; a full queue makes post() wait
+// (the tasks waiting never exceed its room); the first task that throws stops those after it, and the
+// poster hears of it; the queue's end runs what still waits.
+TEST(TaskQueue, RunsTasksInOrderAndReportsTheFirstError) {
+    std::vector<int> ran;
+    std::atomic<int> waiting{0}, most{0};
+    const auto caller = std::this_thread::get_id();
+    {
+        TaskQueue queue(3);
+        for (int k = 0; k < 50; ++k) {
+            most = std::max(most.load(), ++waiting);
+            queue.post([&, k] {
+                --waiting;
+                std::this_thread::sleep_for(std::chrono::microseconds(k % 7 == 0 ? 2000 : 0));
+                EXPECT_NE(std::this_thread::get_id(), caller);
+                ran.push_back(k);
+            });
+        }
+        queue.drain();
+        ASSERT_EQ(ran.size(), 50u);
+        for (int k = 0; k < 50; ++k) EXPECT_EQ(ran[std::size_t(k)], k);
+        EXPECT_LE(most.load(), 5);  // 3 waiting, one taken but not begun, the one being posted
+        for (int k = 50; k < 60; ++k) queue.post([&, k] { ran.push_back(k); });
+    }  // the end runs them
+    EXPECT_EQ(ran.size(), 60u);
+
+    TaskQueue queue(2);
+    queue.post([] { throw std::runtime_error("first"); });
+    queue.post([] { throw std::runtime_error("second"); });  // may already be refused
+    bool later = false;
+    try {
+        for (int k = 0; k < 100; ++k) queue.post([&] { later = true; });
+        queue.drain();
+        ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "first");
+    }
+    EXPECT_FALSE(later);
+    EXPECT_THROW(queue.drain(), std::runtime_error);
+    EXPECT_THROW(TaskQueue(0), std::invalid_argument);
 }
 
 TEST(Median, MiddleValueOrMeanOfTheTwoMiddle) {

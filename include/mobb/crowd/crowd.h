@@ -37,8 +37,9 @@ struct CrowdOptions {
     double cell = 4.0;         ///< broad-phase grid cell, metres
     bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Keep each candidate's queries (Candidate::against) in the record, for the viewer and the record
-    /// digests; off, the record's choice points keep only their counts, not their candidates (the runs are
-    /// otherwise the same).
+    /// digests; off, the record's choice points (streamed ones too) keep only their counts, not their
+    /// candidates (the runs are otherwise the same). `mobb crowd` sets it for a JSON record, and for an
+    /// HDF5 one with --record-candidates (keeps_candidates, record_file.h).
     bool record_queries = true;
     /// When set, the run streams: its choice points (candidates included with record_queries), clips and
     /// frames go there as they are committed and become final (RecordSink), the contact check and the

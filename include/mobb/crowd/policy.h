@@ -26,6 +26,14 @@ const char* to_string(Selection s);
 /// "avoid" | "random" | "goal"; throws std::invalid_argument naming them.
 Selection parse_selection(const std::string& name);
 
+/// Where another agent near a choice point will be: the centre of a piece it reserved (metres), and the
+/// way it faces (radians, world frame) when it is one to follow (CrowdTuning::follow): none when it
+/// stopped for good, is about to, or has not set off.
+struct Neighbour {
+    std::array<double, 2> at;
+    std::optional<double> facing;
+};
+
 /// An agent at a choice point, as a policy sees it.
 struct ChoiceSite {
     int agent = 0;
@@ -34,12 +42,11 @@ struct ChoiceSite {
     bool stops = false;                         ///< it stands at that goal for good (its last; it stays)
     int stalled = 0;                            ///< choice points in a row it could not move on (escapes)
     bool arrived = false;                       ///< Policy::arrived(): order() puts the ways to stop first
+    /// Radians: the way it wants to go (Policy::heading) when it follows others (CrowdTuning::follow).
+    std::optional<double> way;
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of
     /// what they reserved - the boxes of their clips, their held grounds - in the coming seconds.
-    std::vector<std::array<double, 2>> neighbours;
-    /// The ways agents that outrank it asked for (CrowdTuning::make_way), as segments (x0, y0, x1, y1) in
-    /// metres: it keeps its clips' ends clear of them.
-    std::vector<std::array<double, 4>> make_way;
+    std::vector<Neighbour> neighbours;
 };
 
 class Policy {
@@ -65,9 +72,9 @@ public:
     /// keeps order()'s order alone. The first clips are then tried in the order of the best sequence
     /// each leads to, scored by its duration plus to_go() at its end (order() breaks ties).
     virtual int horizon(const ChoiceSite&) const { return 0; }
-    /// The way the agent wants next, for the others to make (CrowdTuning::make_way): points from where it
-    /// stands down its path, about `length` metres; empty when it seeks no place.
-    virtual std::vector<std::array<double, 2>> way(const ChoiceSite&, double /*length*/) const { return {}; }
+    /// The direction (radians, world frame) the agent wants to go from where it stands; none when it
+    /// seeks no place (following, CrowdTuning::follow, compares it with the others' headings).
+    virtual std::optional<double> heading(const ChoiceSite&) const { return std::nullopt; }
     /// The estimated seconds from `end` (where a searched sequence leaves the agent) to what it seeks.
     virtual double to_go(const ChoiceSite&, const Placement& /*end*/) const { return 0; }
     /// An agent stopped for good at (x, y), holding a disk of radius r: the others plan around it. Called

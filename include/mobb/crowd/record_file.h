@@ -26,6 +26,12 @@ struct RecordFile {
 /// Whether `file` names an HDF5 record (extension .h5 or .hdf5).
 bool is_h5_record(const std::string& file);
 
+/// Whether a run recorded to `file` keeps its choice points' candidates and their queries
+/// (CrowdOptions::record_queries) unless told: a JSON record does (small runs, whose candidates the viewer
+/// lists), an HDF5 one does not (large runs: candidates and queries are four fifths of its table rows, and
+/// collecting them costs the run time; docs/formats.md).
+bool keeps_candidates(const std::string& file);
+
 /// Reads a record file of either kind, every field checked as load_record says; an incomplete HDF5 file
 /// (RecordFile::note) up to its last mark: its frames so far, the choice points and clips of those
 /// frames. Throws
@@ -39,13 +45,16 @@ void write_record_file(const std::string& file, const Record& record, const std:
                        const std::string& metrics_json = "");
 
 /// An HDF5 record written as the run goes (CrowdOptions::sink): the header and goals when the run begins,
-/// each choice point (candidates and queries included) and each clip appended to the file's tables as they
-/// are committed, a block (4,096 rows) at a time, and the samples a block of frames at a time as the frames
-/// become final; the rest (the agents' left_frame, summary, metrics) by finish(). At least every 30 frames
+/// each choice point (with the candidates and queries it holds) and each clip appended to the file's tables
+/// as they are committed, a block (4,096 rows) at a time, and the samples a block of frames at a time as the
+/// frames become final; the rest (the agents' left_frame, summary, metrics) by finish(). Between begin()
+/// and finish() the file is written on a thread of its own, in the order of the calls: each call copies
+/// what it sends and returns (it waits only while 8 blocks wait to be written). At least every 30 frames
 /// the file is flushed and marked readable up to there (its "written" attribute, docs/formats.md): a
 /// writer stopped before finish() (killed, a full disk) leaves a file that read_record_file reads up to
-/// that mark, with a note. write_record_file uses it for a whole record too. Errors: std::runtime_error
-/// "FILE: PLACE: ...".
+/// its last mark written, with a note. write_record_file uses it for a whole record too. Errors:
+/// std::runtime_error "FILE: PLACE: ...", from the call that met them or, met on the writer's thread, from
+/// the next call.
 class H5RecordWriter : public RecordSink {
 public:
     /// Creates (replaces) the file; `graph` and `scenario` name them in the header until the record
