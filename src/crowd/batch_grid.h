@@ -1,6 +1,6 @@
 // The boxes chosen by the choice points of one frame, so each choice point can tell whether a plan
-// committed before it in the same frame (lower agent id) may change its evaluation (paper section 5's
-// choice points, run in parallel: see Simulation in crowd.cpp).
+// committed before it in the same frame (lower agent id), and after the commits its evaluation saw, may
+// change that evaluation (paper section 5's choice points, run in parallel: see Simulation in crowd.cpp).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -18,12 +18,19 @@ class BatchGrid {
 public:
     BatchGrid(double cell, double x0, double y0, double x1, double y1);
 
-    /// Adds the boxes of the batch's choice point `index`; indices are added in increasing order.
-    void add(int index, const std::vector<SpaceTimeBox>& boxes);
-    /// Whether a box added with an index below `below` overlaps `box`.
-    bool any_before(const SpaceTimeBox& box, int below) const;
+    /// Adds the boxes [first, last) of the batch's choice point `index`; indices are added in increasing order.
+    void add(int index, const SpaceTimeBox* first, const SpaceTimeBox* last);
+    void add(int index, const std::vector<SpaceTimeBox>& boxes) {
+        add(index, boxes.data(), boxes.data() + boxes.size());
+    }
+    /// Whether a box added with an index in [from, below) overlaps `box`.
+    bool any_between(const SpaceTimeBox& box, int from, int below) const;
+    /// The largest index in [from, below) whose boxes overlap `box`; -1 when none does.
+    int last_between(const SpaceTimeBox& box, int from, int below) const;
     /// Empties the grid (only the cells used are visited).
     void clear();
+    /// Empties the grid and gives back the memory its cells and lists grew to.
+    void release();
 
 private:
     struct Group {
@@ -31,6 +38,7 @@ private:
         SpaceTimeBox all;        // the union of its boxes
         std::size_t begin, end;  // its boxes in boxes_
     };
+    bool overlaps(const Group& g, const SpaceTimeBox& box) const;  // one of its boxes overlaps `box`
     // Clamped first, so no floor() is needed (a library call): truncation is floor from 0 on. Multiplying
     // by the inverse may put a box one cell over, but add() and any_before() alike. Inline: a call
     // costs as much as the rest.

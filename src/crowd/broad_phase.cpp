@@ -92,29 +92,45 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), e); });
 }
 
-void BroadPhase::insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) {
-    if (items.empty()) return;  // no need to wake the pool
+void BroadPhase::update(const std::vector<int>& removed, const std::vector<Insertion>& inserted,
+                        util::WorkerPool& pool) {
+    // The item table and the hashed cells here (hashing is not thread-safe); the flat cells below.
+    unplacing_.clear();
+    for (int id : removed) {
+        if (!holds(id)) continue;
+        Item& item = items_[std::size_t(id)];
+        const Placing p = placing(entry(item.box, id, item.owner));
+        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)
+            for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
+                if (!flat(ix, iy)) erase(hashed_[key(ix, iy)], id);
+        unplacing_.push_back(p);
+        item.live = false;
+        --live_;
+        count_end(item.box.f1, -1);
+    }
     placing_.clear();
-    for (const Insertion& it : items) {
+    for (const Insertion& it : inserted) {
         if (!enroll(it.id, it.owner, it.box)) continue;
-        const Placing p{entry(it.box, it.id, it.owner), index_x(it.box.x0), index_y(it.box.y0), index_x(it.box.x1),
-                        index_y(it.box.y1)};
-        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)  // hashing is not thread-safe: here
+        const Placing p = placing(entry(it.box, it.id, it.owner));
+        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)
             for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
                 if (!flat(ix, iy)) put(hashed_[key(ix, iy)], p.e);
         placing_.push_back(p);
     }
-    // Bands of columns: a cell belongs to one band, so each cell still receives its items in order (one
-    // band for one thread: each band visits every item).
+    if (unplacing_.empty() && placing_.empty()) return;  // no need to wake the pool
+    // Bands of columns: a cell belongs to one band, so each cell still loses and receives its entries in
+    // order (one band for one thread: each band visits every item).
     const std::int64_t bands = pool.size() > 1 ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
-        for (const Placing& p : placing_) {
+        const auto each_cell = [&](const Placing& p, auto&& f) {
             const std::int64_t ix0 = std::max(lo, p.ix0), ix1 = std::min(hi - 1, p.ix1);
             const std::int64_t iy0 = std::max<std::int64_t>(0, p.iy0), iy1 = std::min(ny_ - 1, p.iy1);
             for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-                for (std::int64_t iy = iy0; iy <= iy1; ++iy) put(flat_[std::size_t(ix * ny_ + iy)], p.e);
-        }
+                for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(flat_[std::size_t(ix * ny_ + iy)]);
+        };
+        for (const Placing& p : unplacing_) each_cell(p, [&](Cell& c) { erase(c, p.e.id); });
+        for (const Placing& p : placing_) each_cell(p, [&](Cell& c) { put(c, p.e); });
     });
 }
 
@@ -132,17 +148,19 @@ void BroadPhase::expire(std::int64_t frame) {
     if (expired_ == std::numeric_limits<std::int64_t>::max()) live_ -= std::exchange(ending_never_, 0);
 }
 
+// A cell's order does not matter (query() sorts its answer): the last entry fills the gap.
+void BroadPhase::erase(Cell& c, int id) {
+    auto& v = c.entries;
+    const auto it = std::find_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; });
+    if (it == v.end()) return;  // dropped with the expired ones
+    *it = v.back();
+    v.pop_back();
+}
+
 void BroadPhase::remove(int id) {
-    if (id < 0 || std::size_t(id) >= items_.size() || !held(items_[std::size_t(id)])) return;
+    if (!holds(id)) return;
     Item& item = items_[std::size_t(id)];
-    // A cell's order does not matter (query() sorts its answer): the last entry fills the gap.
-    cells(item.box, [&](std::int64_t ix, std::int64_t iy) {
-        auto& v = cell(ix, iy).entries;
-        const auto it = std::find_if(v.begin(), v.end(), [id](const Entry& e) { return e.id == id; });
-        if (it == v.end()) return;  // dropped with the expired ones
-        *it = v.back();
-        v.pop_back();
-    });
+    cells(item.box, [&](std::int64_t ix, std::int64_t iy) { erase(cell(ix, iy), id); });
     item.live = false;
     --live_;
     count_end(item.box.f1, -1);

@@ -573,13 +573,25 @@ void Choice::note_query(const SpaceTimeBox& b) {
     queried_boxes_.push_back(b);
 }
 
-bool Choice::affected_by(const BatchGrid& chosen, int below) const {
-    if (queried_boxes_.empty()) return false;
+bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
+    if (queried_boxes_.empty() || from >= below) return false;
     // Their union first: most choice points are far from every other of their frame.
-    if (!chosen.any_before(queried_all_, below)) return false;
+    if (!chosen.any_between(queried_all_, from, below)) return false;
     for (const SpaceTimeBox& b : queried_boxes_)
-        if (chosen.any_before(b, below)) return true;
+        if (chosen.any_between(b, from, below)) return true;
     return false;
+}
+
+int Choice::last_change(const BatchGrid& chosen, int below) const {
+    if (queried_boxes_.empty()) return -1;
+    const int bound = chosen.last_between(queried_all_, 0, below);  // through their union: often none
+    if (bound < 0) return -1;
+    int last = -1;
+    for (const SpaceTimeBox& b : queried_boxes_) {
+        last = std::max(last, chosen.last_between(b, last + 1, below));
+        if (last == bound) break;
+    }
+    return last;
 }
 
 }  // namespace mobb::crowd

@@ -163,10 +163,14 @@ public:
     void prepare(const CrowdState& s, int agent, std::int64_t frame);
     /// Runs the choice against the state as it is now; may be called again after commits.
     void evaluate(const CrowdState& s);
-    /// Whether a plan committed in the same frame by a choice point before this one (index < `below`)
-    /// could change the evaluation: one of its boxes (new pieces, or released ones) overlaps a box this
-    /// evaluation queried. Read-only: choice points check in parallel.
-    bool affected_by(const BatchGrid& chosen, int below) const;
+    /// Whether a plan committed in the same frame by a choice point in [from, below) (batch positions: the
+    /// ones committed since the state this evaluation read, before this one) could change the evaluation:
+    /// one of its boxes (new pieces, or released ones) overlaps a box this evaluation queried. Read-only:
+    /// choice points check in parallel.
+    bool affected_by(const BatchGrid& chosen, int from, int below) const;
+    /// The last batch position before `below` whose plan's boxes in `chosen` overlap a box this evaluation
+    /// queried (affected_by(chosen, that position, below) holds); -1 when none does.
+    int last_change(const BatchGrid& chosen, int below) const;
 
     int agent() const { return agent_; }
     Outcome outcome() const { return outcome_; }

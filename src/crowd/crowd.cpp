@@ -64,60 +64,158 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       moved_(2 * o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1),
       waiting_(o.cell, o.world.x0, o.world.y0, o.world.x1, o.world.y1) {}
 
-// The boxes the frame's plans put in place and the ones they release, by position in the batch.
+// Evaluates the choice point at batch position i against the state as it is now and fills its record
+// entry from the plan: it reads only the state and its slot, so positions run in parallel.
+void Simulation::evaluate(std::size_t i, const CrowdState& s) {
+    Choice& c = slots_[i];
+    c.evaluate(s);
+    record_plan(c, c.point());
+}
+
+// The boxes the frame's plans put in place and the ones they release, by position in the batch: found in
+// parallel (each worker appends to a list of its own), then entered in position order.
 void Simulation::gather(std::size_t n) {
+    found_.resize(std::size_t(pool_.size()));
+    for (std::vector<SpaceTimeBox>& f : found_) f.clear();
+    spans_.resize(n);
+    pool_.for_each(
+        n,
+        [&](std::size_t i, int worker) {
+            std::vector<SpaceTimeBox>& boxes = found_[std::size_t(worker)];
+            const std::size_t begin = boxes.size();
+            slots_[i].boxes(boxes);
+            for (int id : agents_[std::size_t(slots_[i].agent())].reserved)
+                boxes.push_back(box_of(pieces_[std::size_t(id)]));
+            spans_[i] = {worker, begin, boxes.size()};
+        },
+        8);
     chosen_.clear();
     for (std::size_t i = 0; i < n; ++i) {
-        boxes_.clear();
-        slots_[i].boxes(boxes_);
-        for (int id : agents_[std::size_t(slots_[i].agent())].reserved)
-            boxes_.push_back(box_of(pieces_[std::size_t(id)]));
-        chosen_.add(int(i), boxes_);
+        const BoxSpan& b = spans_[i];
+        const SpaceTimeBox* boxes = found_[std::size_t(b.worker)].data();
+        chosen_.add(int(i), boxes + b.begin, boxes + b.end);
+    }
+}
+
+// Whether the evaluation at position i is still the one the state now gives: no plan committed since
+// the state it read (seen_) touches what it queried - plans as first chosen (chosen_; for a first
+// evaluation touched_ holds the answer) or as chosen again (moved_).
+bool Simulation::current(std::size_t i) const {
+    const Choice& c = slots_[i];
+    const int from = seen_[i], below = int(i);
+    const bool first_changed = from == 0 ? touched_[i] >= 0 : c.affected_by(chosen_, from, below);
+    return !first_changed && !c.affected_by(moved_, from, below);
+}
+
+// The evaluation at position p is out of date: p is evaluated again against the state after the commits
+// before it, and with it, in parallel, the next kRound - 1 positions whose first evaluations only plans
+// committed already touched. Their new evaluations stay current unless a commit from p on touches them
+// too (then they are evaluated again in their turn). Rounds depend on the batch alone, not on the thread
+// count.
+void Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s) {
+    constexpr std::size_t kRound = 32;  // enough to share among the threads, few enough to seldom go stale
+    flush();
+    round_.assign(1, p);
+    for (std::size_t k = p + 1; k < n && round_.size() < kRound; ++k)
+        if (seen_[k] == 0 && touched_[k] >= 0 && touched_[k] < int(p)) round_.push_back(k);
+    pool_.for_each(round_.size(), [&](std::size_t r, int) { evaluate(round_[r], s); });
+    for (std::size_t k : round_) seen_[k] = int(p);
+}
+
+// The commit loop is serial and waits on memory (agents, pieces, the broad phase's items, each at a
+// random place, and the evaluations in the other workers' caches): what the commits a few positions on
+// will touch is fetched ahead, in three steps since each step's addresses are read from the one before.
+void Simulation::prefetch_commit(std::size_t i, std::size_t n) {
+    constexpr std::size_t kAhead = 4;  // positions between the steps
+    if (i + 3 * kAhead < n) {
+        const char* a = reinterpret_cast<const char*>(&agents_[std::size_t(slots_[i + 3 * kAhead].agent())]);
+        for (std::size_t b = 0; b < sizeof(Agent); b += 64) __builtin_prefetch(a + b);
+    }
+    if (i + 2 * kAhead < n) {
+        const Agent& a = agents_[std::size_t(slots_[i + 2 * kAhead].agent())];
+        __builtin_prefetch(a.reserved.data());
+        __builtin_prefetch(a.clips.data());
+    }
+    if (i + kAhead < n) {
+        Choice& c = slots_[i + kAhead];  // written by whichever worker evaluated it
+        __builtin_prefetch(&c.taken());
+        __builtin_prefetch(&c.plan());
+        __builtin_prefetch(&c.point());
+        __builtin_prefetch(c.point().candidates.data());
+        for (int id : agents_[std::size_t(c.agent())].reserved) {
+            __builtin_prefetch(&pieces_[std::size_t(id)]);
+            broad_.prefetch(id);
+        }
+        if (stream_) stream_->prefetch(c.agent());
     }
 }
 
 // Four steps, the same for any number of threads: (1) every choice point of the frame is evaluated
 // against the state before the frame (in parallel); (2) the boxes their plans take and release are
-// gathered; (3) each choice point checks whether a plan committed before it in the frame could have
-// changed its evaluation (in parallel); (4) in agent order, such choice points are evaluated again
-// against the state so far, which also catches plans that changed in a re-evaluation, then each commits.
+// gathered; (3) each choice point checks whether a plan chosen before it in the frame could change its
+// evaluation (in parallel); (4) in agent order, each commits once its evaluation is current, which a
+// stale one becomes by evaluating it again against the commits before it (in parallel rounds). The
+// outcome is that of evaluating the choice points one by one in agent order.
 void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     const std::size_t n = batch.size();
     if (slots_.size() < n) slots_.resize(n);
     const CrowdState s = state();
     pool_.for_each(n, [&](std::size_t i, int) {
         slots_[i].prepare(s, batch[i], frame);
-        slots_[i].evaluate(s);
+        evaluate(i, s);
     });
     gather(n);
-    stale_.assign(n, 0);
+    touched_.resize(n);
     pool_.for_each(
-        n, [&](std::size_t i, int) { stale_[i] = slots_[i].affected_by(chosen_, int(i)); }, 8);
+        n, [&](std::size_t i, int) { touched_[i] = slots_[i].last_change(chosen_, int(i)); }, 8);
+    seen_.assign(n, 0);
     moved_.clear();
     for (std::size_t i = 0; i < n; ++i) {
+        prefetch_commit(i, n);
+        if (!current(i)) reevaluate_from(i, n, s);
         Choice& c = slots_[i];
-        if (stale_[i] || c.affected_by(moved_, int(i))) {
-            flush();
-            c.evaluate(s);
-            ++out_.summary.reevaluated;
-            boxes_.clear();
-            c.boxes(boxes_);
-            moved_.add(int(i), boxes_);
-        }
+        // Position 0 is always current: seen_ > 0 marks a re-evaluation, before which the record's live
+        // count leaves out the pieces released so far (see commit()).
+        const bool again = seen_[i] > 0;
+        if (again) flushed_held_ = released_held_;
         commit(c);
+        if (!again) continue;
+        ++out_.summary.reevaluated;
+        boxes_.clear();
+        c.boxes(boxes_);
+        moved_.add(int(i), boxes_);
     }
     flush();
     apply_waiting();
     unused_.insert(unused_.end(), left_.begin(), left_.end());
     left_.clear();
+    if (frame == 0) release_batch();
+}
+
+// The first frame holds every agent's first choice point; a later one holds the agents whose clips end
+// there, a few percent of them. What the first grew (the slots and their lists, the batch's boxes) is
+// given back after it rather than held for the whole run: at a million agents, gigabytes.
+void Simulation::release_batch() {
+    slots_ = {};
+    found_ = {};
+    spans_ = {};
+    touched_ = {};
+    seen_ = {};
+    chosen_.release();
+    moved_.release();
+}
+
+void Simulation::release(int id) {
+    released_.push_back(id);
+    if (broad_.holds(id)) ++released_held_;
 }
 
 // Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
 void Simulation::flush() {
-    for (int id : released_) broad_.remove(id);
+    released_held_ = flushed_held_ = 0;
+    broad_.update(released_, pending_, pool_);
     left_.insert(left_.end(), released_.begin(), released_.end());
     released_.clear();
-    broad_.insert_all(pending_, pool_);
     pending_.clear();
 }
 
@@ -181,7 +279,7 @@ void Simulation::reserve(int agent, int choice, const Plan& plan) {
     MOBB_ASSERT(agent >= 0 && std::size_t(agent) < agents_.size());
     MOBB_ASSERT(plan.escape.empty() || plan.hold);  // an escape ends on held ground
     Agent& a = agents_[std::size_t(agent)];
-    for (int id : a.reserved) released_.push_back(id);
+    for (int id : a.reserved) release(id);
     a.reserved.clear();
     Piece p;
     p.agent = agent;
@@ -230,8 +328,11 @@ void Simulation::apply_waiting() {
 
 void Simulation::commit(Choice& c) {
     ChoicePoint& cp = c.point();
-    // Every piece live now overlaps the candidates in time (it started before and ends after).
-    const std::uint64_t pairs = (broad_.size() + pending_.size()) * std::uint64_t(c.queried());
+    // Every piece live now overlaps the candidates in time (it started before and ends after). Live as the
+    // record has always counted them: the released pieces out once a stale choice point before in the
+    // frame was evaluated again, as when each was evaluated again alone, after a flush.
+    const std::size_t live = broad_.size() + pending_.size() - flushed_held_;
+    const std::uint64_t pairs = live * std::uint64_t(c.queried());
     cp.pruned = pairs > c.near_total() ? pairs - c.near_total() : 0;
     out_.summary.time_pairs += pairs;
     if (o_.log_queries) log_queries(c);
@@ -260,7 +361,6 @@ void Simulation::commit(Choice& c) {
     if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
     note_waiting(c.agent(), end);
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
-    record_plan(c, cp);
     count(c, cp);
     if (o_.sink && o_.record_queries) return o_.sink->choice(std::size_t(choice), cp);  // the record keeps none
     if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
@@ -318,7 +418,7 @@ void Simulation::leave(int agent, std::int64_t frame) {
     Agent& a = agents_[std::size_t(agent)];
     MOBB_ASSERT(!a.left_frame && !a.clips.empty());  // leaves once, after a clip (its track has samples)
     a.left_frame = frame;
-    for (int id : a.reserved) released_.push_back(id);
+    for (int id : a.reserved) release(id);
     a.reserved.clear();
     a.plan = {};
     if (stream_) stream_->left(agent, frame);
@@ -400,7 +500,10 @@ CrowdRun Simulation::run(const std::function<void(double)>& progress) {
     s.simulated_seconds = double(r.frames) * r.dt;
     s.threads = o_.threads;
     if (policy_->avoids()) reserve_starts();
-    if (o_.sink) start_stream();
+    if (o_.sink) {
+        start_stream();
+        stream_->share(pool_);
+    }
     run_frames(progress);
     if (stream_) return finish_stream(start, progress);
     fill_samples();

@@ -47,35 +47,16 @@ void FrameStream::finish() {
     while (next_ < header_.frames) emit(std::min(block_, header_.frames - next_));
 }
 
-// Frames next_ .. next_ + count - 1: each agent's disk from the clip playing then (the core's own
-// transform, so the check rounds as the queries do), checked, measured and handed to the sink.
+// Frames next_ .. next_ + count - 1: each agent's disks, checked, measured and handed to the sink.
 void FrameStream::emit(std::int64_t count) {
     const auto start = Clock::now();
+    util::WorkerPool one(1);
+    util::WorkerPool& pool = pool_ ? *pool_ : one;
     const std::size_t n = tracks_.size();
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (std::size_t a = 0; a < n; ++a) {
-        Track& t = tracks_[a];
-        for (std::int64_t k = 0; k < count; ++k) {
-            const std::int64_t f = next_ + k;
-            const std::size_t at = std::size_t(k) * n + a;
-            if (f >= t.left) {
-                disks_[at] = {nan, nan, nan, nan};
-                fallback_[at] = 0;
-                continue;
-            }
-            while (t.k + 1 < t.clips.size() && t.clips[t.k + 1].start <= f) t.m = Rigid2::of(t.clips[++t.k].place);
-            const PlacedClip& c = t.clips[t.k];
-            const Path& path = g_.clips[std::size_t(c.clip)].path;
-            MOBB_ASSERT(f >= c.start && std::size_t(f - c.start) < path.size());  // final: its clips cover it
-            const Sample& s = path.samples[std::size_t(f - c.start)];
-            disks_[at] = {double(f) * g_.dt(), t.m.apply_x(s.x, s.y), t.m.apply_y(s.x, s.y), s.r};
-            fallback_[at] = c.fallback;
-        }
-        t.clips.erase(t.clips.begin(), t.clips.begin() + std::ptrdiff_t(t.k));
-        t.k = 0;
-    }
+    place(count, pool);
     for (std::int64_t k = 0; k < count; ++k)
         check(next_ + k, &disks_[std::size_t(k) * n], &fallback_[std::size_t(k) * n]);
+    metrics_.frames(next_, count, disks_.data(), pool);
     FrameBlock block;
     block.first = next_;
     block.count = count;
@@ -84,6 +65,37 @@ void FrameStream::emit(std::int64_t count) {
     seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
     sink_.frames(block);  // the file's time counts as the record's, not the check's
     next_ += count;
+}
+
+// Each agent's disk at frames next_ .. next_ + count - 1 from the clip playing then (the core's own
+// transform, so the check rounds as the queries do), by agents in parallel: each reads its own track.
+void FrameStream::place(std::int64_t count, util::WorkerPool& pool) {
+    constexpr std::size_t kAgents = 512;  // agents per task
+    const std::size_t n = tracks_.size();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    pool.for_each((n + kAgents - 1) / kAgents, [&](std::size_t task, int) {
+        for (std::size_t a = task * kAgents; a < std::min(n, (task + 1) * kAgents); ++a) {
+            Track& t = tracks_[a];
+            for (std::int64_t k = 0; k < count; ++k) {
+                const std::int64_t f = next_ + k;
+                const std::size_t at = std::size_t(k) * n + a;
+                if (f >= t.left) {
+                    disks_[at] = {nan, nan, nan, nan};
+                    fallback_[at] = 0;
+                    continue;
+                }
+                while (t.k + 1 < t.clips.size() && t.clips[t.k + 1].start <= f) t.m = Rigid2::of(t.clips[++t.k].place);
+                const PlacedClip& c = t.clips[t.k];
+                const Path& path = g_.clips[std::size_t(c.clip)].path;
+                MOBB_ASSERT(f >= c.start && std::size_t(f - c.start) < path.size());  // final: its clips cover it
+                const Sample& s = path.samples[std::size_t(f - c.start)];
+                disks_[at] = {double(f) * g_.dt(), t.m.apply_x(s.x, s.y), t.m.apply_y(s.x, s.y), s.r};
+                fallback_[at] = c.fallback;
+            }
+            t.clips.erase(t.clips.begin(), t.clips.begin() + std::ptrdiff_t(t.k));
+            t.k = 0;
+        }
+    });
 }
 
 // The frame-by-frame contact check of one frame (as frame_contacts does it on a whole record), and the
@@ -108,7 +120,7 @@ void FrameStream::check(std::int64_t frame, const std::array<double, 4>* disks, 
         ++contacts_;
         excused_ += c.excused;
     }
-    metrics_.frame(frame, disks, found_.data(), found_.size());
+    metrics_.contacts(frame, disks, found_.data(), found_.size());
 }
 
 }  // namespace mobb::crowd

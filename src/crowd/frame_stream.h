@@ -15,6 +15,7 @@
 #include "mobb/core/path.h"
 #include "mobb/crowd/motion_graph.h"
 #include "mobb/crowd/record.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::crowd {
 
@@ -27,8 +28,16 @@ public:
     /// `header`: the run's header and its tracks' goals (RecordSink::begin), kept by reference.
     FrameStream(const MotionGraph& graph, const Record& header, RecordSink& sink, double goal_radius);
 
+    /// The agents' disks and metrics of each block are then found by `pool`'s workers (one thread without).
+    void share(util::WorkerPool& pool) { pool_ = &pool; }
     /// A clip agent `agent` committed: to the sink, and kept until its frames are out.
     void clip(int agent, const PlacedClip& clip);
+    /// Fetches agent `agent`'s track into the cache ahead of clip().
+    void prefetch(int agent) const {
+        const Track& t = tracks_[std::size_t(agent)];
+        __builtin_prefetch(&t);
+        __builtin_prefetch(t.clips.data() + t.clips.size());
+    }
     /// The agent left the run at `frame`: its disks are NaN from then on.
     void left(int agent, std::int64_t frame);
     /// Frames before `frame` are final: whole blocks of them go out.
@@ -51,6 +60,7 @@ private:
         std::int64_t left = std::numeric_limits<std::int64_t>::max();
     };
     void emit(std::int64_t count);
+    void place(std::int64_t count, util::WorkerPool& pool);
     void check(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback);
 
     const MotionGraph& g_;
@@ -59,6 +69,7 @@ private:
     MetricsStream metrics_;
     std::vector<Track> tracks_;
     std::int64_t next_ = 0;  // the first frame not out yet
+    util::WorkerPool* pool_ = nullptr;
     const std::int64_t block_;
     std::vector<std::array<double, 4>> disks_;  // a block, frame-major
     std::vector<char> fallback_;                // per disk: a fallback clip plays then

@@ -27,8 +27,8 @@ MetricsStream::MetricsStream(const Record& header, const MotionGraph& graph, dou
     for (const Polygon& p : solids_) boxes_.push_back(bounds(p));
 }
 
-void MetricsStream::frame(std::int64_t f, const std::array<double, 4>* disks, const Contact* contacts,
-                          std::size_t count) {
+void MetricsStream::contacts(std::int64_t f, const std::array<double, 4>* disks, const Contact* contacts,
+                             std::size_t count) {
     for (std::size_t k = 0; k < count; ++k) {
         const Contact& c = contacts[k];
         const auto& p = disks[std::size_t(c.a)];
@@ -45,18 +45,35 @@ void MetricsStream::frame(std::int64_t f, const std::array<double, 4>* disks, co
     }
     for (auto it = last_contact_.begin(); it != last_contact_.end();)
         it = it->second < f ? last_contact_.erase(it) : std::next(it);
-    for (std::size_t a = 0; a < tracks_.size(); ++a) {
-        if (tracks_[a].ended) continue;
-        if (std::isnan(disks[a][0])) {
-            tracks_[a].left = true;
-            end(a);
-        } else {
-            sample(a, f, disks[a]);
-        }
-    }
 }
 
-void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s) {
+void MetricsStream::frames(std::int64_t first, std::int64_t count, const std::array<double, 4>* disks,
+                           util::WorkerPool& pool) {
+    constexpr std::size_t kAgents = 512;  // agents per task: enough work to share, little to wait for at the end
+    const std::size_t n = tracks_.size();
+    std::vector<Counts> counts(std::size_t(pool.size()));
+    pool.for_each((n + kAgents - 1) / kAgents, [&](std::size_t task, int worker) {
+        for (std::size_t a = task * kAgents; a < std::min(n, (task + 1) * kAgents); ++a)
+            for (std::int64_t k = 0; k < count && !tracks_[a].ended; ++k) {
+                const std::array<double, 4>& disk = disks[std::size_t(k) * n + a];
+                if (std::isnan(disk[0])) {
+                    tracks_[a].left = true;
+                    end(a, counts[std::size_t(worker)]);
+                } else {
+                    sample(a, first + k, disk, counts[std::size_t(worker)]);
+                }
+            }
+    });
+    for (const Counts& c : counts) add(c);
+}
+
+void MetricsStream::add(const Counts& counts) {
+    m_.samples_outside += counts.samples_outside;
+    m_.obstacle_contacts += counts.obstacle_contacts;
+    idle_ += counts.idle;
+}
+
+void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts) {
     Track& t = tracks_[a];
     const double x = s[1], y = s[2];
     if (t.n == 0) t.start = {x, y};
@@ -74,21 +91,21 @@ void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<doubl
         t.length += step;
         if (t.reached < 0 || f - 1 < t.reached) t.to_goal += step;
     }
-    if (!header_.world.inside(x, y)) ++m_.samples_outside;
+    if (!header_.world.inside(x, y)) ++counts.samples_outside;
     ring_[a * ring_size_ + std::size_t(f) % ring_size_] = {x, y};
     t.n = f + 1;
-    solid(a, f, s);
-    idle(a, t);
+    solid(a, f, s, counts);
+    idle(a, t, counts);
     effort(a, t);
 }
 
-void MetricsStream::solid(std::size_t a, std::int64_t f, const std::array<double, 4>& s) {
+void MetricsStream::solid(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts) {
     for (std::size_t k = 0; k < solids_.size(); ++k) {
         const auto& b = boxes_[k];
         if (s[1] + s[3] < b[0] || s[1] - s[3] > b[2] || s[2] + s[3] < b[1] || s[2] - s[3] > b[3]) continue;
         if (!disk_overlaps(solids_[k], s[1], s[2], s[3])) continue;
         Track& t = tracks_[a];
-        ++m_.obstacle_contacts;
+        ++counts.obstacle_contacts;
         if (t.last_solid + 1 < f) ++t.collisions;
         t.last_solid = f;
         return;
@@ -97,7 +114,7 @@ void MetricsStream::solid(std::size_t a, std::int64_t f, const std::array<double
 
 // The frames whose idle window has its last frame in (metrics.cpp's `idle_frames`); at the track's end,
 // the rest, their windows cut there.
-void MetricsStream::idle(std::size_t a, Track& t) {
+void MetricsStream::idle(std::size_t a, Track& t, Counts& counts) {
     const double dt = header_.dt;
     while (!t.idle_done) {
         const std::int64_t f = t.idle_next;
@@ -112,7 +129,7 @@ void MetricsStream::idle(std::size_t a, Track& t) {
         const auto &p = at(a, lo), &q = at(a, hi);
         const double d = std::hypot(q[0] - p[0], q[1] - p[1]);
         if (hi > lo && d / (double(hi - lo) * dt) < CrowdMetrics::kIdleSpeed) {
-            ++idle_;
+            ++counts.idle;
             t.longest = std::max(t.longest, ++t.run);
         } else {
             t.run = 0;
@@ -158,17 +175,19 @@ void MetricsStream::effort(std::size_t a, Track& t) {
     }
 }
 
-void MetricsStream::end(std::size_t a) {
+void MetricsStream::end(std::size_t a, Counts& counts) {
     Track& t = tracks_[a];
     t.ended = true;
     if (t.n == 0) return;
-    idle(a, t);
+    idle(a, t, counts);
     effort(a, t);
 }
 
 CrowdMetrics MetricsStream::finish(std::uint64_t choice_points, std::uint64_t fallbacks) {
+    Counts counts;
     for (std::size_t a = 0; a < tracks_.size(); ++a)
-        if (!tracks_[a].ended) end(a);
+        if (!tracks_[a].ended) end(a, counts);
+    add(counts);
     CrowdMetrics m = m_;
     m.choice_points = choice_points;
     m.fallbacks = fallbacks;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mobb/crowd/metrics.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::crowd {
 
@@ -19,9 +20,13 @@ public:
     /// `header`: the run's dt, frames, world and its tracks' goals; goal_radius in metres.
     MetricsStream(const Record& header, const MotionGraph& graph, double goal_radius);
 
-    /// Frame `frame` (frames come in order from 0): every agent's disk [t, x, y, r], NaN from the frame it
-    /// left on, and the frame's contacts (frame_contacts' order).
-    void frame(std::int64_t frame, const std::array<double, 4>* disks, const Contact* contacts, std::size_t count);
+    /// The contacts of frame `frame` (frame_contacts' order), frames in order from 0, and `disks` its
+    /// every agent's disk [t, x, y, r] (NaN from the frame it left on).
+    void contacts(std::int64_t frame, const std::array<double, 4>* disks, const Contact* contacts, std::size_t count);
+    /// Frames first .. first + count - 1, once contacts() had them: every agent's disks, frame-major
+    /// (disks[k * agents + a] at frame first + k). The agents are measured in parallel by `pool`'s
+    /// workers: each one's state is its own, and the counts they share are integers (summed in any order).
+    void frames(std::int64_t first, std::int64_t count, const std::array<double, 4>* disks, util::WorkerPool& pool);
     /// After the run's last frame: the metrics, with the run's choice points and fallbacks (CrowdSummary).
     CrowdMetrics finish(std::uint64_t choice_points, std::uint64_t fallbacks);
 
@@ -42,11 +47,16 @@ private:
         int collisions = 0;            // episodes (metrics.cpp's `episodes`)
     };
 
-    void sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s);
-    void solid(std::size_t a, std::int64_t f, const std::array<double, 4>& s);
-    void idle(std::size_t a, Track& t);
+    struct Counts {  // what the agents add to the crowd's counts, one per worker
+        std::uint64_t samples_outside = 0, obstacle_contacts = 0, idle = 0;
+    };
+
+    void sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts);
+    void solid(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts);
+    void idle(std::size_t a, Track& t, Counts& counts);
     void effort(std::size_t a, Track& t);
-    void end(std::size_t a);
+    void end(std::size_t a, Counts& counts);
+    void add(const Counts& counts);
     const std::array<double, 2>& at(std::size_t a, std::int64_t f) const {
         return ring_[a * ring_size_ + std::size_t(f) % ring_size_];
     }

@@ -43,12 +43,18 @@ private:
     [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void note_waiting(int agent, std::int64_t end);
     void apply_waiting();
+    void evaluate(std::size_t i, const CrowdState& s);
     void gather(std::size_t n);
+    bool current(std::size_t i) const;
+    void prefetch_commit(std::size_t i, std::size_t n);
+    void reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s);
+    void release_batch();
     int add_piece(const Piece& piece, bool pending);
     void reserve(int agent, int choice, const Plan& plan);
     void commit(Choice& c);
     void record_plan(const Choice& c, ChoicePoint& cp) const;
     void count(const Choice& c, const ChoicePoint& cp);
+    void release(int id);
     void flush();
     void log_queries(const Choice& c);
     void fill_samples();
@@ -68,10 +74,20 @@ private:
     BroadPhase broad_;                            // pieces live now
     std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
     std::vector<int> released_;                   // released in this frame, still in broad_
-    BatchGrid chosen_;                            // boxes of the current batch's plans, by position
-    std::vector<char> stale_;                     // per position: a plan chosen before may change it
-    BatchGrid moved_;                             // boxes of the current batch's plans chosen again on re-evaluation
-    std::vector<SpaceTimeBox> boxes_;             // scratch: one choice point's boxes
+    std::size_t released_held_ = 0;               // how many of released_ broad_ holds
+    std::size_t flushed_held_ = 0;                // how many of those the live count (commit) leaves out
+    struct BoxSpan {  // the boxes a position's first plan takes and releases: found_[worker][begin, end)
+        int worker;
+        std::size_t begin, end;
+    };
+    std::vector<std::vector<SpaceTimeBox>> found_;  // per worker: the boxes it found
+    std::vector<BoxSpan> spans_;                    // per position: its boxes in found_
+    BatchGrid chosen_;                              // the same, by position
+    std::vector<int> touched_;        // per position: the last one before whose first plan may change it, or -1
+    std::vector<int> seen_;           // per position: the positions committed when last evaluated
+    std::vector<std::size_t> round_;  // scratch: the positions evaluated again together
+    BatchGrid moved_;  // boxes of the current batch's plans chosen again on re-evaluation, once committed
+    std::vector<SpaceTimeBox> boxes_;  // scratch: one choice point's boxes
     std::vector<Agent> agents_;
     std::vector<Piece> pieces_;                      // by broad-phase id
     std::int64_t placed_ = 0;                        // pieces placed so far (the next Piece::seq)

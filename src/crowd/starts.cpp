@@ -42,6 +42,7 @@ void Simulation::place_at_random(double gap, double margin) {
         return true;
     };
     util::Random rng(o_.seed);
+    agents_.reserve(std::size_t(o_.agents));
     for (int a = 0; a < o_.agents; ++a) {
         Placement p;
         bool ok = false;
@@ -66,6 +67,7 @@ void Simulation::place_agents() {
         if (!policy_->avoids()) return place_at_random(2 * max_radius(), max_radius());
         return place_at_random(2 * escapes_.hold_radius, escapes_.wall_clearance);
     }
+    agents_.reserve(o_.placed.size());
     for (const AgentSpec& s : o_.placed) {
         Placement p = s.start;
         p.t0 = 0;

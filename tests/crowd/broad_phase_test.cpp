@@ -123,7 +123,7 @@ TEST(BroadPhase, InsertAllMatchesInsertingOneByOne) {
     EXPECT_EQ(out.size(), batch.size() - 1);
 }
 
-// Inserts (one by one and by batches), removals and expiry in random order, frame after frame, the
+// Inserts and removals (one by one and by batches), and expiry in random order, frame after frame, the
 // boxes spanning several cells, some beyond the flat cells: every query answers as a scan of the items
 // held (cells compacted lazily must never lose or revive an item).
 TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
@@ -145,6 +145,16 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
     for (std::int64_t frame = 0; frame < 120; ++frame) {
         bp.expire(frame);
         for (std::size_t i = 0; i < held.size(); ++i) held[i] = held[i] && boxes[i].f1 > frame;
+        // Removals one by one, or with the batch's insertions (some ids twice, or not held).
+        std::vector<int> gone;
+        for (int k = int(rng() % 6); k > 0 && !boxes.empty(); --k) {
+            const int id = int(rng() % boxes.size());
+            if (rng() % 2)
+                bp.remove(id);
+            else
+                gone.push_back(id);
+            held[std::size_t(id)] = 0;
+        }
         std::vector<BroadPhase::Insertion> batch;
         for (int k = int(rng() % 12); k > 0; --k) {
             const int id = int(boxes.size());
@@ -156,12 +166,10 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             else
                 batch.push_back({id, owners.back(), boxes.back()});
         }
-        bp.insert_all(batch, pool);
-        for (int k = int(rng() % 4); k > 0 && !boxes.empty(); --k) {
-            const int id = int(rng() % boxes.size());
-            bp.remove(id);
-            held[std::size_t(id)] = 0;
-        }
+        if (rng() % 2)
+            bp.update(gone, batch, pool);
+        else
+            bp.insert_all(batch, pool), bp.update(gone, {}, pool);
         if (rng() % 3 == 0 && !boxes.empty()) {  // an id inserted again replaces its item
             const int id = int(rng() % boxes.size());
             boxes[std::size_t(id)] = random_box(frame);
@@ -169,7 +177,10 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             held[std::size_t(id)] = 1;
         }
         std::size_t live = 0;
-        for (char h : held) live += std::size_t(h);
+        for (std::size_t i = 0; i < held.size(); ++i) {
+            live += std::size_t(held[i]);
+            wrong += bp.holds(int(i)) != bool(held[i]);
+        }
         wrong += bp.size() != live;
         for (int q = 0; q < 20; ++q) {
             const SpaceTimeBox box = random_box(frame);

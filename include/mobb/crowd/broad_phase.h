@@ -63,7 +63,10 @@ public:
     /// The same as insert() of each, in order, for distinct ids that are not held; the flat cells are filled
     /// by `pool`'s workers, each owning a band of grid columns (the crowd commits a frame's clips at
     /// once). Throws std::invalid_argument for a negative id.
-    void insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool);
+    void insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) { update({}, items, pool); }
+    /// The same as remove() of each of `removed`, then insert_all(`inserted`): the flat cells lose and
+    /// gain their entries by bands of columns, in parallel (the crowd's released pieces and its commits).
+    void update(const std::vector<int>& removed, const std::vector<Insertion>& inserted, util::WorkerPool& pool);
     /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
     /// Drops every item whose box ends at or before `frame` (f1 <= frame): they are no longer reported
@@ -76,6 +79,12 @@ public:
     void query(const SpaceTimeBox& box, int owner, std::vector<int>& out, bool ascending = true) const;
     /// Items held.
     std::size_t size() const { return live_; }
+    /// Fetches item `id`'s entry into the cache ahead of holds() or remove() (no effect on the grid).
+    void prefetch(int id) const {
+        if (id >= 0 && std::size_t(id) < items_.size()) __builtin_prefetch(&items_[std::size_t(id)]);
+    }
+    /// Whether item `id` is held: inserted, and neither removed nor expired since.
+    bool holds(int id) const { return id >= 0 && std::size_t(id) < items_.size() && held(items_[std::size_t(id)]); }
 
 private:
     struct Item {
@@ -95,7 +104,7 @@ private:
         std::vector<Entry> entries;
         std::int64_t ends = std::numeric_limits<std::int64_t>::max();  // no entry ends before (a lower bound)
     };
-    struct Placing {  // an item of insert_all(): its entry and the cells it covers
+    struct Placing {  // an item of update(): its entry and the cells it covers
         Entry e;
         std::int64_t ix0 = 0, iy0 = 0, ix1 = 0, iy1 = 0;
     };
@@ -115,6 +124,10 @@ private:
     Cell& cell(std::int64_t ix, std::int64_t iy);
     bool flat(std::int64_t ix, std::int64_t iy) const { return 0 <= ix && ix < nx_ && 0 <= iy && iy < ny_; }
     bool enroll(int id, int owner, const SpaceTimeBox& box);
+    Placing placing(const Entry& e) const {
+        return {e, index_x(e.box.x0), index_y(e.box.y0), index_x(e.box.x1), index_y(e.box.y1)};
+    }
+    static void erase(Cell& c, int id);
     void put(Cell& c, const Entry& e) const;
     const Cell* find(std::int64_t ix, std::int64_t iy) const;
     static std::uint64_t key(std::int64_t ix, std::int64_t iy) {
@@ -129,7 +142,8 @@ private:
     std::vector<Cell> flat_;
     std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;
-    std::vector<Placing> placing_;  // scratch of insert_all()
+    std::vector<Placing> placing_;    // scratch of update(): the items inserted
+    std::vector<Placing> unplacing_;  // scratch of update(): the items removed
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
     // Items held, by the frame they end at: counted in an array for frames [0, kFlatEnds) (a clip's end;
