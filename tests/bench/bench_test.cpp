@@ -57,12 +57,19 @@ void expect_shape(const BenchTable& t, bool stepping) {
     EXPECT_GT(t.rows[2].tests2d, 0.0);
     const nlohmann::json j = nlohmann::json::parse(table_json(t));
     ASSERT_EQ(j["rows"].size(), t.rows.size());
+    int defaults = 0;
     for (const auto& row : j["rows"]) {
         EXPECT_TRUE(row["method"].is_string());
         if (row["method"] != "FCL" || fcl_built()) {
             EXPECT_TRUE(row["us_per_query"].is_number()) << row["method"];
         }
+        ASSERT_TRUE(row["default"].is_boolean()) << row["method"];
+        if (row["default"]) {
+            ++defaults;
+            EXPECT_EQ(row["method"], label(kDefaultMethod));
+        }
     }
+    EXPECT_EQ(defaults, 1);  // the library's default query's row, and only it
     EXPECT_EQ(j["targets"].size(), t.targets.size());
     const std::string md = table_markdown(t);
     EXPECT_NE(md.find("| Method | Time (us) | x sweep | #2D | #3D | #sample |"), std::string::npos);

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "approx_rotation.h"
 #include "mobb/core/brute.h"
 #include "mobb/core/scan.h"
 #include "mobb/core/sweep.h"
@@ -234,6 +235,63 @@ TEST(FastQueryTest, HierarchyCirclesHoldEveryDisk) {
         for (std::size_t b = c.count; b < c.count + 8; ++b) EXPECT_TRUE(std::isnan(c.x[b]) && std::isnan(c.r[b]));
     }
     EXPECT_EQ(idx.level(idx.levels() - 1).count, 1u);
+}
+
+// The sliding windows the sweep tests A's blocks against: window g of phase p holds every disk of
+// samples [s g + p - 1, s g + p + s + 1); windows without samples and the padding are NaN.
+TEST(FastQueryTest, WindowsHoldEveryDisk) {
+    std::mt19937_64 rng(37);
+    for (int n : {1, 2, 17, 33, 100, 777}) {
+        const Path p = test::random_walk(rng, n);
+        const ClipIndex idx = ClipIndex::build(p);
+        for (int shift : {0, ClipIndex::kLeafShift, ClipIndex::kLeafShift + 1}) {
+            const std::int64_t s = std::int64_t(1) << shift;
+            for (std::int64_t phase = 0; phase < s; ++phase) {
+                const Circles w = idx.windows(shift, int(phase));
+                ASSERT_EQ(w.count, std::size_t(n / s + 3));
+                for (std::int64_t g = -1; g + 1 < std::int64_t(w.count); ++g) {
+                    const auto e = std::size_t(g + 1);
+                    const std::int64_t first = std::max<std::int64_t>(0, s * g + phase - 1);
+                    const std::int64_t end = std::min<std::int64_t>(n, s * g + phase + s + 1);
+                    if (first >= end) {
+                        EXPECT_TRUE(std::isnan(w.x[e]) && std::isnan(w.r[e])) << n << " " << s << " " << g;
+                        continue;
+                    }
+                    for (std::int64_t i = first; i < end; ++i) {
+                        const Sample& sm = p.samples[std::size_t(i)];
+                        EXPECT_LE(std::hypot(sm.x - w.x[e], sm.y - w.y[e]) + sm.r, double(w.r[e]));
+                    }
+                }
+                const std::size_t padding = shift == 0 ? 16 : 4;
+                for (std::size_t e = w.count; e < w.count + padding; ++e) EXPECT_TRUE(std::isnan(w.x[e]));
+            }
+        }
+    }
+}
+
+// The sweep's approximate rotations stay within their bound (the filters' margins depend on it),
+// at random angles up to the range's end and next to every quadrant boundary up to 1e6 rad.
+TEST(FastQueryTest, ApproximateRotationsWithinTheirBound) {
+    std::mt19937_64 rng(38);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    double worst = 0;
+    const auto check = [&worst](double x0, double x1) {
+        double c0 = 0, s0 = 0, c1 = 0, s1 = 0;
+        ASSERT_TRUE(detail::approx_cos_sin2(x0, x1, c0, s0, c1, s1)) << x0 << " " << x1;
+        worst = std::max({worst, std::abs(c0 - std::cos(x0)), std::abs(s0 - std::sin(x0)), std::abs(c1 - std::cos(x1)),
+                          std::abs(s1 - std::sin(x1))});
+    };
+    for (int i = 0; i < 200000; ++i) {
+        const double scale = i % 3 == 0 ? 4.0 : (i % 3 == 1 ? 1e3 : detail::kApproxCosSinRange);
+        check(u(rng) * scale, u(rng) * scale);
+    }
+    for (std::int64_t k = -636619; k <= 636619; k += 997)
+        for (double e : {-1e-7, 0.0, 1e-7})
+            check(double(k) * 1.5707963267948966 + e, double(-k) * 0.7853981633974483 - e);
+    EXPECT_LT(worst, detail::kApproxCosSinError / 4);
+    double c = 0, s = 0;
+    EXPECT_FALSE(detail::approx_cos_sin2(1.0000001e6, 0.0, c, s, c, s));
+    EXPECT_FALSE(detail::approx_cos_sin2(0.0, NAN, c, s, c, s));
 }
 
 // Long clips (many sweep chunks) at every time offset, both orders, close placements so most

@@ -3,6 +3,7 @@
 // queried under any placement.
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "mobb/core/obb.h"
@@ -37,32 +38,52 @@ public:
     static ClipIndex build(Path path);
 
     const Path& path() const { return path_; }
-    std::size_t size() const { return path_.size(); }
+    std::size_t size() const { return size_; }
     /// Root MOBB (paper 3.1, chord axis, conservative margin): the 1-level test of both queries.
     const Obb2& root_box() const { return root_; }
     /// Sample columns as float, padded with zeros to size() + 16 so blocks of 16 loads stay in bounds.
-    const float* xs() const { return x_.data(); }
-    const float* ys() const { return y_.data(); }
-    const float* rs() const { return r_.data(); }
+    const float* xs() const { return samples_.x; }
+    const float* ys() const { return samples_.y; }
+    const float* rs() const { return samples_.r; }
     int levels() const { return int(levels_.size()); }
-    /// Level k's circles, 0 <= k < levels().
-    Circles level(int k) const {
-        const Columns& c = levels_[std::size_t(k)];
-        return {c.x.data(), c.y.data(), c.r.data(), c.x.size() - 8};
+    /// Level k's circles, 0 <= k < levels(); 8 NaN entries follow the last.
+    Circles level(int k) const { return levels_[std::size_t(k)]; }
+    /// Sliding windows for time-aligned tests against another clip's aligned blocks of s = 1 << shift
+    /// samples (shift 0: single samples; kLeafShift; kLeafShift + 1). Window g of phase p,
+    /// 0 <= p < s, holds samples [s g + p - 1, s g + p + s + 1) clipped to the path: for a block
+    /// [s k, s k + s) of the other clip whose time-aligned partners lie on diagonals j - i in
+    /// [m - 1, m + 1], m = s G + p, they all lie in window k + G. Entry g + 1 holds window g, for
+    /// g = -1 .. size() / s + 1; windows without samples are NaN, and so are the padding entries
+    /// that follow (16 for shift 0, so blocks of 16 loads stay in bounds; 4 otherwise).
+    Circles windows(int shift, int phase) const {
+        const Windows& w = windows_[shift == 0 ? 0 : shift - kLeafShift + 1];
+        const float* x = w.x + std::size_t(phase) * 3 * w.stride;
+        return {x, x + w.stride, x + 2 * w.stride, w.count};
     }
     /// Largest |x| + |y| of any sample (metres) and largest radius: scale for rounding margins.
     double max_abs() const { return max_abs_; }
     double max_radius() const { return max_r_; }
+    /// max_abs() + max_radius().
+    double reach() const { return reach_; }
 
 private:
-    struct Columns {
-        std::vector<float> x, y, r;
+    // The windows of one shift: phase p's columns x, y, r (each `stride` floats long) at
+    // x + 3 p stride.
+    struct Windows {
+        const float* x = nullptr;
+        std::size_t stride = 0, count = 0;
     };
     Path path_;
     Obb2 root_;
-    std::vector<float> x_, y_, r_;
-    std::vector<Columns> levels_;
-    double max_abs_ = 0, max_r_ = 0;
+    // Every float column in one allocation, never changed after build(): copies share it, so the
+    // columns' pointers below stay valid in every copy.
+    std::shared_ptr<const std::vector<float>> floats_;
+    Circles samples_;
+    std::vector<Circles> levels_;
+    static constexpr int kWindowShifts = 3;  // 0, kLeafShift, kLeafShift + 1
+    Windows windows_[kWindowShifts];
+    std::size_t size_ = 0;
+    double max_abs_ = 0, max_r_ = 0, reach_ = 0;
 };
 
 }  // namespace mobb
