@@ -66,9 +66,11 @@ unsigned block_mask(const SweepQuery& q, int shift, const Circles& ca, std::int6
 // than the scan.
 bool scan_blocks(const SweepQuery& q, int shift, unsigned mask, std::int64_t base) {
     while (mask) {
-        const int first = __builtin_ctz(mask), len = __builtin_ctz(~(mask >> first));
+        // 64 bits: a run up to bit 31 leaves ~(mask >> first) nonzero above it (ctz of 0 is undefined).
+        const int first = __builtin_ctz(mask);
+        const int len = __builtin_ctzll(~(std::uint64_t(mask) >> first));
         if (scan_samples(q, (base + first) << shift, (base + first + len) << shift)) return true;
-        mask &= ~(((1u << len) - 1u) << first);
+        mask &= ~unsigned(((std::uint64_t(1) << len) - 1u) << first);
     }
     return false;
 }
