@@ -14,15 +14,19 @@ GRAPH = os.path.join(SOURCE_DIR, "assets", "graphs", "cmu_locomotion.json")
 RUN = ["crowd", "--quiet", "--no-motion", "--graph", GRAPH, "--agents", "10", "--world", "12x12", "--seconds", "6", "--seed", "4"]
 
 
-@pytest.fixture(scope="module")
-def records(tmp_path_factory, mobb_exe):
-    folder = tmp_path_factory.mktemp("records")
+def record_both_ways(mobb_exe, folder, run):
+    """The run `run` recorded as JSON and as HDF5: {"json": path, "h5": path}."""
     out = {}
     for kind in ("json", "h5"):
         out[kind] = folder / ("record." + kind)
-        code, _, err = run_cli(mobb_exe, *RUN, "--record", str(out[kind]))
+        code, _, err = run_cli(mobb_exe, *run, "--record", str(out[kind]))
         assert code == 0, err
     return out
+
+
+@pytest.fixture(scope="module")
+def records(tmp_path_factory, mobb_exe):
+    return record_both_ways(mobb_exe, tmp_path_factory.mktemp("records"), RUN)
 
 
 def test_hdf5_reads_as_the_json(records):
@@ -82,13 +86,7 @@ LONG = ["crowd", "--quiet", "--no-motion", "--graph", GRAPH, "--agents", "20", "
 
 @pytest.fixture(scope="module")
 def long_records(tmp_path_factory, mobb_exe):
-    folder = tmp_path_factory.mktemp("long")
-    out = {}
-    for kind in ("json", "h5"):
-        out[kind] = folder / ("record." + kind)
-        code, _, err = run_cli(mobb_exe, *LONG, "--record", str(out[kind]), "--record-candidates")
-        assert code == 0, err
-    return out
+    return record_both_ways(mobb_exe, tmp_path_factory.mktemp("long"), LONG + ["--record-candidates"])
 
 
 def test_open_record_reads_only_the_window_asked(long_records):

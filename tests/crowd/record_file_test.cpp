@@ -2,62 +2,36 @@
 // back writes the JSON text byte for byte), either way round; a truncated or damaged HDF5 file is
 // refused with one line naming the file (and the block, where one is damaged), never a crash.
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <utility>
 
 #include <gtest/gtest.h>
 
+#include "files.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/record_file.h"
-#include "mobb/crowd/scenario.h"
+#include "record_runs.h"
 
 namespace mobb::crowd {
 namespace {
 
-const std::string kAssets = std::string(MOBB_SOURCE_DIR) + "/assets";
+using test::committed_graph;
+using test::run_written;
+using test::slurp;
+using Written = test::WrittenRun;
 
-const MotionGraph& graph() {
-    static const MotionGraph g = load_graph(kAssets + "/graphs/cmu_locomotion.json");
-    return g;
-}
-
-struct Written {
-    Record record;
-    std::string summary, metrics;
-    CrowdOptions options;  // of the run
-};
+const MotionGraph& graph() { return committed_graph(); }
 
 // A wandering crowd in a room with an obstacle (queries against agents, ground, walls, the obstacle).
 const Written& wandering() {
-    static const Written w = [] {
-        CrowdOptions o;
-        o.agents = 8;
-        o.seconds = 6;
-        o.seed = 9;
-        o.world.x1 = 9;
-        o.world.y1 = 11;
-        o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
-        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
-        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
-    }();
+    static const Written w = run_written(test::crowd_beside_obstacle(8));
     return w;
 }
 
 // Goal agents that leave at their goal (goals, left_frame, at_goal, intended clips).
 const Written& leaving() {
-    static const Written w = [] {
-        const Scenario s = load_scenario(kAssets + "/scenarios/fan_in_exit.json");
-        CrowdOptions o = scenario_options(s);
-        o.seconds = 20;
-        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        run.record.scenario = s.name;
-        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
-        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
-    }();
+    static const Written w = run_written(test::leaving_crowd(), test::fan_in_exit_name());
     return w;
 }
 
@@ -67,36 +41,17 @@ const Written& bare() {
     static const Written w = [] {
         CrowdOptions o = wandering().options;
         o.record_queries = false;
-        CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        const std::string metrics = metrics_json(crowd_metrics(run.record, graph(), o.goal_radius));
-        return Written{std::move(run.record), summary_json(run.summary), metrics, o};
+        return run_written(o);
     }();
     return w;
 }
 
-std::string temp(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("mobb_record_file_" + name)).string();
+// The error reading `file` gives ("" when it reads).
+std::string read_error(const std::string& file) {
+    return test::file_error(file, [&] { read_record_file(file); });
 }
 
 std::string text_of(const RecordFile& r) { return record_to_text(r.record, r.summary_json, r.metrics_json); }
-
-std::string slurp(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The error reading `file` gives ("" when it reads), checked to be one line naming the file.
-std::string error_of(const std::string& file) {
-    try {
-        read_record_file(file);
-    } catch (const std::runtime_error& e) {
-        const std::string m = e.what();
-        EXPECT_EQ(m.rfind(file + ": ", 0), 0u) << m;
-        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-        return m;
-    }
-    return "";
-}
 
 // The same run streamed to an HDF5 file as it goes (CrowdOptions::sink), its metrics computed on the
 // stream: the file read back.
@@ -115,7 +70,7 @@ RecordFile streamed(const Written& w, const std::string& file, int threads = 1) 
 TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
     for (const Written* w : {&wandering(), &leaving()}) {
         const std::string json = record_to_text(w->record, w->summary, w->metrics);
-        const std::string h5 = temp("run.h5");
+        const std::string h5 = test::temp_file("run.h5");
         write_record_file(h5, w->record, w->summary, w->metrics);
         EXPECT_EQ(text_of(read_record_file(h5)), json);
         // Streamed as the run goes, on one thread and on two.
@@ -125,7 +80,8 @@ TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
             EXPECT_EQ(text_of(s), json) << threads << " threads";
         }
         // And back: the JSON file read and written as HDF5 again, then as JSON.
-        const std::string j = temp("run.json"), h5b = temp("again.h5"), j2 = temp("again.json");
+        const std::string j = test::temp_file("run.json"), h5b = test::temp_file("again.h5"),
+                          j2 = test::temp_file("again.json");
         write_record_file(j, w->record, w->summary, w->metrics);
         EXPECT_EQ(slurp(j), json);
         const RecordFile from_json = read_record_file(j);
@@ -141,7 +97,7 @@ TEST(RecordFile, Hdf5HoldsEveryFieldOfTheJson) {
 // threads: the same choice points, counts and plans, their candidate lists empty.
 TEST(RecordFile, WithoutCandidatesTheStreamedFileIsTheJson) {
     const std::string json = record_to_text(bare().record, bare().summary, bare().metrics);
-    const std::string h5 = temp("bare.h5");
+    const std::string h5 = test::temp_file("bare.h5");
     for (int threads : {1, 2}) {
         const RecordFile s = streamed(bare(), h5, threads);
         EXPECT_EQ(text_of(s), json) << threads << " threads";
@@ -160,7 +116,7 @@ TEST(RecordFile, WithoutCandidatesTheStreamedFileIsTheJson) {
 TEST(RecordFile, AValueWiderThanItsColumnIsRefused) {
     Record r = wandering().record;
     r.choices[5].frame = std::int64_t(1) << 31;
-    const std::string h5 = temp("wide.h5");
+    const std::string h5 = test::temp_file("wide.h5");
     try {
         write_record_file(h5, r, wandering().summary, wandering().metrics);
         ADD_FAILURE() << "written";
@@ -207,20 +163,20 @@ TEST(RecordFile, Version2Hdf5ReadsInTodaysNames) {
 }
 
 TEST(RecordFile, TruncatedHdf5IsRefusedInOneLine) {
-    const std::string h5 = temp("whole.h5"), cut = temp("cut.h5");
+    const std::string h5 = test::temp_file("whole.h5"), cut = test::temp_file("cut.h5");
     write_record_file(h5, wandering().record, wandering().summary, wandering().metrics);
     const std::string bytes = slurp(h5);
     for (double keep : {0.0, 0.001, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999}) {
         std::ofstream(cut, std::ios::binary) << bytes.substr(0, std::size_t(double(bytes.size()) * keep));
-        EXPECT_NE(error_of(cut), "") << "kept " << keep;
+        EXPECT_NE(read_error(cut), "") << "kept " << keep;
     }
     std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 1);
-    EXPECT_NE(error_of(cut), "");
+    EXPECT_NE(read_error(cut), "");
     for (const std::string& f : {h5, cut}) std::remove(f.c_str());
 }
 
 TEST(RecordFile, DamagedSamplesNameTheirBlock) {
-    const std::string h5 = temp("damaged.h5");
+    const std::string h5 = test::temp_file("damaged.h5");
     write_record_file(h5, wandering().record, wandering().summary, wandering().metrics);
     std::string bytes = slurp(h5);
     // One sample's x, found by its bytes (the samples are stored as native doubles), changed.
@@ -229,16 +185,16 @@ TEST(RecordFile, DamagedSamplesNameTheirBlock) {
     ASSERT_NE(at, std::string::npos);
     bytes[at] = char(bytes[at] ^ 0x55);
     std::ofstream(h5, std::ios::binary) << bytes;
-    const std::string e = error_of(h5);
+    const std::string e = read_error(h5);
     EXPECT_NE(e.find("/tracks/samples block"), std::string::npos) << e;
     std::remove(h5.c_str());
 }
 
 TEST(RecordFile, OtherFilesAreRefusedInOneLine) {
-    const std::string f = temp("text.h5");
+    const std::string f = test::temp_file("text.h5");
     std::ofstream(f) << "{\"format\": \"mobb crowd record\"}";
-    EXPECT_NE(error_of(f).find("not an HDF5 file"), std::string::npos);
-    EXPECT_NE(error_of(temp("missing.h5")), "");
+    EXPECT_NE(read_error(f).find("not an HDF5 file"), std::string::npos);
+    EXPECT_NE(read_error(test::temp_file("missing.h5")), "");
     std::remove(f.c_str());
 }
 

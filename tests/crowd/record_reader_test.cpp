@@ -11,14 +11,13 @@
 
 #include <gtest/gtest.h>
 
-#include "committed_graph.h"
 #include "files.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/record_file.h"
 #include "mobb/crowd/record_reader.h"
-#include "mobb/crowd/scenario.h"
 #include "record_parts.h"
+#include "record_runs.h"
 
 namespace mobb::crowd {
 namespace {
@@ -28,20 +27,7 @@ using test::same_disks;
 using test::slurp;
 using test::temp_file;
 
-const std::string kAssets = std::string(MOBB_SOURCE_DIR) + "/assets";
-
-const MotionGraph& graph() { return test::committed_graph(); }
-
-struct Written {
-    Record record;
-    std::string summary, metrics;
-};
-
-Written run(const CrowdOptions& o) {
-    CrowdRun r = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-    const std::string metrics = metrics_json(crowd_metrics(r.record, graph(), o.goal_radius));
-    return {std::move(r.record), summary_json(r.summary), metrics};
-}
+using Written = test::WrittenRun;
 
 // 60 agents, 10 s: two blocks of frames (256 and 44), right of way (reroutes), escapes.
 const Written& dense() {
@@ -52,7 +38,7 @@ const Written& dense() {
         o.seed = 2;
         o.world.x1 = 13;
         o.world.y1 = 15;
-        return run(o);
+        return test::run_written(o);
     }();
     return r;
 }
@@ -62,28 +48,14 @@ std::int64_t block_of(const Record& r) { return std::min<std::int64_t>(256, 6553
 
 // Goal agents that leave at their goals (left frames, NaN samples, goals, intended clips).
 const Written& leaving() {
-    static const Written r = [] {
-        const Scenario s = load_scenario(kAssets + "/scenarios/fan_in_exit.json");
-        CrowdOptions o = scenario_options(s);
-        o.seconds = 20;
-        Written out = run(o);
-        out.record.scenario = s.name;
-        return out;
-    }();
+    static const Written r = test::run_written(test::leaving_crowd(), test::fan_in_exit_name());
     return r;
 }
 
 // Random choice: contacts; and every 50th choice point marked a fallback (today's crowds take none).
 const Written& touching() {
     static const Written r = [] {
-        CrowdOptions o;
-        o.agents = 30;
-        o.seconds = 8;
-        o.seed = 4;
-        o.select = Selection::Random;
-        o.world.x1 = 14;
-        o.world.y1 = 14;
-        Written out = run(o);
+        Written out = test::run_written(test::random_mode_crowd());
         for (std::size_t k = 0; k < out.record.choices.size(); k += 50) {
             out.record.choices[k].fallback = true;
             out.record.choices[k].outcome = "fallback";
@@ -98,20 +70,6 @@ std::string written(const Written& r, const std::string& name) {
     const std::string file = temp_file(name);
     write_record_file(file, r.record, r.summary, r.metrics);
     return file;
-}
-
-// The error `f` throws ("" when none), checked to be one line naming the file.
-template <class F>
-std::string error_of(const std::string& file, F&& f) {
-    try {
-        f();
-    } catch (const std::runtime_error& e) {
-        const std::string m = e.what();
-        EXPECT_EQ(m.rfind(file + ": ", 0), 0u) << m;
-        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-        return m;
-    }
-    return "";
 }
 
 TEST(RecordReader, ThePartsPutTogetherAreTheWholeRecord) {
@@ -276,7 +234,7 @@ TEST(RecordReader, ADamagedBlockIsNamedWhenAWindowReachesIt) {
     std::ofstream(file, std::ios::binary) << bytes;
     const auto reader = open_record(file);
     EXPECT_NO_THROW(reader->samples(0, block));
-    const std::string e = error_of(file, [&] { reader->samples(frame - 1, frame + 1); });
+    const std::string e = test::file_error(file, [&] { reader->samples(frame - 1, frame + 1); });
     EXPECT_NE(e.find("/tracks/samples block 1: cannot read (truncated or corrupt)"), std::string::npos) << e;
     std::remove(file.c_str());
 
@@ -290,8 +248,8 @@ TEST(RecordReader, ADamagedBlockIsNamedWhenAWindowReachesIt) {
             bad.tracks[2].samples[40][3] = -0.5;
         const std::string f = temp_file("bad.h5");
         write_record_file(f, bad, leaving().summary);
-        const std::string whole = error_of(f, [&] { read_record_file(f); });
-        const std::string parts = error_of(f, [&] {
+        const std::string whole = test::file_error(f, [&] { read_record_file(f); });
+        const std::string parts = test::file_error(f, [&] {
             const auto parts_reader = open_record(f);
             parts_reader->samples(0, 100);
             parts_reader->header();  // the clip table
@@ -311,7 +269,7 @@ TEST(RecordReader, ATruncatedFileIsRefusedInOneLine) {
     const std::string bytes = slurp(file);
     for (double keep : {0.0, 0.001, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999}) {
         std::ofstream(cut, std::ios::binary) << bytes.substr(0, std::size_t(double(bytes.size()) * keep));
-        EXPECT_NE(error_of(cut, [&] { open_record(cut); }), "") << "kept " << keep;
+        EXPECT_NE(test::file_error(cut, [&] { open_record(cut); }), "") << "kept " << keep;
     }
     for (const std::string& f : {file, cut}) std::remove(f.c_str());
 }

@@ -3,62 +3,27 @@
 // mode touches); a writer stopped before finish() leaves a file read up to its last mark, with a note.
 // (The streamed file against the JSON record, field by field: record_file_test.cpp.)
 #include <cstdio>
-#include <filesystem>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+#include "files.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 #include "mobb/crowd/record_file.h"
-#include "mobb/crowd/scenario.h"
 #include "record_parts.h"
+#include "record_runs.h"
 
 namespace mobb::crowd {
 namespace {
 
-const std::string kAssets = std::string(MOBB_SOURCE_DIR) + "/assets";
+using test::temp_file;
 
-const MotionGraph& graph() {
-    static const MotionGraph g = load_graph(kAssets + "/graphs/cmu_locomotion.json");
-    return g;
-}
-
-std::string temp(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("mobb_record_stream_" + name)).string();
-}
-
-CrowdOptions random_mode() {  // agents that do not avoid: contacts, some of them deep
-    CrowdOptions o;
-    o.agents = 30;
-    o.seconds = 8;
-    o.seed = 4;
-    o.select = Selection::Random;
-    o.world.x1 = 14;
-    o.world.y1 = 14;
-    return o;
-}
-
-CrowdOptions wandering() {  // avoiding, beside an obstacle
-    CrowdOptions o;
-    o.agents = 10;
-    o.seconds = 6;
-    o.seed = 9;
-    o.world.x1 = 9;
-    o.world.y1 = 11;
-    o.world.obstacles.push_back(Polygon::rectangle(3, 4, 4, 6));
-    return o;
-}
-
-CrowdOptions leaving() {  // goals, reached in turn, and agents that leave at the last
-    CrowdOptions o = scenario_options(load_scenario(kAssets + "/scenarios/fan_in_exit.json"));
-    o.seconds = 20;
-    return o;
-}
+const MotionGraph& graph() { return test::committed_graph(); }
 
 TEST(RecordStream, MetricsOnTheStreamEqualTheWholeRecords) {
     bool contacts = false, reached = false, left = false;
-    for (const CrowdOptions& o : {random_mode(), wandering(), leaving()}) {
+    for (const CrowdOptions& o : {test::random_mode_crowd(), test::crowd_beside_obstacle(10), test::leaving_crowd()}) {
         const CrowdRun whole = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
         const CrowdMetrics expected = crowd_metrics(whole.record, graph(), o.goal_radius);
         CrowdOptions s = o;
@@ -112,12 +77,12 @@ Record cut(Record r, std::int64_t frames) {
 }
 
 TEST(RecordStream, AStoppedWriterLeavesItsFramesUpToTheLastMark) {
-    const CrowdOptions o = leaving();
+    const CrowdOptions o = test::leaving_crowd();
     const CrowdRun whole = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
     const std::int64_t block = std::min<std::int64_t>(256, 65536 / std::int64_t(whole.record.tracks.size()));
     const std::int64_t held = 2 * block;  // two blocks out, each marked (more than 30 frames)
     ASSERT_GT(whole.record.frames, held);
-    const std::string file = temp("stopped.h5");
+    const std::string file = temp_file("stopped.h5");
     {
         H5RecordWriter out(file, "graph.json");
         Stopping stopping(out, held);
@@ -148,7 +113,7 @@ TEST(RecordStream, AStoppedWriterLeavesItsFramesUpToTheLastMark) {
 }
 
 TEST(RecordStream, AWriterStoppedBeforeItsFirstMarkIsRefusedInOneLine) {
-    const std::string file = temp("empty.h5");
+    const std::string file = temp_file("empty.h5");
     { H5RecordWriter out(file); }
     try {
         read_record_file(file);

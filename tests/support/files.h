@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,6 +23,21 @@ inline std::string slurp(const std::string& file) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+/// The error `f` throws ("" when none), checked to be one line that starts with `file` (as every bad-input
+/// error is).
+template <class F>
+std::string file_error(const std::string& file, F&& f) {
+    try {
+        f();
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind(file + ": ", 0), 0u) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+        return m;
+    }
+    return "";
 }
 
 }  // namespace mobb::test
