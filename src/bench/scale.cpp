@@ -186,9 +186,16 @@ const ScaleRow& largest_timed(const ScaleTable& t) {
     return t.rows.front();
 }
 
+// The row of 10,000 agents, the size issues 5 and 29 set their targets at (else the largest timed).
+const ScaleRow& target_row(const ScaleTable& t) {
+    for (const ScaleRow& r : t.rows)
+        if (r.agents == 10000 && r.one_thread) return r;
+    return largest_timed(t);
+}
+
 // Issue 5: the CD cost per agent stays within 1.5x of the smallest crowd's as the crowd grows.
 Target cost_target(const ScaleTable& t) {
-    const ScaleRow &first = t.rows.front(), &last = largest_timed(t);
+    const ScaleRow &first = t.rows.front(), &last = target_row(t);
     Target cost;
     cost.what = "CD cost per agent per simulated second at " + std::to_string(last.agents) + " agents within 1.5x of " +
                 std::to_string(first.agents);
@@ -206,9 +213,7 @@ Target cost_target(const ScaleTable& t) {
 
 // Issue 29: threads at 10,000 agents (or the largest size timed on one thread), records identical.
 Target speed_target(const ScaleTable& t) {
-    const ScaleRow* at = &largest_timed(t);
-    for (const ScaleRow& r : t.rows)
-        if (r.agents == 10000) at = &r;
+    const ScaleRow* at = &target_row(t);
     Target speed;
     speed.what = "choice points on " + std::to_string(at->threads) + " threads >= 1.8x faster at " +
                  std::to_string(at->agents) + " agents, records identical";

@@ -39,8 +39,19 @@ private:
 /// Keeps HDF5 from printing its error stack: the caller reports each problem in one line.
 void quiet();
 
+/// The HDF5 memory type of T: one of the five below.
 template <class T>
-hid_t native();  // std::int8_t, std::int32_t, std::int64_t, std::uint64_t, double
+hid_t native();
+template <>
+hid_t native<std::int8_t>();
+template <>
+hid_t native<std::int32_t>();
+template <>
+hid_t native<std::int64_t>();
+template <>
+hid_t native<std::uint64_t>();
+template <>
+hid_t native<double>();
 
 // Attributes: text (variable-length UTF-8), numbers and arrays of numbers; writing one replaces it.
 void write_text(hid_t object, const char* name, const std::string& text);

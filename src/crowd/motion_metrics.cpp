@@ -19,13 +19,13 @@ namespace {
 constexpr std::size_t kKinds = 4;  // ClipKind's values
 
 // What one agent contributes to one MotionMetrics, merged over agents afterwards.
-struct Sample {
+struct MotionTally {
     std::vector<double> start, within;
     std::array<std::vector<double>, kKinds> speeds;  // in contact, by kind
     std::array<std::size_t, kKinds> steps{};
 };
-struct AgentSample {
-    Sample blended, raw;
+struct AgentTally {
+    MotionTally blended, raw;
 };
 
 bool ends_with(const std::string& name, const std::string& suffix) {
@@ -54,7 +54,7 @@ double largest_jump(const std::vector<glm::dvec3>& a, const std::vector<glm::dve
 
 // Frame k - 1 (a) to frame k (b), frame k playing a clip of kind `kind`, starting there or not.
 void add_step(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b, const std::array<int, 2>& feet,
-              double dt, std::size_t kind, bool start, Sample& out) {
+              double dt, std::size_t kind, bool start, MotionTally& out) {
     (start ? out.start : out.within).push_back(largest_jump(a, b));
     for (int f : feet) {
         if (f < 0) continue;
@@ -65,11 +65,11 @@ void add_step(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b
     }
 }
 
-AgentSample agent_sample(CrowdPoser& poser, const std::vector<ClipKind>& kinds, const std::array<int, 2>& feet,
-                         int agent, std::int64_t begin, std::int64_t end) {
+AgentTally agent_tally(CrowdPoser& poser, const std::vector<ClipKind>& kinds, const std::array<int, 2>& feet, int agent,
+                       std::int64_t begin, std::int64_t end) {
     const Record& r = poser.record();
     const MotionGraph& g = poser.sources().graph();
-    AgentSample out;
+    AgentTally out;
     std::vector<glm::dvec3> a, b, raw_a, raw_b;
     bool have = false;
     for (std::int64_t k = std::max<std::int64_t>(begin, 0); k < std::min(end, r.frames); ++k) {
@@ -155,11 +155,11 @@ Spread spread_of(std::vector<double>& v) {
 
 namespace {
 
-MotionMetrics merged(const std::vector<AgentSample>& samples, Sample AgentSample::*which, bool feet) {
+MotionMetrics merged(const std::vector<AgentTally>& tallies, MotionTally AgentTally::*which, bool feet) {
     MotionMetrics m;
     m.feet = feet;
     std::vector<double> start, within;
-    for (const AgentSample& s : samples) {
+    for (const AgentTally& s : tallies) {
         append(start, (s.*which).start);
         append(within, (s.*which).within);
     }
@@ -169,7 +169,7 @@ MotionMetrics merged(const std::vector<AgentSample>& samples, Sample AgentSample
     for (std::size_t k = 0; k < kKinds; ++k) {
         std::vector<double> speeds;
         FootSliding& f = m.sliding[k];
-        for (const AgentSample& s : samples) {
+        for (const AgentTally& s : tallies) {
             append(speeds, (s.*which).speeds[k]);
             f.steps += (s.*which).steps[k];
         }
@@ -191,17 +191,17 @@ CrowdMotion motion_metrics(CrowdPoser& poser, const std::vector<int>& agents, st
     std::vector<ClipKind> kinds;
     for (std::size_t c = 0; c < g.clips.size(); ++c) kinds.push_back(kind_of(g.clips[c], int(c)));
     const std::array<int, 2> feet = toes(poser.rig());
-    std::vector<AgentSample> samples(agents.size());
+    std::vector<AgentTally> tallies(agents.size());
     // Each worker poses with its own copy (a poser's scratch is its own; the loaded sources are shared).
     util::WorkerPool pool(std::max(1, std::min(threads, int(agents.size()))));
     std::vector<CrowdPoser> posers(std::size_t(pool.size()), poser);
     pool.for_each(agents.size(), [&](std::size_t i, int worker) {
-        samples[i] = agent_sample(posers[std::size_t(worker)], kinds, feet, agents[i], frame_begin, frame_end);
+        tallies[i] = agent_tally(posers[std::size_t(worker)], kinds, feet, agents[i], frame_begin, frame_end);
     });
     const bool both = feet[0] >= 0 && feet[1] >= 0;
     CrowdMotion out;
-    out.blended = merged(samples, &AgentSample::blended, both);
-    out.raw = merged(samples, &AgentSample::raw, both);
+    out.blended = merged(tallies, &AgentTally::blended, both);
+    out.raw = merged(tallies, &AgentTally::raw, both);
     out.blended.joints = out.raw.joints = poser.rig().size();
     out.blended.blend = poser.blend().window;
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -32,8 +32,6 @@ using h5::Column;
 // Rows of a table read and checked at a time while the clip table is read (a block of the file's).
 constexpr hsize_t kTableBlock = 4096;
 
-std::string at(const std::string& place, std::size_t k) { return place + "[" + std::to_string(k) + "]"; }
-
 [[noreturn]] void bad(const std::string& place, const std::string& message) { throw h5::Error(place + ": " + message); }
 
 // Row `row` of a nested table names its owner's row `value`, one of lo .. hi - 1 (the rows its binary
@@ -226,9 +224,10 @@ void H5Reader::read_tracks() {
         t.at_goal = leaves[a] ? AtGoal::Leave : AtGoal::Stay;
         if (left[a] < 0) continue;
         if (left[a] < 1 || left[a] > frames_ - 1)
-            bad(at("tracks", a) + ".left_frame",
+            bad(element_place("tracks", a) + ".left_frame",
                 std::to_string(left[a]) + ": expected 1 to " + std::to_string(frames_ - 1));
-        if (t.at_goal != AtGoal::Leave) bad(at("tracks", a) + ".left_frame", "only an agent that leaves has one");
+        if (t.at_goal != AtGoal::Leave)
+            bad(element_place("tracks", a) + ".left_frame", "only an agent that leaves has one");
         t.left_frame = left[a];
         until_[a] = left[a];
     }
@@ -245,7 +244,8 @@ void H5Reader::read_goals() {
                 std::to_string(of[k]) + ", there are " + std::to_string(agents_));
         AgentTrack& t = info_.record.tracks[std::size_t(of[k])];
         const auto place = [&, a = of[k], g = t.goals.size()](std::size_t i) {
-            return [=] { return at(at(at("tracks", std::size_t(a)) + ".goals", g), i); };
+            return
+                [=] { return element_place(element_place(element_place("tracks", std::size_t(a)) + ".goals", g), i); };
         };
         check_coordinate(v[2 * k], place(0));
         check_coordinate(v[2 * k + 1], place(1));
@@ -253,7 +253,7 @@ void H5Reader::read_goals() {
     }
     for (std::size_t a = 0; a < agents_; ++a)
         if (info_.record.tracks[a].goals.empty() && info_.record.tracks[a].at_goal == AtGoal::Leave)
-            bad(at("tracks", a) + ".at_goal", "an agent without a goal has none");
+            bad(element_place("tracks", a) + ".at_goal", "an agent without a goal has none");
 }
 
 // The clip table, a block of rows at a time: each clip checked as the JSON reader checks a track's clips.
@@ -283,7 +283,7 @@ void H5Reader::read_clips() {
                     std::to_string(a[k]) + ", there are " + std::to_string(agents_));
             std::vector<PlacedClip>& clips = info_.record.tracks[std::size_t(a[k])].clips;
             const auto w = [&, agent = std::size_t(a[k]), n = clips.size()](const char* key) {
-                return at(at("tracks", agent) + ".clips", n) + key;
+                return element_place(element_place("tracks", agent) + ".clips", n) + key;
             };
             const PlacedClip* before = clips.empty() ? nullptr : &clips.back();
             if (c[k] < 0 || c[k] > std::numeric_limits<int>::max())
@@ -297,7 +297,7 @@ void H5Reader::read_clips() {
                                      std::to_string(before->start));
             const double* q = &p[4 * k];
             if (!disk_ok({q[3], q[0], q[1], 0.0}, s[k], dt) || !std::isfinite(q[2])) {  // the checks for the message
-                const auto place = [&](std::size_t i) { return [&w, i] { return at(w(".place"), i); }; };
+                const auto place = [&](std::size_t i) { return [&w, i] { return element_place(w(".place"), i); }; };
                 check_coordinate(q[0], place(0));
                 check_coordinate(q[1], place(1));
                 check_finite(q[2], place(2));
@@ -313,7 +313,8 @@ void H5Reader::read_clips() {
         }
     }
     for (std::size_t a = 0; a < agents_; ++a)
-        if (info_.record.tracks[a].clips.empty()) bad(at("tracks", a) + ".clips", "an agent plays at least one clip");
+        if (info_.record.tracks[a].clips.empty())
+            bad(element_place("tracks", a) + ".clips", "an agent plays at least one clip");
     clips_read_ = true;
 }
 
@@ -328,7 +329,9 @@ void H5Reader::check_block(std::int64_t k, const std::vector<std::array<double, 
         const std::array<double, 4>& d = disks[i];
         if (disk_ok(d, f, dt)) continue;  // the checks below only for their message
         const auto place = [&](std::size_t j) {
-            return [=] { return at(at(at("tracks", a) + ".samples", std::size_t(f)), j); };
+            return [=] {
+                return element_place(element_place(element_place("tracks", a) + ".samples", std::size_t(f)), j);
+            };
         };
         check_finite(d[0], place(0));
         check_frame_time(d[0], f, dt, 1e-9, place(0));
@@ -428,7 +431,7 @@ std::vector<ChoiceSummary> H5Reader::summaries(std::size_t first, std::size_t la
         std::vector<ChoiceSummary> out;
         for (std::size_t k = 0; k < n; ++k) {
             if (agent >= 0 && c[0][k] != agent) continue;
-            const auto w = [&, row = first + k] { return at("choices", row); };
+            const auto w = [&, row = first + k] { return element_place("choices", row); };
             ChoicePoint& p = out.emplace_back().point;
             out.back().row = first + k;
             out.back().candidates = tested[k];
@@ -448,7 +451,7 @@ std::vector<ChoiceSummary> H5Reader::summaries(std::size_t first, std::size_t la
             p.queries = std::uint64_t(c[5][k]), p.tests2d = std::uint64_t(c[6][k]), p.tests3d = std::uint64_t(c[7][k]);
             p.samples = std::uint64_t(c[8][k]), p.pruned = std::uint64_t(c[9][k]);
             if (c[10][k] >= 0) {
-                const auto place = [&](std::size_t i) { return [=] { return at(w() + ".plan.hold", i); }; };
+                const auto place = [&](std::size_t i) { return [=] { return element_place(w() + ".plan.hold", i); }; };
                 check_coordinate(hold[3 * k], place(0));
                 check_coordinate(hold[3 * k + 1], place(1));
                 check_radius(hold[3 * k + 2], place(2));
@@ -571,8 +574,9 @@ std::vector<ChoiceMark> H5Reader::fallbacks() {
                 if (v[k]) {
                     const std::int64_t a = agent.at(r0 + k), f = frame.at(r0 + k);
                     if (a < 0 || std::size_t(a) >= agents_ || f < 0 || f >= frames_)
-                        bad(at("choices", r0 + k), "agent " + std::to_string(a) + " at frame " + std::to_string(f) +
-                                                       ": not an agent and a frame of the record");
+                        bad(element_place("choices", r0 + k), "agent " + std::to_string(a) + " at frame " +
+                                                                  std::to_string(f) +
+                                                                  ": not an agent and a frame of the record");
                     out.push_back({std::size_t(r0 + k), int(a), f});
                 }
         }

@@ -25,6 +25,9 @@ nlohmann::ordered_json record_json(const Record& r, const std::string& summary_j
 /// ("fallbacks_outside_world" counted fallbacks meeting a wall or an obstacle).
 std::string stored_summary(const nlohmann::ordered_json& j);
 
+/// "place[k]": element k of the array at `place`, as errors name it.
+std::string element_place(const std::string& place, std::size_t k);
+
 /// A field of a record out of its range: "PLACE: message" (the reader puts the file in front).
 struct FieldError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -26,7 +26,6 @@ using Bad = FieldError;
 
 [[noreturn]] void fail(const std::string& place, const std::string& message) { throw Bad(place + ": " + message); }
 
-std::string at(const std::string& place, std::size_t k) { return place + "[" + std::to_string(k) + "]"; }
 std::string dot(const std::string& place, const char* key) { return place.empty() ? key : place + "." + key; }
 
 std::string num(double x) {
@@ -135,13 +134,14 @@ World world_of(const json& j) {
     if (!j.contains("obstacles")) return w;
     const json& obstacles = array(j["obstacles"], "obstacles", "an array of polygons");
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
-        const std::string place = at("obstacles", k);
+        const std::string place = element_place("obstacles", k);
         const json& poly = array(obstacles[k], place, "a polygon [[x, y], ...]");
         if (poly.size() < 2) fail(place, "a polygon has two or more vertices");
         Polygon p;
         for (std::size_t i = 0; i < poly.size(); ++i) {
-            const json& q = tuple(poly[i], 2, at(place, i), "[x, y]");
-            p.vertices.push_back({coordinate(q[0], at(at(place, i), 0)), coordinate(q[1], at(at(place, i), 1))});
+            const json& q = tuple(poly[i], 2, element_place(place, i), "[x, y]");
+            p.vertices.push_back({coordinate(q[0], element_place(element_place(place, i), 0)),
+                                  coordinate(q[1], element_place(element_place(place, i), 1))});
         }
         w.obstacles.push_back(std::move(p));
     }
@@ -162,9 +162,9 @@ PlacedClip placed_clip_of(const json& c, const Record& r, const PlacedClip* befo
                                   std::to_string(before->start));
     const json& p = tuple(need(c, "place", w), 4, dot(w, "place"), "[x, y, theta, t0]");
     const std::string wp = dot(w, "place");
-    out.place = {coordinate(p[0], at(wp, 0)), coordinate(p[1], at(wp, 1)), finite(p[2], at(wp, 2)),
-                 finite(p[3], at(wp, 3))};
-    check_time(out.place.t0, out.start, r.dt, 1e-9, at(wp, 3));
+    out.place = {coordinate(p[0], element_place(wp, 0)), coordinate(p[1], element_place(wp, 1)),
+                 finite(p[2], element_place(wp, 2)), finite(p[3], element_place(wp, 3))};
+    check_time(out.place.t0, out.start, r.dt, 1e-9, element_place(wp, 3));
     out.fallback = boolean(need(c, "fallback", w), dot(w, "fallback"));
     out.choice = integer(need(c, "choice", w), dot(w, "choice"), -1, kNoLimit);
     if (before && out.choice < before->choice)
@@ -178,13 +178,13 @@ void goals_of(const json& t, const std::string& w, AgentTrack& track) {
     if (t.contains("goal") && t.contains("goals")) fail(w, "\"goal\" or \"goals\", not both");
     const auto point = [&](const json& v, const std::string& place) {
         const json& g = tuple(v, 2, place, "[x, y]");
-        track.goals.push_back({coordinate(g[0], at(place, 0)), coordinate(g[1], at(place, 1))});
+        track.goals.push_back({coordinate(g[0], element_place(place, 0)), coordinate(g[1], element_place(place, 1))});
     };
     if (t.contains("goal")) point(t["goal"], dot(w, "goal"));
     if (t.contains("goals")) {
         const json& goals = array(t["goals"], dot(w, "goals"), "an array of [x, y]");
         if (goals.empty()) fail(dot(w, "goals"), "at least one goal");
-        for (std::size_t k = 0; k < goals.size(); ++k) point(goals[k], at(dot(w, "goals"), k));
+        for (std::size_t k = 0; k < goals.size(); ++k) point(goals[k], element_place(dot(w, "goals"), k));
     }
     if (!t.contains("at_goal")) return;
     const json& v = t["at_goal"];
@@ -202,7 +202,8 @@ AgentTrack track_of(const json& t, const Record& r, const std::string& w) {
     const json& clips = array(need(t, "clips", w), dot(w, "clips"), "an array of clips");
     if (clips.empty()) fail(dot(w, "clips"), "an agent plays at least one clip");
     for (std::size_t k = 0; k < clips.size(); ++k)
-        track.clips.push_back(placed_clip_of(clips[k], r, k ? &track.clips.back() : nullptr, at(dot(w, "clips"), k)));
+        track.clips.push_back(
+            placed_clip_of(clips[k], r, k ? &track.clips.back() : nullptr, element_place(dot(w, "clips"), k)));
     if (t.contains("left_frame")) track.left_frame = integer(t["left_frame"], dot(w, "left_frame"), 1, r.frames - 1);
     if (track.left_frame && track.at_goal != AtGoal::Leave)
         fail(dot(w, "left_frame"), "only an agent that leaves has one");
@@ -213,11 +214,11 @@ AgentTrack track_of(const json& t, const Record& r, const std::string& w) {
                                     std::to_string(frames) + (track.left_frame ? ", until it left)" : ")"));
     track.samples.reserve(samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
-        const std::string place = at(dot(w, "samples"), k);
+        const std::string place = element_place(dot(w, "samples"), k);
         const json& s = tuple(samples[k], 4, place, "[t, x, y, r]");
-        const std::array<double, 4> d{finite(s[0], at(place, 0)), coordinate(s[1], at(place, 1)),
-                                      coordinate(s[2], at(place, 2)), radius(s[3], at(place, 3))};
-        check_time(d[0], std::int64_t(k), r.dt, 1e-9, at(place, 0));
+        const std::array<double, 4> d{finite(s[0], element_place(place, 0)), coordinate(s[1], element_place(place, 1)),
+                                      coordinate(s[2], element_place(place, 2)), radius(s[3], element_place(place, 3))};
+        check_time(d[0], std::int64_t(k), r.dt, 1e-9, element_place(place, 0));
         track.samples.push_back(d);
     }
     return track;
@@ -227,14 +228,14 @@ AgentTrack track_of(const json& t, const Record& r, const std::string& w) {
 std::vector<FramedClip> escape_of(const json& escape, double dt, const std::string& w) {
     std::vector<FramedClip> out;
     for (std::size_t k = 0; k < array(escape, w, "an array of [clip, frame, x, y, theta]").size(); ++k) {
-        const std::string place = at(w, k);
+        const std::string place = element_place(w, k);
         const json& e = tuple(escape[k], 5, place, "[clip, frame, x, y, theta]");
-        const int clip = index(e[0], at(place, 0), 0, kNoLimit);
-        const std::int64_t frame = integer(e[1], at(place, 1), 0, kNoLimit);
+        const int clip = index(e[0], element_place(place, 0), 0, kNoLimit);
+        const std::int64_t frame = integer(e[1], element_place(place, 1), 0, kNoLimit);
         out.push_back({clip,
                        frame,
-                       {coordinate(e[2], at(place, 2)), coordinate(e[3], at(place, 3)), finite(e[4], at(place, 4)),
-                        double(frame) * dt}});
+                       {coordinate(e[2], element_place(place, 2)), coordinate(e[3], element_place(place, 3)),
+                        finite(e[4], element_place(place, 4)), double(frame) * dt}});
     }
     return out;
 }
@@ -242,8 +243,9 @@ std::vector<FramedClip> escape_of(const json& escape, double dt, const std::stri
 // Held ground [x, y, r, frame]: a finite disk, r >= 0, from frame >= 0 on.
 HeldGround hold_of(const json& h, const std::string& w) {
     const json& v = tuple(h, 4, w, "[x, y, r, frame]");
-    return {{coordinate(v[0], at(w, 0)), coordinate(v[1], at(w, 1)), radius(v[2], at(w, 2))},
-            integer(v[3], at(w, 3), 0, kNoLimit)};
+    return {{coordinate(v[0], element_place(w, 0)), coordinate(v[1], element_place(w, 1)),
+             radius(v[2], element_place(w, 2))},
+            integer(v[3], element_place(w, 3), 0, kNoLimit)};
 }
 
 void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string& w) {
@@ -261,7 +263,7 @@ void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string&
     if (!plan.contains("reroutes")) return;
     const json& reroutes = array(plan["reroutes"], dot(wp, "reroutes"), "an array");
     for (std::size_t k = 0; k < reroutes.size(); ++k) {
-        const std::string place = at(dot(wp, "reroutes"), k);
+        const std::string place = element_place(dot(wp, "reroutes"), k);
         const json& j = reroutes[k];
         const int agent = index(need(j, "agent", place), dot(place, "agent"), 0, std::int64_t(r.tracks.size()) - 1);
         const HeldGround h = hold_of(need(j, "hold", place), dot(place, "hold"));
@@ -277,22 +279,23 @@ void plan_of(const json& c, ChoicePoint& cp, const Record& r, const std::string&
 CandidateQuery query_of(const json& q, const Record& r, std::size_t earlier, const std::string& w) {
     const json& v = tuple(q, 5, w, "[agent, index, piece, mine, hit]");
     CandidateQuery cq;
-    cq.agent = index(v[0], at(w, 0), -1, std::int64_t(r.tracks.size()) - 1);
-    const int i = index(v[1], at(w, 1), -1, kNoLimit);
-    cq.piece = index(v[2], at(w, 2), -1, kNoLimit);
-    cq.mine = index(v[3], at(w, 3), -1, kNoLimit);
-    cq.hit = index(v[4], at(w, 4), 0, 1) != 0;
+    cq.agent = index(v[0], element_place(w, 0), -1, std::int64_t(r.tracks.size()) - 1);
+    const int i = index(v[1], element_place(w, 1), -1, kNoLimit);
+    cq.piece = index(v[2], element_place(w, 2), -1, kNoLimit);
+    cq.mine = index(v[3], element_place(w, 3), -1, kNoLimit);
+    cq.hit = index(v[4], element_place(w, 4), 0, 1) != 0;
     if (cq.agent == -1) {
         const std::size_t solids = r.world.obstacles.size() + (r.world.walls ? 4 : 0);
-        if (cq.piece != 0) fail(at(w, 2), "a wall or an obstacle (agent -1) is piece 0");
+        if (cq.piece != 0) fail(element_place(w, 2), "a wall or an obstacle (agent -1) is piece 0");
         if (i < 0 || std::size_t(i) >= solids)
-            fail(at(w, 1), std::to_string(i) + ": no such wall or obstacle (" + std::to_string(solids) + ")");
+            fail(element_place(w, 1),
+                 std::to_string(i) + ": no such wall or obstacle (" + std::to_string(solids) + ")");
         cq.solid = i;
         return cq;
     }
     const bool start = i == -1 && cq.piece == -1;        // the ground the agent started on
     if (!start && (i < 0 || std::size_t(i) >= earlier))  // queries name earlier ones only
-        fail(at(w, 1),
+        fail(element_place(w, 1),
              std::to_string(i) + ": names no earlier choice point (" + std::to_string(earlier) + " before this one)");
     cq.choice = i;
     return cq;
@@ -310,14 +313,14 @@ Candidate candidate_of(const json& k, const Record& r, std::size_t earlier, cons
         fail(dot(w, "against"),
              std::to_string(against.size()) + " queries listed, \"queries\" says " + std::to_string(cand.queries));
     for (std::size_t i = 0; i < against.size(); ++i)
-        cand.against.push_back(query_of(against[i], r, earlier, at(dot(w, "against"), i)));
+        cand.against.push_back(query_of(against[i], r, earlier, element_place(dot(w, "against"), i)));
     cand.crowded = k.contains("crowded") ? boolean(k["crowded"], dot(w, "crowded")) : false;
     return cand;
 }
 
 // Choice point `row` (`row` before it).
 ChoicePoint choice_of(const json& c, const Record& r, std::size_t row) {
-    const std::string w = at("choices", row);
+    const std::string w = element_place("choices", row);
     ChoicePoint cp;
     cp.agent = index(need(c, "agent", w), dot(w, "agent"), 0, std::int64_t(r.tracks.size()) - 1);
     cp.frame = integer(need(c, "frame", w), dot(w, "frame"), 0, r.frames - 1);
@@ -339,7 +342,7 @@ ChoicePoint choice_of(const json& c, const Record& r, std::size_t row) {
     plan_of(c, cp, r, w);
     const json& cands = array(need(c, "candidates", w), dot(w, "candidates"), "an array of candidates");
     for (std::size_t k = 0; k < cands.size(); ++k)
-        cp.candidates.push_back(candidate_of(cands[k], r, row, at(dot(w, "candidates"), k)));
+        cp.candidates.push_back(candidate_of(cands[k], r, row, element_place(dot(w, "candidates"), k)));
     return cp;
 }
 
@@ -371,14 +374,15 @@ Record record_of(const json& j) {
         fail("agents", std::to_string(j["agents"].get<std::int64_t>()) + ", the record has " +
                            std::to_string(tracks.size()) + " tracks");
     r.tracks.reserve(tracks.size());
-    for (std::size_t a = 0; a < tracks.size(); ++a) r.tracks.push_back(track_of(tracks[a], r, at("tracks", a)));
+    for (std::size_t a = 0; a < tracks.size(); ++a)
+        r.tracks.push_back(track_of(tracks[a], r, element_place("tracks", a)));
     const json& choices = array(need(j, "choices", ""), "choices", "an array of choice points");
     r.choices.reserve(choices.size());
     for (std::size_t k = 0; k < choices.size(); ++k) r.choices.push_back(choice_of(choices[k], r, k));
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
             if (r.tracks[a].clips[k].choice >= std::int64_t(r.choices.size()))
-                fail(at(at("tracks", a) + ".clips", k) + ".choice",
+                fail(element_place(element_place("tracks", a) + ".clips", k) + ".choice",
                      std::to_string(r.tracks[a].clips[k].choice) + ": the record has " +
                          std::to_string(r.choices.size()) + " choice points");
     return r;
@@ -514,23 +518,26 @@ void check_clip(int clip, std::size_t clips, const std::string& graph, const std
 
 void check_choice_clips(const ChoicePoint& cp, std::size_t row, std::size_t clips, const std::string& graph) {
     const auto escape = [&](const std::vector<FramedClip>& e, const std::string& place) {
-        for (std::size_t k = 0; k < e.size(); ++k) check_clip(e[k].clip, clips, graph, at(place, k) + "[0]");
+        for (std::size_t k = 0; k < e.size(); ++k) check_clip(e[k].clip, clips, graph, element_place(place, k) + "[0]");
     };
-    const std::string w = at("choices", row);
+    const std::string w = element_place("choices", row);
     check_clip(cp.taken, clips, graph, w + ".taken");
     for (std::size_t k = 0; k < cp.candidates.size(); ++k)
-        check_clip(cp.candidates[k].clip, clips, graph, at(w + ".candidates", k) + ".clip");
+        check_clip(cp.candidates[k].clip, clips, graph, element_place(w + ".candidates", k) + ".clip");
     escape(cp.escape, w + ".plan.escape");
     escape(cp.intended, w + ".plan.intended");
     for (std::size_t k = 0; k < cp.reroutes.size(); ++k)
-        escape(cp.reroutes[k].escape, at(w + ".plan.reroutes", k) + ".escape");
+        escape(cp.reroutes[k].escape, element_place(w + ".plan.reroutes", k) + ".escape");
 }
 
 void check_graph_clips(const Record& r, std::size_t clips) {
     for (std::size_t a = 0; a < r.tracks.size(); ++a)
         for (std::size_t k = 0; k < r.tracks[a].clips.size(); ++k)
-            check_clip(r.tracks[a].clips[k].clip, clips, r.graph, at(at("tracks", a) + ".clips", k) + ".clip");
+            check_clip(r.tracks[a].clips[k].clip, clips, r.graph,
+                       element_place(element_place("tracks", a) + ".clips", k) + ".clip");
     for (std::size_t c = 0; c < r.choices.size(); ++c) check_choice_clips(r.choices[c], c, clips, r.graph);
 }
+
+std::string element_place(const std::string& place, std::size_t k) { return place + "[" + std::to_string(k) + "]"; }
 
 }  // namespace mobb::crowd
