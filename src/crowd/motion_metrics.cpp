@@ -101,13 +101,13 @@ nlohmann::ordered_json spread_json(const Spread& s) {
 }
 
 nlohmann::ordered_json metrics_object(const MotionMetrics& m) {
-    using J = nlohmann::ordered_json;
-    J j{{"blend", m.blend},
+    using Json = nlohmann::ordered_json;
+    Json j{{"blend", m.blend},
         {"jump_start", spread_json(m.jump_start)},
         {"jump_within", spread_json(m.jump_within)},
         {"jump_ratio", util::rounded(m.jump_ratio(), 4)}};
     if (!m.feet) return j;
-    J sliding = J::object();
+    Json sliding = Json::object();
     for (std::size_t k = 0; k < kKinds; ++k) {
         const FootSliding& s = m.sliding[k];
         sliding[to_string(ClipKind(k))] = {{"steps", s.steps},
@@ -221,8 +221,8 @@ CrowdMotion crowd_motion(const Record& record, std::shared_ptr<const MotionGraph
 }
 
 std::string motion_json(const CrowdMotion& m) {
-    using J = nlohmann::ordered_json;
-    J j{{"joints", m.blended.joints},
+    using Json = nlohmann::ordered_json;
+    Json j{{"joints", m.blended.joints},
         {"foot_contact",
          {{"toe", FootContact::kToe}, {"height", FootContact::kHeight}, {"skate_speed", FootContact::kSkateSpeed}}},
         {"blended", metrics_object(m.blended)},
