@@ -103,9 +103,9 @@ nlohmann::ordered_json spread_json(const Spread& s) {
 nlohmann::ordered_json metrics_object(const MotionMetrics& m) {
     using Json = nlohmann::ordered_json;
     Json j{{"blend", m.blend},
-        {"jump_start", spread_json(m.jump_start)},
-        {"jump_within", spread_json(m.jump_within)},
-        {"jump_ratio", util::rounded(m.jump_ratio(), 4)}};
+           {"jump_start", spread_json(m.jump_start)},
+           {"jump_within", spread_json(m.jump_within)},
+           {"jump_ratio", util::rounded(m.jump_ratio(), 4)}};
     if (!m.feet) return j;
     Json sliding = Json::object();
     for (std::size_t k = 0; k < kKinds; ++k) {
@@ -223,10 +223,10 @@ CrowdMotion crowd_motion(const Record& record, std::shared_ptr<const MotionGraph
 std::string motion_json(const CrowdMotion& m) {
     using Json = nlohmann::ordered_json;
     Json j{{"joints", m.blended.joints},
-        {"foot_contact",
-         {{"toe", FootContact::kToe}, {"height", FootContact::kHeight}, {"skate_speed", FootContact::kSkateSpeed}}},
-        {"blended", metrics_object(m.blended)},
-        {"raw", metrics_object(m.raw)}};
+           {"foot_contact",
+            {{"toe", FootContact::kToe}, {"height", FootContact::kHeight}, {"skate_speed", FootContact::kSkateSpeed}}},
+           {"blended", metrics_object(m.blended)},
+           {"raw", metrics_object(m.raw)}};
     return j.dump();
 }
 
