@@ -174,6 +174,15 @@ void keep_settings(const State& s, const Ui& ui, ViewSettings& settings, const s
     if (changed) ImGui::MarkIniSettingsDirty();
 }
 
+// The window's title once its first frames have placed the panels in their columns: "mobb view - NAME"
+// (the scene's file name). The window tests wait for it before they click (tests/app/x11_window.sh).
+constexpr int kTitledFrame = 10;  // ImGui sizes and places windows over its first frames
+
+std::string titled(const WindowOptions& options) {
+    const std::string name = std::filesystem::path(options.scene_file).filename().string();
+    return "mobb view - " + (name.empty() ? std::string("untitled") : name);
+}
+
 }  // namespace
 
 void run_window(State& s, const WindowOptions& options) {
@@ -227,6 +236,7 @@ void run_window(State& s, const WindowOptions& options) {
                 break;
             }
             window.swap();
+            if (frame == kTitledFrame) glfwSetWindowTitle(window.handle(), titled(options).c_str());
         }
         if (!ini.empty()) ImGui::SaveIniSettingsToDisk(ini.c_str());
         ImGui::GetIO().IniFilename = nullptr;  // `ini` goes out of scope before DestroyContext

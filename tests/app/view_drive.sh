@@ -12,7 +12,7 @@ shift 4
 "$mobb" view "$scene" --frames 100000 --screenshot "$out" --save-state "$state" --width 1280 --height 720 &
 pid=$!
 window=$(find_window)
-sleep 2  # the first frames place the panels in their columns: a click before that lands elsewhere
+wait_placed
 focus "$window"
 xdotool mousemove --window "$window" 640 700
 for action in "$@"; do

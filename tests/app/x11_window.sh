@@ -5,6 +5,12 @@ find_window() {
   timeout 60 xdotool search --sync --onlyvisible --name "mobb view" | head -1 || true
 }
 
+# Waits (at most 60 s) for the window's title to name its scene, which it does once its first frames
+# have placed the panels (src/viewer/window.cpp): a click before that lands elsewhere.
+wait_placed() {
+  timeout 60 xdotool search --sync --onlyvisible --name "mobb view - " >/dev/null || true
+}
+
 # Focus can fail with BadMatch while a loaded machine is still mapping the window: try again.
 focus() {
   for _ in 1 2 3 4 5 6 7 8 9 10; do
