@@ -140,6 +140,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
     rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
              "An agent that waited never pushes others' reservations aside");
     rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
+    rule_off("--no-stand-near-walls", &crowd::CrowdTuning::stand_near_walls,
+             "Held ground keeps room to turn on the spot from walls and obstacles, not only room to stand");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
     auto tune = std::make_shared<std::vector<std::string>>();

@@ -333,7 +333,7 @@ bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, 
 /// were reused.
 void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out);
 /// Whether it meets solid k: a clip's samples by disk_overlaps(); held ground when the solid is nearer
-/// than EscapeTable::wall_clearance.
+/// than EscapeTable::stand_clearance.
 bool meets_solid(const CrowdState& s, const Piece& mine, int k);
 
 }  // namespace mobb::crowd

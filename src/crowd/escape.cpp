@@ -80,9 +80,12 @@ EscapeTable EscapeTable::build(const MotionGraph& g, const CrowdTuning& tuning) 
         t.moves.push_back(std::hypot(clip.exit_x, clip.exit_y) >= tuning.moving_speed * duration);
         if (t.kind.back() == ClipKind::Idle) t.hold_radius = std::max(t.hold_radius, t.hold_of(c));
     }
-    for (int c = 0; c < int(g.clips.size()); ++c)
-        if (t.in_place[std::size_t(c)])
-            t.wall_clearance = std::max(t.wall_clearance, t.footprint[std::size_t(c)] + 0.1);
+    for (int c = 0; c < int(g.clips.size()); ++c) {
+        const double room = t.footprint[std::size_t(c)] + tuning.wall_margin;
+        if (t.kind[std::size_t(c)] == ClipKind::Idle) t.stand_clearance = std::max(t.stand_clearance, room);
+        if (t.in_place[std::size_t(c)]) t.turn_clearance = std::max(t.turn_clearance, room);
+    }
+    if (!tuning.stand_near_walls) t.stand_clearance = t.turn_clearance;
     if (t.hold_radius == 0)
         throw std::invalid_argument(
             "crowd: the motion graph has no idle clip (standing, looping in place) to stop with");

@@ -28,9 +28,13 @@ struct EscapeTable {
     /// placed at the origin facing +x), so a choice point places it without chaining the route.
     std::vector<std::vector<std::array<double, 2>>> ends;
     double hold_radius = 0;  ///< hold_of() the largest idle clip: any idle clip fits
-    /// How far held ground stays from walls and obstacles: room for any clip in place (turning on the
-    /// spot) and a margin, so an agent that stops can always turn and walk away.
-    double wall_clearance = 0;
+    /// How far held ground stays from walls and obstacles: room for any idle clip plus
+    /// CrowdTuning::wall_margin, so an agent that stops can stand there (CrowdTuning::stand_near_walls;
+    /// turn_clearance with it off).
+    double stand_clearance = 0;
+    /// How far a start stays from walls and obstacles: room for any clip in place (turning on the spot)
+    /// plus CrowdTuning::wall_margin, so an agent can set off in every direction.
+    double turn_clearance = 0;
 
     /// The held ground's radius for idle clip `idle`: its footprint (it loops exactly in place), a
     /// micrometre wider so that placing it cannot round a disk out.

@@ -65,7 +65,7 @@ void Simulation::place_at_random(double gap, double margin) {
 void Simulation::place_agents() {
     if (o_.placed.empty()) {
         if (!policy_->avoids()) return place_at_random(2 * max_radius(), max_radius());
-        return place_at_random(2 * escapes_.hold_radius, escapes_.wall_clearance);
+        return place_at_random(2 * escapes_.hold_radius, escapes_.turn_clearance);
     }
     agents_.reserve(o_.placed.size());
     for (const AgentSpec& s : o_.placed) {
@@ -109,9 +109,9 @@ void Simulation::reserve_starts() {
         Agent& agent = agents_[std::size_t(a)];
         const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};
         for (const Polygon& s : solids_)
-            if (disk_overlaps(s, h.x, h.y, escapes_.wall_clearance))
+            if (disk_overlaps(s, h.x, h.y, escapes_.turn_clearance))
                 throw std::invalid_argument("crowd: agent " + std::to_string(a) + " starts within " +
-                                            std::to_string(escapes_.wall_clearance) + " m of a wall or an obstacle");
+                                            std::to_string(escapes_.turn_clearance) + " m of a wall or an obstacle");
         for (int b = 0; b < a && !o_.placed.empty(); ++b) {  // random starts are placed apart
             const Placement& q = agents_[std::size_t(b)].start;
             if (std::hypot(q.x - h.x, q.y - h.y) < 2 * h.r)

@@ -23,7 +23,7 @@ namespace mobb::crowd {
 AgentRoom AgentRoom::of(const MotionGraph& graph) {
     const EscapeTable escapes = EscapeTable::build(graph);
     AgentRoom room;
-    room.wall_clearance = escapes.wall_clearance;
+    room.wall_clearance = escapes.turn_clearance;
     room.hold_radius = escapes.hold_radius;
     double slimmest = INFINITY, speeds = 0;  // the walking clip whose widest disk is the smallest
     int walks = 0;

@@ -25,6 +25,8 @@ const Field kFields[] = {
     {"moving_speed", &CrowdTuning::moving_speed},
     {"escape_steps", &CrowdTuning::escape_steps},
     {"escape_routes", &CrowdTuning::escape_routes},
+    {"wall_margin", &CrowdTuning::wall_margin},
+    {"stand_near_walls", &CrowdTuning::stand_near_walls},
     {"right_of_way", &CrowdTuning::right_of_way},
     {"right_of_way_after", &CrowdTuning::right_of_way_after},
     {"max_yielding", &CrowdTuning::max_yielding},

@@ -108,7 +108,8 @@ void choice_list(State& s, Ui& ui) {
         const int k = int(listed_choice.row);
         char label[96];
         const std::string outcome = c.outcome == "candidate" ? "" : " (" + c.outcome + ")";
-        const std::string tested = counted ? ", " + std::to_string(listed_choice.candidates) + " candidates" : "";
+        const std::size_t n = listed_choice.candidates;
+        const std::string tested = counted ? ", " + std::to_string(n) + (n == 1 ? " candidate" : " candidates") : "";
         std::snprintf(label, sizeof label, "%.2f s: clip %d%s%s##%d", double(c.frame) * r.dt, c.taken, tested.c_str(),
                       outcome.c_str(), k);
         if (ImGui::Selectable(label, v.choice == k)) {

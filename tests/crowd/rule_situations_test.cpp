@@ -143,12 +143,14 @@ std::vector<Polygon> box_around(double x, double y, double half, double t) {
 
 // An agent boxed in by four walls (1 m from it: room to turn on the spot, none to walk), so it waits
 // from its second clip on; a wanderer 5 m away heading to pass it about 2 m off, within give_way_reach.
+// Its held ground keeps room to turn (stand_near_walls off): with room to stand only, it could step.
 CrowdOptions boxed_in(std::uint64_t seed, bool give_way) {
     CrowdOptions o;
     o.world = {-15, -15, 15, 15, true, box_around(0, 0, 1.0, 0.2)};
     o.seconds = 10;
     o.seed = seed;
     o.tuning.give_way = give_way;
+    o.tuning.stand_near_walls = false;
     o.placed = {agent(0, 0, 0), agent(-5, 2.7, -0.2)};
     o.agents = 2;
     return o;
@@ -216,12 +218,14 @@ TEST(RuleSituations, GivingWayTakesAWalkClearOfAnAgentThatWaits) {
 // A niche 2 m wide off a corridor 2.3 m wide, an agent in it facing out; five wanderers in a column 2.5 m
 // apart walk along the corridor past its mouth, the first standing in it at the start. All wander
 // (walks come first in their order, so the agent in the niche tries its way out at every choice point).
+// Held ground keeps room to turn (stand_near_walls off), so the walkers cannot stop in the niche's mouth.
 CrowdOptions niche(std::uint64_t seed, bool right_of_way) {
     CrowdOptions o;
     o.world = {-12, -1, 12, 2.5, true, {Polygon::rectangle(-12, -1, -1, 0.2), Polygon::rectangle(1, -1, 12, 0.2)}};
     o.seconds = 12;
     o.seed = seed;
     o.tuning.right_of_way = right_of_way;
+    o.tuning.stand_near_walls = false;
     o.placed = {agent(0, 0, M_PI / 2)};
     for (int k = 0; k < 5; ++k) o.placed.push_back(agent(-2.5 * k, 1.3, 0));
     o.agents = int(o.placed.size());
@@ -275,6 +279,21 @@ CrowdOptions door_column(std::uint64_t seed, bool follow) {
     return o;
 }
 
+// The door column of five with stopping near walls on or off (and following on).
+CrowdOptions door_column_near_walls(std::uint64_t seed, bool stand_near_walls) {
+    CrowdOptions o = door_column(seed, true);
+    o.tuning.stand_near_walls = stand_near_walls;
+    return o;
+}
+
+// Whether a choice point's held ground comes within `room` metres of a wall or an obstacle of `o`.
+bool holds_within(const Record& r, const CrowdOptions& o, double room) {
+    for (const ChoicePoint& c : r.choices)
+        for (const Polygon& p : o.world.solids())
+            if (disk_overlaps(p, c.hold[0], c.hold[1], room)) return true;
+    return false;
+}
+
 // Clips agent `a` played standing in place (turning on the spot, idle) before it left.
 int in_place_clips(const Record& r, int a) {
     static const EscapeTable table = EscapeTable::build(graph());
@@ -300,6 +319,29 @@ TEST(RuleSituations, FollowingKeepsAColumnInLineThroughADoor) {
             turns_on += in_place_clips(on.record, a), turns_off += in_place_clips(off.record, a);
         EXPECT_LT(turns_on, turns_off) << "seed " << seed;
     }
+}
+
+// ---- Stopping near walls ----
+
+TEST(RuleSituations, StandingNearWallsStopsInsideTheDoorsTurningRoom) {
+    CrowdTuning on, off;
+    off.stand_near_walls = false;
+    const EscapeTable near = EscapeTable::build(graph(), on), far = EscapeTable::build(graph(), off);
+    ASSERT_LT(near.stand_clearance, far.stand_clearance);
+    EXPECT_EQ(far.stand_clearance, near.turn_clearance);
+    int nearer = 0;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const CrowdOptions o_on = door_column_near_walls(seed, true), o_off = door_column_near_walls(seed, false);
+        const CrowdRun r_on = run(o_on), r_off = run(o_off);
+        EXPECT_TRUE(frame_contacts(r_on.record).empty()) << "seed " << seed;
+        EXPECT_TRUE(frame_contacts(r_off.record).empty()) << "seed " << seed;
+        EXPECT_EQ(crowd_metrics(r_on.record, graph()).reached, 5) << "seed " << seed;
+        // Held ground never within room to stand; off, never within room to turn; on, it uses the door.
+        EXPECT_FALSE(holds_within(r_on.record, o_on, near.stand_clearance * (1 - 1e-6))) << "seed " << seed;
+        EXPECT_FALSE(holds_within(r_off.record, o_off, far.stand_clearance * (1 - 1e-6))) << "seed " << seed;
+        nearer += holds_within(r_on.record, o_on, near.turn_clearance) ? 1 : 0;
+    }
+    EXPECT_GE(nearer, 2) << "agents stop within turning room of the door's posts in most seeds";
 }
 
 }  // namespace

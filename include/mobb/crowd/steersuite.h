@@ -40,7 +40,7 @@ public:
 /// rounded): 0.9786, 0.4825, 0.9545 m, 1.3805 m/s.
 struct AgentRoom {
     /// A start this far from every wall and obstacle: room to turn round on the spot
-    /// (EscapeTable::wall_clearance; `mobb crowd` refuses a scenario whose agent starts closer).
+    /// (EscapeTable::turn_clearance; `mobb crowd` refuses a scenario whose agent starts closer).
     double wall_clearance = 0.98;
     /// The ground an agent stands on when it stops (EscapeTable::hold_radius): two starts are at least
     /// twice this apart.
