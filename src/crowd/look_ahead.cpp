@@ -142,7 +142,8 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
     };
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
     const auto to_go = [&](const Placement& end) {
-        return std::max(s.policy.to_go(site, end), learned.at(end.x, end.y));
+        const double estimate = s.policy.to_go(site, end);
+        return t.look_ahead_learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
     };
     const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
     searched_ = true;

@@ -38,6 +38,7 @@ const Field kFields[] = {
     {"look_ahead", &CrowdTuning::look_ahead},
     {"look_ahead_budget", &CrowdTuning::look_ahead_budget},
     {"look_ahead_dead_end", &CrowdTuning::look_ahead_dead_end},
+    {"look_ahead_learns", &CrowdTuning::look_ahead_learns},
     {"follow", &CrowdTuning::follow},
     {"follow_angle", &CrowdTuning::follow_angle},
     {"follow_goal_reach", &CrowdTuning::follow_goal_reach},

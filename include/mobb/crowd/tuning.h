@@ -64,6 +64,12 @@ struct CrowdTuning {
     bool look_ahead = true;
     int look_ahead_budget = 96;
     double look_ahead_dead_end = 2.0;  ///< seconds
+    /// Whether the look-ahead's estimate of a place rises to what earlier searches found (LearnedCost;
+    /// Korf's LRTA*): a place an agent waited in fills up until another way scores better. Off (the
+    /// policy's estimate alone), the queues jostle less but stay longer: circle_20 2.23-2.50x the
+    /// straight line against 1.97-2.10x, idle 37-39 % against 27-28 %, random door 14 fails every seed
+    /// (bench/results/README.md "Goal crowds that look ahead").
+    bool look_ahead_learns = true;
 
     // Following (src/crowd/follow.cpp; Silver 2005: reservations trusted within a window): a goal agent
     // follows the agents ahead of it - within `follow_angle` of its way (down its navigation field:
