@@ -21,7 +21,7 @@ SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x + h.r, 
 // What a piece's solid queries cover: its held ground reaches as far as it keeps clear of the walls.
 SpaceTimeBox solid_box(const CrowdState& s, const Piece& p) {
     const Hold& h = p.hold;
-    return p.kind == Piece::Held ? hold_box({h.x, h.y, std::max(h.r, s.escapes.stand_clearance), h.frame}) : p.clip.box;
+    return p.kind == Piece::Held ? hold_box({h.x, h.y, std::max(h.r, s.hold_clearance), h.frame}) : p.clip.box;
 }
 
 // A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
@@ -213,8 +213,8 @@ void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::
 
 bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
     const Polygon& solid = s.solids[std::size_t(k)];
-    // Held ground keeps room to stand from the walls (EscapeTable::stand_clearance), so a stop is safe.
-    if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.escapes.stand_clearance);
+    // Held ground keeps room to stand from the walls (CrowdState::hold_clearance), so a stop is safe.
+    if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.hold_clearance);
     const BoxedClip& c = mine.clip;
     return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.m, solid);
 }

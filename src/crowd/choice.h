@@ -127,6 +127,9 @@ struct CrowdState {
     const EscapeTable& escapes;
     const Policy& policy;
     const CrowdOptions& options;
+    /// Metres held ground keeps from the solids: EscapeTable::stand_clearance where the policy's agents
+    /// stop near walls (Policy::stops_near_walls, CrowdTuning::stand_near_walls), else turn_clearance.
+    double hold_clearance;
     const std::vector<Polygon>& solids;  ///< World::solids(), by solid index
     const BroadPhase& solid_grid;        ///< the solids' bounds, by solid index (owner -1)
     const BroadPhase& broad;             ///< pieces live now
@@ -333,7 +336,7 @@ bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, 
 /// were reused.
 void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out);
 /// Whether it meets solid k: a clip's samples by disk_overlaps(); held ground when the solid is nearer
-/// than EscapeTable::stand_clearance.
+/// than CrowdState::hold_clearance.
 bool meets_solid(const CrowdState& s, const Piece& mine, int k);
 
 }  // namespace mobb::crowd

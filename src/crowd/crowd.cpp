@@ -56,6 +56,8 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       o_(o),
       escapes_(EscapeTable::build(g, o.tuning)),
       policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
+      hold_clearance_(o.tuning.stand_near_walls && policy_->stops_near_walls() ? escapes_.stand_clearance
+                                                                               : escapes_.turn_clearance),
       solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
       solid_grid_(solid_grid(solids_, o)),
       pool_(o.threads),

@@ -85,7 +85,6 @@ EscapeTable EscapeTable::build(const MotionGraph& g, const CrowdTuning& tuning) 
         if (t.kind[std::size_t(c)] == ClipKind::Idle) t.stand_clearance = std::max(t.stand_clearance, room);
         if (t.in_place[std::size_t(c)]) t.turn_clearance = std::max(t.turn_clearance, room);
     }
-    if (!tuning.stand_near_walls) t.stand_clearance = t.turn_clearance;
     if (t.hold_radius == 0)
         throw std::invalid_argument(
             "crowd: the motion graph has no idle clip (standing, looping in place) to stop with");

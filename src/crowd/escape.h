@@ -28,9 +28,9 @@ struct EscapeTable {
     /// placed at the origin facing +x), so a choice point places it without chaining the route.
     std::vector<std::vector<std::array<double, 2>>> ends;
     double hold_radius = 0;  ///< hold_of() the largest idle clip: any idle clip fits
-    /// How far held ground stays from walls and obstacles: room for any idle clip plus
-    /// CrowdTuning::wall_margin, so an agent that stops can stand there (CrowdTuning::stand_near_walls;
-    /// turn_clearance with it off).
+    /// How far held ground may come to walls and obstacles: room for any idle clip plus
+    /// CrowdTuning::wall_margin, so an agent that stops can stand there (where its policy stops near
+    /// walls: CrowdState::hold_clearance).
     double stand_clearance = 0;
     /// How far a start stays from walls and obstacles: room for any clip in place (turning on the spot)
     /// plus CrowdTuning::wall_margin, so an agent can set off in every direction.

@@ -36,6 +36,7 @@ public:
     }
 
     Selection kind() const override { return Selection::Goal; }
+    bool stops_near_walls() const override { return true; }
 
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
         if (!site.goal) return;

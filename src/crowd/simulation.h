@@ -28,8 +28,8 @@ public:
 
 private:
     CrowdState state() const {
-        return {g_,          outlines_, narrow_, escapes_, *policy_, o_,         solids_,
-                solid_grid_, broad_,    agents_, pieces_,  waiting_, waiting_at_};
+        return {g_,      outlines_,   narrow_, escapes_, *policy_, o_,       hold_clearance_,
+                solids_, solid_grid_, broad_,  agents_,  pieces_,  waiting_, waiting_at_};
     }
     double max_radius() const;
     void place_agents();
@@ -68,6 +68,7 @@ private:
     const CrowdOptions& o_;
     const EscapeTable escapes_;
     const std::unique_ptr<Policy> policy_;
+    const double hold_clearance_;        // metres held ground keeps from the solids (CrowdState)
     const std::vector<Polygon> solids_;  // none when the policy does not avoid
     const BroadPhase solid_grid_;
     util::WorkerPool pool_;

@@ -143,14 +143,12 @@ std::vector<Polygon> box_around(double x, double y, double half, double t) {
 
 // An agent boxed in by four walls (1 m from it: room to turn on the spot, none to walk), so it waits
 // from its second clip on; a wanderer 5 m away heading to pass it about 2 m off, within give_way_reach.
-// Its held ground keeps room to turn (stand_near_walls off): with room to stand only, it could step.
 CrowdOptions boxed_in(std::uint64_t seed, bool give_way) {
     CrowdOptions o;
     o.world = {-15, -15, 15, 15, true, box_around(0, 0, 1.0, 0.2)};
     o.seconds = 10;
     o.seed = seed;
     o.tuning.give_way = give_way;
-    o.tuning.stand_near_walls = false;
     o.placed = {agent(0, 0, 0), agent(-5, 2.7, -0.2)};
     o.agents = 2;
     return o;
@@ -218,14 +216,12 @@ TEST(RuleSituations, GivingWayTakesAWalkClearOfAnAgentThatWaits) {
 // A niche 2 m wide off a corridor 2.3 m wide, an agent in it facing out; five wanderers in a column 2.5 m
 // apart walk along the corridor past its mouth, the first standing in it at the start. All wander
 // (walks come first in their order, so the agent in the niche tries its way out at every choice point).
-// Held ground keeps room to turn (stand_near_walls off), so the walkers cannot stop in the niche's mouth.
 CrowdOptions niche(std::uint64_t seed, bool right_of_way) {
     CrowdOptions o;
     o.world = {-12, -1, 12, 2.5, true, {Polygon::rectangle(-12, -1, -1, 0.2), Polygon::rectangle(1, -1, 12, 0.2)}};
     o.seconds = 12;
     o.seed = seed;
     o.tuning.right_of_way = right_of_way;
-    o.tuning.stand_near_walls = false;
     o.placed = {agent(0, 0, M_PI / 2)};
     for (int k = 0; k < 5; ++k) o.placed.push_back(agent(-2.5 * k, 1.3, 0));
     o.agents = int(o.placed.size());
@@ -324,11 +320,9 @@ TEST(RuleSituations, FollowingKeepsAColumnInLineThroughADoor) {
 // ---- Stopping near walls ----
 
 TEST(RuleSituations, StandingNearWallsStopsInsideTheDoorsTurningRoom) {
-    CrowdTuning on, off;
-    off.stand_near_walls = false;
-    const EscapeTable near = EscapeTable::build(graph(), on), far = EscapeTable::build(graph(), off);
-    ASSERT_LT(near.stand_clearance, far.stand_clearance);
-    EXPECT_EQ(far.stand_clearance, near.turn_clearance);
+    const EscapeTable table = EscapeTable::build(graph());
+    const double stand = table.stand_clearance, turn = table.turn_clearance;
+    ASSERT_LT(stand, turn);
     int nearer = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         const CrowdOptions o_on = door_column_near_walls(seed, true), o_off = door_column_near_walls(seed, false);
@@ -337,9 +331,9 @@ TEST(RuleSituations, StandingNearWallsStopsInsideTheDoorsTurningRoom) {
         EXPECT_TRUE(frame_contacts(r_off.record).empty()) << "seed " << seed;
         EXPECT_EQ(crowd_metrics(r_on.record, graph()).reached, 5) << "seed " << seed;
         // Held ground never within room to stand; off, never within room to turn; on, it uses the door.
-        EXPECT_FALSE(holds_within(r_on.record, o_on, near.stand_clearance * (1 - 1e-6))) << "seed " << seed;
-        EXPECT_FALSE(holds_within(r_off.record, o_off, far.stand_clearance * (1 - 1e-6))) << "seed " << seed;
-        nearer += holds_within(r_on.record, o_on, near.turn_clearance) ? 1 : 0;
+        EXPECT_FALSE(holds_within(r_on.record, o_on, stand * (1 - 1e-6))) << "seed " << seed;
+        EXPECT_FALSE(holds_within(r_off.record, o_off, turn * (1 - 1e-6))) << "seed " << seed;
+        nearer += holds_within(r_on.record, o_on, turn) ? 1 : 0;
     }
     EXPECT_GE(nearer, 2) << "agents stop within turning room of the door's posts in most seeds";
 }
