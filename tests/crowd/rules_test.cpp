@@ -1,12 +1,13 @@
 // Each crowd rule on a situation built for it, with the rule on and switched off (CrowdTuning): the
 // look-ahead gets an agent out of a ring of standing agents through its gap; the right of way, giving way
 // and the standing gap act in a dense wandering crowd, and leave no trace when off (each on a small
-// situation of its own: rule_situations_test.cpp); the policies decide what is theirs (whether choices reserve anything, who keeps the standing gap).
+// situation of its own: rule_situations_test.cpp); the policies decide what is theirs (whether choices reserve anything, who keeps the standing gap, who stops near walls).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "committed_graph.h"
+#include "escape.h"
 #include "mobb/crowd/crowd.h"
 #include "mobb/crowd/metrics.h"
 
@@ -170,6 +171,29 @@ TEST(Rules, EachPolicySaysWhatIsItsOwn) {
     EXPECT_FALSE(r.record.world.walls);
     EXPECT_EQ(r.summary.escapes, 0u);
     for (const ChoicePoint& c : r.record.choices) EXPECT_FALSE(c.holds);
+}
+
+// Stopping near walls (CrowdTuning::stand_near_walls) is the goal agents': wanderers' held ground keeps
+// room to turn from the walls, so one that stops facing a wall can still turn and walk away.
+TEST(Rules, OnlyGoalAgentsStopNearWalls) {
+    const std::vector<char> in_place(graph().clips.size(), 0);
+    const World w;
+    const PolicyContext context{graph(), w, in_place, {}, 1.0, {}};
+    EXPECT_FALSE(make_policy(Selection::Avoid, context)->stops_near_walls());
+    EXPECT_TRUE(make_policy(Selection::Goal, context)->stops_near_walls());
+    const EscapeTable table = EscapeTable::build(graph());
+    const CrowdOptions o = dense(1);
+    const CrowdRun r = run(o);
+    const std::vector<Polygon> solids = o.world.solids();
+    int holds = 0;
+    for (const ChoicePoint& c : r.record.choices) {
+        if (!c.holds) continue;
+        ++holds;
+        for (const Polygon& p : solids)
+            ASSERT_FALSE(disk_overlaps(p, c.hold[0], c.hold[1], table.turn_clearance * (1 - 1e-6)))
+                << "agent " << c.agent << " frame " << c.frame;
+    }
+    EXPECT_GT(holds, 1000);
 }
 
 }  // namespace
