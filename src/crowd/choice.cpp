@@ -213,7 +213,7 @@ void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::
 
 bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
     const Polygon& solid = s.solids[std::size_t(k)];
-    // Held ground keeps room to stand from the walls (CrowdState::hold_clearance), so a stop is safe.
+    // Held ground keeps CrowdState::hold_clearance from the walls: room to stand there, or to turn round.
     if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.hold_clearance);
     const BoxedClip& c = mine.clip;
     return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.m, solid);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "committed_graph.h"
 #include "escape.h"
@@ -155,14 +156,18 @@ TEST(Rules, StandingGapIsTheWanderersAndSwitchesOff) {
     EXPECT_EQ(crowded(goal.record), 0);
 }
 
+// A policy of the given kind in an empty default world, no goals.
+std::unique_ptr<Policy> policy(Selection kind) {
+    static const std::vector<char> in_place(graph().clips.size(), 0);
+    static const World world;
+    return make_policy(kind, {graph(), world, in_place, {}, 1.0, {}});
+}
+
 TEST(Rules, EachPolicySaysWhatIsItsOwn) {
-    const std::vector<char> in_place(graph().clips.size(), 0);
-    const World w;
-    const PolicyContext context{graph(), w, in_place, {}, 1.0, {}};
-    EXPECT_FALSE(make_policy(Selection::Random, context)->avoids());
-    EXPECT_TRUE(make_policy(Selection::Avoid, context)->avoids());
-    EXPECT_TRUE(make_policy(Selection::Avoid, context)->keeps_standing_gap());
-    EXPECT_FALSE(make_policy(Selection::Random, context)->keeps_standing_gap());
+    EXPECT_FALSE(policy(Selection::Random)->avoids());
+    EXPECT_TRUE(policy(Selection::Avoid)->avoids());
+    EXPECT_TRUE(policy(Selection::Avoid)->keeps_standing_gap());
+    EXPECT_FALSE(policy(Selection::Random)->keeps_standing_gap());
     // The random policy's crowd reserves nothing: no escapes, no walls.
     CrowdOptions o = dense(1);
     o.select = Selection::Random;
@@ -176,11 +181,8 @@ TEST(Rules, EachPolicySaysWhatIsItsOwn) {
 // Stopping near walls (CrowdTuning::stand_near_walls) is the goal agents': wanderers' held ground keeps
 // room to turn from the walls, so one that stops facing a wall can still turn and walk away.
 TEST(Rules, OnlyGoalAgentsStopNearWalls) {
-    const std::vector<char> in_place(graph().clips.size(), 0);
-    const World w;
-    const PolicyContext context{graph(), w, in_place, {}, 1.0, {}};
-    EXPECT_FALSE(make_policy(Selection::Avoid, context)->stops_near_walls());
-    EXPECT_TRUE(make_policy(Selection::Goal, context)->stops_near_walls());
+    EXPECT_FALSE(policy(Selection::Avoid)->stops_near_walls());
+    EXPECT_TRUE(policy(Selection::Goal)->stops_near_walls());
     const EscapeTable table = EscapeTable::build(graph());
     const CrowdOptions o = dense(1);
     const CrowdRun r = run(o);

@@ -26,8 +26,9 @@ struct CrowdTuning {
     double wall_margin = 0.1;
     /// Stopping near walls (EscapeTable::stand_clearance; goal agents only: Policy::stops_near_walls):
     /// held ground needs room to stand (0.58 m from walls on the committed graph), not room to turn on the
-    /// spot (0.98 m); a turn is tested against the walls where it is chosen, as every clip is. Trades the certainty that a stopped agent can turn
-    /// round for ground to stop on in doors and corridors: a 2.4 m door keeps 1.24 m of it, not 0.44 m.
+    /// spot (0.98 m); a turn is tested against the walls where it is chosen, as every clip is. Trades the
+    /// certainty that a stopped agent can turn round for ground to stop on in doors and corridors: a 2.4 m
+    /// door keeps 1.24 m of it, not 0.44 m.
     /// 117 of 123 evalset runs pass against 114, mean idle 14.6 -> 13.2 % (bench/results/README.md,
     /// "Room to stop at walls").
     bool stand_near_walls = true;
