@@ -142,6 +142,8 @@ void add_crowd(CLI::App& app, int& exit_code) {
     rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
     rule_off("--no-stand-near-walls", &crowd::CrowdTuning::stand_near_walls,
              "Held ground keeps room to turn on the spot from walls and obstacles, not only room to stand");
+    rule_off("--no-leave-in-stride", &crowd::CrowdTuning::leave_in_stride,
+             "Agents leaving at an exit reserve a stop beyond it, as any clip's plan does");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
     auto tune = std::make_shared<std::vector<std::string>>();

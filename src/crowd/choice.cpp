@@ -501,6 +501,11 @@ void Choice::evaluate(const CrowdState& s) {
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         if (!free_of_others(s, k, mine, Hits::Stop)) continue;
+        if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
+            plan_ = Plan{};
+            take(k, Outcome::Candidate);
+            return;
+        }
         const auto& routes = s.escapes.routes[std::size_t(c.clip)];
         const std::uint32_t crowded = crowded_routes(s, k);
         const std::vector<int>* refused_route = nullptr;

@@ -222,6 +222,7 @@ private:
                     std::size_t& refused);
     bool has_right_of_way(const CrowdState& s) const;
     bool passes_waiting(const CrowdState& s, int k);
+    bool leaves_after(const CrowdState& s, const PlacedCandidate& c) const;
     void take_deferred();
     bool take_right_of_way(const CrowdState& s, int end);
     bool reroute_yielding(const CrowdState& s, const BoxedClip& c);

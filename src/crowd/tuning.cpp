@@ -27,6 +27,7 @@ const Field kFields[] = {
     {"escape_routes", &CrowdTuning::escape_routes},
     {"wall_margin", &CrowdTuning::wall_margin},
     {"stand_near_walls", &CrowdTuning::stand_near_walls},
+    {"leave_in_stride", &CrowdTuning::leave_in_stride},
     {"right_of_way", &CrowdTuning::right_of_way},
     {"right_of_way_after", &CrowdTuning::right_of_way_after},
     {"max_yielding", &CrowdTuning::max_yielding},

@@ -1,4 +1,4 @@
-// Four crowd rules, each on a small situation built by hand in which it must act, run with the rule on
+// Crowd rules, each on a small situation built by hand in which it must act, run with the rule on
 // and switched off (CrowdTuning), besides the dense wandering crowd of rules_test.cpp:
 // - the standing gap: a wanderer in a corridor closed by an agent standing still - it turns back, again
 //   and again, and reserves no ground within the gap of the standing agent's;
@@ -7,7 +7,10 @@
 // - the right of way: an agent in a niche off a corridor, kept in by a column of walkers, takes its way
 //   out through a walker's reserved stop once it has waited, and that walker stops another way;
 // - following: a column of goal agents in front of a door waits in line behind the one ahead and goes
-//   through, rather than walking round a queue that has no way round.
+//   through, rather than walking round a queue that has no way round;
+// - stopping near walls: the same column holds ground inside the door's turning room, never its standing
+//   room;
+// - leaving in stride: two columns converging on one exit hold no stop beyond it, and are out sooner.
 // Each is the smallest situation found in which the rule must act - a few agents placed by hand, walls
 // where the rule needs the others kept out - and asserts what the rule is for; with the rule off, what it
 // prevents happens, and neither run has a contact. Wanderers' choices depend on the seed: several each.
@@ -336,6 +339,54 @@ TEST(RuleSituations, StandingNearWallsStopsInsideTheDoorsTurningRoom) {
         nearer += holds_within(r_on.record, o_on, turn) ? 1 : 0;
     }
     EXPECT_GE(nearer, 2) << "agents stop within turning room of the door's posts in most seeds";
+}
+
+// ---- Leaving in stride ----
+
+// Ten goal agents in two columns 3 m apart, 1.5 m between agents, in the open, for one exit between the
+// columns 5 m beyond their heads, where each leaves the run.
+CrowdOptions exit_columns(std::uint64_t seed, bool leave_in_stride) {
+    CrowdOptions o;
+    o.world = {-10, -4, 10, 4, true, {}};
+    o.seconds = 40;
+    o.seed = seed;
+    o.select = Selection::Goal;
+    o.tuning.leave_in_stride = leave_in_stride;
+    for (int k = 0; k < 10; ++k) {
+        AgentSpec a = agent(2.0 + 1.5 * (k / 2), k % 2 ? 1.5 : -1.5, M_PI);
+        a.goals = {{-3, 0}};
+        a.at_goal = AtGoal::Leave;
+        o.placed.push_back(a);
+    }
+    o.agents = int(o.placed.size());
+    return o;
+}
+
+// The last choice point of agent `a` before it left: the one whose clip took it to the exit.
+const ChoicePoint& last_choice(const Record& r, int a) {
+    const auto c =
+        std::find_if(r.choices.rbegin(), r.choices.rend(), [&](const ChoicePoint& p) { return p.agent == a; });
+    if (c == r.choices.rend()) throw std::logic_error("no choice point");
+    return *c;
+}
+
+TEST(RuleSituations, LeavingInStrideReservesNoStopBeyondTheExit) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const CrowdRun on = run(exit_columns(seed, true));
+        const CrowdRun off = run(exit_columns(seed, false));
+        EXPECT_TRUE(frame_contacts(on.record).empty()) << "seed " << seed;
+        EXPECT_TRUE(frame_contacts(off.record).empty()) << "seed " << seed;
+        for (int a = 0; a < 10; ++a) {
+            ASSERT_TRUE(on.record.tracks[std::size_t(a)].left_frame) << "seed " << seed << " agent " << a;
+            ASSERT_TRUE(off.record.tracks[std::size_t(a)].left_frame) << "seed " << seed << " agent " << a;
+            // On, the clip into the exit is the whole plan; off, a stop beyond it is held until the agent left.
+            EXPECT_FALSE(last_choice(on.record, a).holds) << "seed " << seed << " agent " << a;
+            EXPECT_TRUE(last_choice(off.record, a).holds) << "seed " << seed << " agent " << a;
+        }
+        const CrowdMetrics m_on = crowd_metrics(on.record, graph()), m_off = crowd_metrics(off.record, graph());
+        // Off, each waits at the exit for the stop the one before holds there until it has left.
+        EXPECT_LT(m_on.mean_time_to_goal, m_off.mean_time_to_goal) << "seed " << seed;
+    }
 }
 
 }  // namespace

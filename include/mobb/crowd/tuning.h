@@ -1,7 +1,7 @@
 // Every tuning number of the crowd's rules in one place, with its unit, what it trades and what chose it
 // (after Box2D's constants.h and DetourCrowd's dtCrowdAgentParams). Each rule can be switched off - on
 // the command line `mobb crowd --no-right-of-way`, `--no-give-way`, `--no-standing-gap`,
-// `--no-look-ahead`, `--no-follow`, `--no-stand-near-walls` - so a rule's effect is one command away, and
+// `--no-look-ahead`, `--no-follow`, `--no-stand-near-walls`, `--no-leave-in-stride` - so a rule's effect is one command away, and
 // any field is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning()). The measurements behind
 // the values are in bench/results/README.md (the section named after each rule). Metrics keep their own thresholds
 // (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
@@ -32,6 +32,12 @@ struct CrowdTuning {
     /// 117 of 123 evalset runs pass against 114, mean idle 14.6 -> 13.2 % (bench/results/README.md,
     /// "Room to stop at walls").
     bool stand_near_walls = true;
+
+    /// Leaving in stride (src/crowd/leave_in_stride.cpp): a clip that ends within the goal radius of an
+    /// agent's exit (its last goal, AtGoal::Leave) is its whole plan - no stop reserved beyond the exit,
+    /// where it leaves the run. Off, the exit holds each leaver's stop until it has left, and those behind
+    /// queue for it (bench/results/README.md "leaving in stride").
+    bool leave_in_stride = true;
 
     // The right of way (src/crowd/right_of_way.cpp; Okumura et al.'s PIBT, 2019): an agent that has not
     // moved for `right_of_way_after` seconds may take a walk whose plan meets only the reservations of
