@@ -1,11 +1,15 @@
 // What every layer needs to draw one frame.
 #pragma once
 #include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include "shader.h"
 #include "space.h"
 
 namespace mobb::render {
+
+/// The viewport's clear colour, and the plates behind titles (TextLayer) so that they read over lines.
+inline constexpr glm::vec4 kBackground(0.965f, 0.965f, 0.972f, 1.0f);
 
 struct DrawContext {
     glm::mat4 view_proj{1.0f};

@@ -104,7 +104,7 @@ void Renderer::draw(const Frame& frame, const Camera& camera, const Viewport& vi
     ctx.bounds = bounds_;
 
     glViewport(viewport.x, viewport.y, width, height);
-    glClearColor(0.965f, 0.965f, 0.972f, 1.0f);
+    glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);

@@ -89,6 +89,7 @@ void TextLayer::draw(const DrawContext& ctx) {
         if (!drawn[k]) continue;
         const Label& label = *shown[k];
         drawn_.push_back({label.text, spots[k].box, label.role});
+        if (label.role == LabelRole::Title) plate(spots[k].box, scale);
         // The glyphs keep their place in the box the layout chose.
         const glm::vec2 origin(spots[k].box.x0 - inks[k].x0 * scale, spots[k].box.y0 - inks[k].y0 * scale);
         const std::vector<glm::vec2>& g = glyphs[k];
@@ -104,7 +105,20 @@ void TextLayer::draw(const DrawContext& ctx) {
     // Pixels from the top-left corner: bottom is the height, top 0 (not a swap).
     ctx.color->set("u_mvp",
                    glm::ortho(0.0f, width, height, 0.0f, -1.0f, 1.0f));  // NOLINT(readability-suspicious-call-argument)
+    glEnable(GL_BLEND);                                                  // the plates; glyphs are opaque
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     tris_.draw();
+    glDisable(GL_BLEND);
+}
+
+// A title (the cursor's time, the time axis' caption) sits on a plate of the background, mostly opaque, so
+// that the lines and disks it is placed over do not cut through its glyphs.
+void TextLayer::plate(const TextBox& box, float scale) {
+    constexpr float kOpacity = 0.85f;
+    const float pad = 0.5f * label_gap(scale);  // half the room between labels: plates never meet
+    const float x0 = box.x0 - pad, y0 = box.y0 - pad, x1 = box.x1 + pad, y1 = box.y1 + pad;
+    tris_.quad({x0, y0, 0.0f}, {x1, y0, 0.0f}, {x1, y1, 0.0f}, {x0, y1, 0.0f},
+               glm::vec4(glm::vec3(kBackground), kOpacity));
 }
 
 }  // namespace mobb::render

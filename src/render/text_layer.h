@@ -44,6 +44,8 @@ public:
     const std::vector<DrawnLabel>& drawn() const { return drawn_; }
 
 private:
+    void plate(const TextBox& box, float scale);
+
     struct Label {
         glm::vec3 world;
         std::string text;
