@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mobb/util/json_text.h"
+#include "planar.h"
 
 namespace mobb::crowd {
 
@@ -16,7 +17,7 @@ namespace {
 
 using Samples = std::vector<std::array<double, 4>>;
 
-double step(const Samples& s, std::size_t f) { return std::hypot(s[f + 1][1] - s[f][1], s[f + 1][2] - s[f][2]); }
+double step(const Samples& s, std::size_t f) { return planar_distance(s[f + 1][1] - s[f][1], s[f + 1][2] - s[f][2]); }
 
 // The first frame within `radius` of the last goal after coming within it of each goal before in turn,
 // or -1.
@@ -24,7 +25,7 @@ std::int64_t arrival(const AgentTrack& t, double radius) {
     std::size_t f = 0;
     for (std::size_t k = 0; k < t.goals.size(); ++k) {
         const auto& g = t.goals[k];
-        while (f < t.samples.size() && !(std::hypot(t.samples[f][1] - g[0], t.samples[f][2] - g[1]) < radius)) ++f;
+        while (f < t.samples.size() && !(planar_distance(t.samples[f][1] - g[0], t.samples[f][2] - g[1]) < radius)) ++f;
         if (f == t.samples.size()) return -1;
         if (k + 1 == t.goals.size()) return std::int64_t(f);
     }
@@ -35,7 +36,7 @@ std::int64_t arrival(const AgentTrack& t, double radius) {
 double straight_length(const AgentTrack& t) {
     double length = 0, x = t.samples[0][1], y = t.samples[0][2];
     for (const auto& g : t.goals) {
-        length += std::hypot(g[0] - x, g[1] - y);
+        length += planar_distance(g[0] - x, g[1] - y);
         x = g[0], y = g[1];
     }
     return length;
@@ -50,7 +51,7 @@ std::int64_t idle_frames(const Samples& s, std::int64_t until, double dt, std::u
     for (std::int64_t f = 0; f < until; ++f) {
         const std::int64_t a = std::max<std::int64_t>(0, f - half), b = std::min(n - 1, f + half);
         const double d =
-            std::hypot(s[std::size_t(b)][1] - s[std::size_t(a)][1], s[std::size_t(b)][2] - s[std::size_t(a)][2]);
+            planar_distance(s[std::size_t(b)][1] - s[std::size_t(a)][1], s[std::size_t(b)][2] - s[std::size_t(a)][2]);
         if (b > a && d / (double(b - a) * dt) < CrowdMetrics::kIdleSpeed) {
             ++idle;
             longest = std::max(longest, ++run);
@@ -78,7 +79,7 @@ std::pair<double, double> effort(const Samples& s, double dt, double end) {
         const auto p = at_time(s, k * kFrame, dt), q = at_time(s, (k + 1) * kFrame, dt);
         const double vx = (q[0] - p[0]) / kFrame, vy = (q[1] - p[1]) / kFrame;
         energy += 0.5 * (vx * vx + vy * vy);
-        if (k > 0) acceleration += std::hypot(vx - vx0, vy - vy0) / kFrame;
+        if (k > 0) acceleration += planar_distance(vx - vx0, vy - vy0) / kFrame;
         vx0 = vx, vy0 = vy;
     }
     return {energy, acceleration};
@@ -93,7 +94,7 @@ std::vector<int> episodes(const Record& r, const std::vector<Contact>& contacts,
     for (const Contact& c : contacts) {
         const auto& p = r.tracks[std::size_t(c.a)].samples[std::size_t(c.frame)];
         const auto& q = r.tracks[std::size_t(c.b)].samples[std::size_t(c.frame)];
-        if (p[3] + q[3] - std::hypot(p[1] - q[1], p[2] - q[2]) <= 1e-3) continue;
+        if (p[3] + q[3] - planar_distance(p[1] - q[1], p[2] - q[2]) <= 1e-3) continue;
         auto it = last.find({c.a, c.b});
         if (it == last.end() || it->second + 1 < c.frame) ++out[std::size_t(c.a)], ++out[std::size_t(c.b)];
         last[{c.a, c.b}] = c.frame;
@@ -133,7 +134,7 @@ void contact_metrics(const Record& r, CrowdMetrics& m, std::vector<int>& collisi
         if (!c.excused) ++m.contacts_outside_fallbacks;
         const auto& p = r.tracks[std::size_t(c.a)].samples[std::size_t(c.frame)];
         const auto& q = r.tracks[std::size_t(c.b)].samples[std::size_t(c.frame)];
-        m.max_penetration = std::max(m.max_penetration, p[3] + q[3] - std::hypot(p[1] - q[1], p[2] - q[2]));
+        m.max_penetration = std::max(m.max_penetration, p[3] + q[3] - planar_distance(p[1] - q[1], p[2] - q[2]));
     }
     const auto solid = solid_contacts(r);
     for (const auto& frames : solid) m.obstacle_contacts += frames.size();
@@ -148,8 +149,8 @@ namespace {
 double clip_speed(const GraphClip& c) {
     double length = 0;
     for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
-        length +=
-            std::hypot(c.path.samples[i + 1].x - c.path.samples[i].x, c.path.samples[i + 1].y - c.path.samples[i].y);
+        length += planar_distance(c.path.samples[i + 1].x - c.path.samples[i].x,
+                                  c.path.samples[i + 1].y - c.path.samples[i].y);
     return length / c.path.duration();
 }
 

@@ -5,6 +5,8 @@
 #include <iterator>
 #include <limits>
 
+#include "planar.h"
+
 namespace mobb::crowd {
 
 namespace {
@@ -33,7 +35,7 @@ void MetricsStream::contacts(std::int64_t f, const std::array<double, 4>* disks,
         const Contact& c = contacts[k];
         const auto& p = disks[std::size_t(c.a)];
         const auto& q = disks[std::size_t(c.b)];
-        const double depth = p[3] + q[3] - std::hypot(p[1] - q[1], p[2] - q[2]);
+        const double depth = p[3] + q[3] - planar_distance(p[1] - q[1], p[2] - q[2]);
         ++m_.contacts;
         if (!c.excused) ++m_.contacts_outside_fallbacks;
         m_.max_penetration = std::max(m_.max_penetration, depth);
@@ -79,7 +81,8 @@ void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<doubl
     if (t.n == 0) t.start = {x, y};
     // Within the radius of each goal in turn (metrics.cpp's `arrival`): a frame may reach several.
     const auto& goals = header_.tracks[a].goals;
-    while (t.reached < 0 && t.goal < goals.size() && std::hypot(x - goals[t.goal][0], y - goals[t.goal][1]) < radius_) {
+    while (t.reached < 0 && t.goal < goals.size() &&
+           planar_distance(x - goals[t.goal][0], y - goals[t.goal][1]) < radius_) {
         if (t.goal + 1 == goals.size())
             t.reached = f;
         else
@@ -87,7 +90,7 @@ void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<doubl
     }
     if (t.n > 0) {
         const auto& p = at(a, f - 1);
-        const double step = std::hypot(x - p[0], y - p[1]);
+        const double step = planar_distance(x - p[0], y - p[1]);
         t.length += step;
         if (t.reached < 0 || f - 1 < t.reached) t.to_goal += step;
     }
@@ -127,7 +130,7 @@ void MetricsStream::idle(std::size_t a, Track& t, Counts& counts) {
         if (!t.ended && f + half_ > t.n - 1) break;  // its window is not all there yet
         const std::int64_t lo = std::max<std::int64_t>(0, f - half_), hi = std::min(t.n - 1, f + half_);
         const auto &p = at(a, lo), &q = at(a, hi);
-        const double d = std::hypot(q[0] - p[0], q[1] - p[1]);
+        const double d = planar_distance(q[0] - p[0], q[1] - p[1]);
         if (hi > lo && d / (double(hi - lo) * dt) < CrowdMetrics::kIdleSpeed) {
             ++counts.idle;
             t.longest = std::max(t.longest, ++t.run);
@@ -169,7 +172,7 @@ void MetricsStream::effort(std::size_t a, Track& t) {
         const auto p = at_time(a, t, k * kSteerFrame), q = at_time(a, t, (k + 1) * kSteerFrame);
         const double vx = (q[0] - p[0]) / kSteerFrame, vy = (q[1] - p[1]) / kSteerFrame;
         t.energy += 0.5 * (vx * vx + vy * vy);
-        if (k > 0) t.acceleration += std::hypot(vx - t.vx0, vy - t.vy0) / kSteerFrame;
+        if (k > 0) t.acceleration += planar_distance(vx - t.vx0, vy - t.vy0) / kSteerFrame;
         t.vx0 = vx, t.vy0 = vy;
         ++t.effort_next;
     }
@@ -209,7 +212,7 @@ CrowdMetrics MetricsStream::finish(std::uint64_t choice_points, std::uint64_t fa
             m.max_time_to_goal = std::max(m.max_time_to_goal, double(t.reached) * dt);
             double straight = 0, x = t.start[0], y = t.start[1];
             for (const auto& g : goals) {
-                straight += std::hypot(g[0] - x, g[1] - y);
+                straight += planar_distance(g[0] - x, g[1] - y);
                 x = g[0], y = g[1];
             }
             ratio += straight > 0 ? t.to_goal / straight : 1.0;

@@ -1,5 +1,6 @@
 #include "nav_field.h"
 #include "mobb/core/assert.h"
+#include "planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +119,7 @@ double NavField::distance(double x, double y) const {
     const double v = value_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)];
     if (v >= kUnreachable) return kUnreachable;
     const double dx = fx - (ix + 0.5), dy = fy - (iy + 0.5);
-    return v + std::sqrt(dx * dx + dy * dy) * cell_;  // not hypot: this runs for every clip a search scores
+    return v + planar_distance(dx, dy) * cell_;  // this runs for every clip a search scores
 }
 
 }  // namespace mobb::crowd

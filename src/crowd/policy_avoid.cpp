@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "mobb/crowd/policy.h"
+#include "planar.h"
 
 namespace mobb::crowd {
 
@@ -119,7 +120,7 @@ private:
 
     // How far the agent could go on in the direction it moved from `from` to `to` before leaving the world.
     double ahead(const Placement& from, const Placement& to) const {
-        const double dx = to.x - from.x, dy = to.y - from.y, len = std::sqrt(dx * dx + dy * dy);
+        const double dx = to.x - from.x, dy = to.y - from.y, len = planar_distance(dx, dy);
         if (len == 0) return 0;
         const double ux = dx / len, uy = dy / len;
         double t = 1e300;
