@@ -18,6 +18,13 @@ std::int64_t block_frames(std::size_t agents) {
     return std::int64_t(std::clamp<std::size_t>(65536 / std::max<std::size_t>(1, agents), 1, 256));
 }
 
+std::int64_t group_frames(std::size_t agents) {
+    constexpr std::size_t kDisks = std::size_t{1} << 23, kFrames = 32;
+    const std::int64_t block = block_frames(agents);
+    const auto frames = std::int64_t(std::min(kFrames, kDisks / std::max<std::size_t>(1, agents)));
+    return block * std::max<std::int64_t>(1, frames / block);
+}
+
 FrameStream::FrameStream(const MotionGraph& graph, const Record& header, RecordSink& sink, double goal_radius)
     : g_(graph),
       header_(header),
@@ -25,7 +32,8 @@ FrameStream::FrameStream(const MotionGraph& graph, const Record& header, RecordS
       metrics_(header, graph, goal_radius),
       tracks_(header.tracks.size()),
       block_(block_frames(header.tracks.size())),
-      disks_(std::size_t(block_) * tracks_.size()),
+      group_(group_frames(header.tracks.size())),
+      disks_(std::size_t(group_) * tracks_.size()),
       fallback_(disks_.size()) {
     sink_.begin(header_);
 }
@@ -40,14 +48,15 @@ void FrameStream::clip(int agent, const PlacedClip& clip) {
 void FrameStream::left(int agent, std::int64_t frame) { tracks_[std::size_t(agent)].left = frame; }
 
 void FrameStream::until(std::int64_t frame) {
-    while (frame - next_ >= block_) emit(block_);
+    while (frame - next_ >= group_) emit(group_);
 }
 
 void FrameStream::finish() {
-    while (next_ < header_.frames) emit(std::min(block_, header_.frames - next_));
+    while (next_ < header_.frames) emit(std::min(group_, header_.frames - next_));
 }
 
-// Frames next_ .. next_ + count - 1: each agent's disks, checked, measured and handed to the sink.
+// Frames next_ .. next_ + count - 1: each agent's disks, checked, measured and handed to the sink a block
+// at a time.
 void FrameStream::emit(std::int64_t count) {
     const auto start = Clock::now();
     util::WorkerPool one(1);
@@ -57,13 +66,16 @@ void FrameStream::emit(std::int64_t count) {
     for (std::int64_t k = 0; k < count; ++k)
         check(next_ + k, &disks_[std::size_t(k) * n], &fallback_[std::size_t(k) * n]);
     metrics_.frames(next_, count, disks_.data(), pool);
-    FrameBlock block;
-    block.first = next_;
-    block.count = count;
-    block.agents = n;
-    block.disks = disks_.data();
     seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
-    sink_.frames(block);  // the file's time counts as the record's, not the check's
+    // The sink's blocks are the record's, whatever the group: the file's time counts as the record's.
+    for (std::int64_t k = 0; k < count; k += block_) {
+        FrameBlock block;
+        block.first = next_ + k;
+        block.count = std::min(block_, count - k);
+        block.agents = n;
+        block.disks = &disks_[std::size_t(k) * n];
+        sink_.frames(block);
+    }
     next_ += count;
 }
 

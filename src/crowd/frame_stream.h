@@ -23,6 +23,11 @@ namespace mobb::crowd {
 /// 10,000 agents). The HDF5 samples are chunked by the same blocks.
 std::int64_t block_frames(std::size_t agents);
 
+/// Frames the stream puts in place and measures at a time: whole blocks, up to 32 frames or 8 M disks
+/// (256 MB), at least one block. Each agent's track and metrics are then read once for many frames: at a
+/// million agents, where a block is one frame, reading them frame by frame was most of the stream's time.
+std::int64_t group_frames(std::size_t agents);
+
 class FrameStream {
 public:
     /// `header`: the run's header and its tracks' goals (RecordSink::begin), kept by reference.
@@ -40,7 +45,7 @@ public:
     }
     /// The agent left the run at `frame`: its disks are NaN from then on.
     void left(int agent, std::int64_t frame);
-    /// Frames before `frame` are final: whole blocks of them go out.
+    /// Frames before `frame` are final: whole groups of them go out (group_frames), block by block.
     void until(std::int64_t frame);
     /// After the run's last frame: the rest goes out.
     void finish();
@@ -71,7 +76,8 @@ private:
     std::int64_t next_ = 0;  // the first frame not out yet
     util::WorkerPool* pool_ = nullptr;
     const std::int64_t block_;
-    std::vector<std::array<double, 4>> disks_;  // a block, frame-major
+    const std::int64_t group_;                  // frames emitted at a time: whole blocks
+    std::vector<std::array<double, 4>> disks_;  // a group, frame-major
     std::vector<char> fallback_;                // per disk: a fallback clip plays then
     std::vector<FrameGrid::Disk> in_run_;       // scratch: one frame's disks in the run
     std::vector<Contact> found_;                // scratch: one frame's contacts
