@@ -22,8 +22,8 @@ struct ScaleOptions {
     int threads = 0;             ///< the parallel runs; 0: every hardware thread
     int repeats = 3;             ///< runs per size and thread count (interleaved; medians reported)
     int once_from = 100000;      ///< sizes from here run one pair of runs, not `repeats` (minutes each)
-    /// Sizes from here run only with `threads` threads, once (a million agents: 2,300 s of CPU, 20 minutes
-    /// or more on 2 threads; bench/results/scale_million.md); their one-thread columns are empty.
+    /// Sizes from here run only with `threads` threads, once (a million agents: about 1,300 s of CPU, 13
+    /// minutes on 2 threads; bench/results/scale_million.md); their one-thread columns are empty.
     int parallel_only_from = 1000000;
     /// When set, one more (untimed, 1-thread, queries logged) run per size writes up to 5,000 of its
     /// queries, evenly spaced over the run, to "<save_queries>.<agents>" (save_query_set), for callgrind.
