@@ -34,8 +34,8 @@ bool Choice::has_right_of_way(const CrowdState& s) const {
 }
 
 // The moving candidates before `end` again, in order, now past the reservations that may yield (at most
-// CrowdTuning::max_yielding owners): the first whose plan is free but for them, and whose owners all find another way to stop, is
-// taken.
+// CrowdTuning::max_yielding owners): the first whose plan is free but for them, and whose owners all find
+// another way to stop, is taken.
 bool Choice::take_right_of_way(const CrowdState& s, int end) {
     for (int k = 0; k < end; ++k) {
         const PlacedCandidate& c = placed_[std::size_t(k)];

@@ -1,10 +1,10 @@
 // Every tuning number of the crowd's rules in one place, with its unit, what it trades and what chose it
 // (after Box2D's constants.h and DetourCrowd's dtCrowdAgentParams). Each rule can be switched off - on
 // the command line `mobb crowd --no-right-of-way`, `--no-give-way`, `--no-standing-gap`,
-// `--no-look-ahead`, `--no-follow`, `--no-stand-near-walls`, `--no-leave-in-stride` - so a rule's effect is one command away, and
-// any field is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning()). The measurements behind
-// the values are in bench/results/README.md (the section named after each rule). Metrics keep their own thresholds
-// (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
+// `--no-look-ahead`, `--no-follow`, `--no-stand-near-walls`, `--no-leave-in-stride` - so a rule's effect
+// is one command away, and any field is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning()).
+// The measurements behind the values are in bench/results/README.md (the section named after each rule).
+// Metrics keep their own thresholds (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
 #pragma once
 #include <string>
 
