@@ -54,6 +54,16 @@ bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const Box
 
 }  // namespace
 
+std::array<double, 2> clip_end(const MotionGraph& g, int clip, const Placement& place) {
+    const Sample& s = g.clips[std::size_t(clip)].path.samples.back();
+    const Rigid2 m = Rigid2::of(place);
+    return {m.apply_x(s.x, s.y), m.apply_y(s.x, s.y)};
+}
+
+bool reaches_goal(const std::array<double, 2>& p, const std::array<double, 2>& goal, double radius) {
+    return std::hypot(p[0] - goal[0], p[1] - goal[1]) < radius;
+}
+
 SpaceTimeBox box_of(const Piece& p) { return p.kind == Piece::Held ? hold_box(p.hold) : p.clip.box; }
 
 ClipOutline outline_of(const Path& path) {

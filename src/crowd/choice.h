@@ -94,6 +94,13 @@ struct Piece {
 /// first frame on, for good.
 SpaceTimeBox box_of(const Piece& piece);
 
+/// Where clip `clip` of `g`, placed at `place`, leaves the agent's disk: its last sample in the world
+/// (metres). Simulation::reach_goals and leaving in stride (Choice::leaves_after) both judge arrival by it
+/// and reaches_goal, so they agree to the bit: a leaver holds no ground beyond the exit it reaches.
+std::array<double, 2> clip_end(const MotionGraph& g, int clip, const Placement& place);
+/// Whether a disk centred at `p` has reached `goal`: closer than `radius` metres (CrowdOptions::goal_radius).
+bool reaches_goal(const std::array<double, 2>& p, const std::array<double, 2>& goal, double radius);
+
 /// One agent of the simulation.
 struct Agent {
     Placement start;

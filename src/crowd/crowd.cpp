@@ -380,10 +380,7 @@ void Simulation::commit(Choice& c) {
 // the record has it), or its start.
 std::array<double, 2> Simulation::last_position(const Agent& a) const {
     if (a.clips.empty()) return {a.start.x, a.start.y};
-    const PlacedClip& c = a.clips.back();
-    const Sample& s = g_.clips[std::size_t(c.clip)].path.samples.back();
-    const Rigid2 m = Rigid2::of(c.place);
-    return {m.apply_x(s.x, s.y), m.apply_y(s.x, s.y)};
+    return clip_end(g_, a.clips.back().clip, a.clips.back().place);
 }
 
 // Agents at a choice point whose disk came within the goal radius of the goal they head for: they head
@@ -396,8 +393,7 @@ void Simulation::reach_goals(std::int64_t frame, std::vector<int>& batch) {
         Agent& a = agents_[std::size_t(agent)];
         const auto goal = a.goal();
         if (goal && !a.stops_at_goal() && frame >= a.start_frame && !a.clips.empty()) {
-            const auto [x, y] = last_position(a);
-            if (std::hypot(x - (*goal)[0], y - (*goal)[1]) < o_.goal_radius) {
+            if (reaches_goal(last_position(a), *goal, o_.goal_radius)) {
                 ++a.next_goal;
                 a.learned.clear();  // times to go to the goal reached
             }
