@@ -6,10 +6,12 @@ namespace mobb::render {
 
 namespace {
 
-// Ring edges at t0 and t1 (one ring when flat) and the vertical edges between them.
-void add_edges(const Prism& p, double ts, const glm::vec4& color, Batch& out) {
+// Ring edges at t0 and t1 (one ring when flat), a ring where the cursor cuts it (the walls where they
+// stand now: with a time window, and from the top, the rings at t0 and t1 are out of sight) and the
+// vertical edges between them.
+void add_edges(const Prism& p, double ts, double cursor, const glm::vec4& color, Batch& out) {
     const std::size_t n = p.ground.size();
-    const bool flat = p.t0 == p.t1;
+    const bool flat = p.t0 == p.t1, cut = p.t0 < cursor && cursor < p.t1;
     for (std::size_t i = 0; i < n; ++i) {
         const auto& a = p.ground[i];
         const auto& b = p.ground[(i + 1) % n];
@@ -17,6 +19,7 @@ void add_edges(const Prism& p, double ts, const glm::vec4& color, Batch& out) {
         out.line(to_gl(a[0], a[1], p.t0, ts), to_gl(b[0], b[1], p.t0, ts), color);
         if (flat) continue;
         out.line(to_gl(a[0], a[1], p.t1, ts), to_gl(b[0], b[1], p.t1, ts), color);
+        if (cut) out.line(to_gl(a[0], a[1], cursor, ts), to_gl(b[0], b[1], cursor, ts), color);
         out.line(to_gl(a[0], a[1], p.t0, ts), to_gl(a[0], a[1], p.t1, ts), color);
     }
     if (n == 2 && !flat)
@@ -45,7 +48,7 @@ void PrismLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
     for (const Prism& p : frame.prisms) {
         if (p.on_top || p.ground.size() < 2) continue;
         if (!translucent_pass)
-            add_edges(p, frame.time_scale, glm::vec4(p.color, 1.0f), out);
+            add_edges(p, frame.time_scale, frame.cursor, glm::vec4(p.color, 1.0f), out);
         else if (p.fill > 0 && p.t0 != p.t1)
             add_faces(p, frame.time_scale, out);
     }
@@ -59,7 +62,7 @@ void PrismLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
 void PrismLayer::draw_on_top(const Frame& frame, const DrawContext& ctx) {
     top_.clear();
     for (const Prism& p : frame.prisms)
-        if (p.on_top && p.ground.size() >= 2) add_edges(p, frame.time_scale, glm::vec4(p.color, 1.0f), top_);
+        if (p.on_top && p.ground.size() >= 2) add_edges(p, frame.time_scale, frame.cursor, glm::vec4(p.color, 1.0f), top_);
     if (top_.empty()) return;
     ctx.use(*ctx.color);
     glLineWidth(3.0f);
