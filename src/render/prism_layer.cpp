@@ -62,7 +62,8 @@ void PrismLayer::draw(const Frame& frame, const DrawContext& ctx, bool transluce
 void PrismLayer::draw_on_top(const Frame& frame, const DrawContext& ctx) {
     top_.clear();
     for (const Prism& p : frame.prisms)
-        if (p.on_top && p.ground.size() >= 2) add_edges(p, frame.time_scale, frame.cursor, glm::vec4(p.color, 1.0f), top_);
+        if (p.on_top && p.ground.size() >= 2)
+            add_edges(p, frame.time_scale, frame.cursor, glm::vec4(p.color, 1.0f), top_);
     if (top_.empty()) return;
     ctx.use(*ctx.color);
     glLineWidth(3.0f);
