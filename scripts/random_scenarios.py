@@ -8,6 +8,11 @@ Writes OUT_DIR/random_SSSS_KK_KIND.json (S the seed, K the index), cycling throu
   open       a walled room, agents with random starts and goals
   door       a room cut in two by a wall with one door; agents on both sides, each to a goal on the other
   corridor   a corridor (the world itself, 3.5 to 8 m wide); agents from both ends to the far end
+and, only when --kinds names them (the default cycle, and so the sets of earlier measurements, stay as they
+were):
+  fan_in     agents on an arc 9 to 13 m out, each to a random goal of a block of goals 1.5 m apart
+  fan_out    the same the other way: from the block out to the arc
+  ring       agents standing for good on a ring 3.5 to 5 m across with three gaps, crossed by walkers
 
 In the door and corridor kinds the agents of a side that will come through first get the farthest goals
 (as the shipped hallway and bottleneck). Every scenario keeps the rules of assets/scenarios/generate.py: starts and goals 1.0 m or more from walls and
@@ -192,7 +197,50 @@ def scenario_corridor(rng):
         "to the far end."
 
 
-MAKERS = {"obstacles": scenario_obstacles, "open": scenario_open, "door": scenario_door, "corridor": scenario_corridor}
+def fan(rng):
+    """A block of goals (three columns 1.5 m apart) right of the room's centre and an arc of starts round it
+    on the left, APART along the arc; the goals dealt at random."""
+    world = [-16, -16, 16, 16]
+    n, radius = rng.randint(8, 14), round(rng.uniform(9, 13), 2)
+    spread = max(math.radians(rng.uniform(60, 120)), APART * 1.1 * (n - 1) / radius)
+    block = [(3 + 1.5 * (k % 3), -3 + 1.5 * (k // 3)) for k in range(n)]
+    arc = [(round(radius * math.cos(a), 2), round(radius * math.sin(a), 2))
+           for a in (math.pi - spread / 2 + spread * k / (n - 1) for k in range(n))]
+    rng.shuffle(block)
+    return world, n, radius, list(zip(arc, block))
+
+
+def scenario_fan_in(rng):
+    world, n, radius, pairs = fan(rng)
+    return world, [], pairs, f"A walled 32 x 32 m room; {n} agents on an arc {radius:g} m out, each to a random " \
+        "goal of a block of goals 1.5 m apart (a fan-in)."
+
+
+def scenario_fan_out(rng):
+    world, n, radius, pairs = fan(rng)
+    return world, [], [(g, s) for s, g in pairs], f"A walled 32 x 32 m room; {n} agents from a block 1.5 m apart, " \
+        f"each to a random place on an arc {radius:g} m out (a fan-out)."
+
+
+def scenario_ring(rng):
+    world = [-15, -15, 15, 15]
+    m, radius = rng.randint(8, 12), rng.uniform(3.5, 5.0)
+    gaps = set(rng.sample(range(m), 3))
+    ring = [(round(radius * math.cos(2 * math.pi * k / m), 2), round(radius * math.sin(2 * math.pi * k / m), 2))
+            for k in range(m) if k not in gaps]
+    walkers = []
+    for _ in range(rng.randint(6, 10)):
+        a = rng.uniform(0, 2 * math.pi)
+        b = a + math.pi + rng.uniform(-0.5, 0.5)
+        s, g = [(round(12 * math.cos(t), 2), round(12 * math.sin(t), 2)) for t in (a, b)]
+        if all(math.dist(s, w[0]) >= APART and math.dist(g, w[1]) >= APART for w in walkers):
+            walkers.append((s, g))
+    return world, [], [(p, p) for p in ring] + walkers, f"A walled 30 x 30 m room; {len(ring)} agents standing for " \
+        f"good on a ring {2 * radius:.1f} m across with three gaps, {len(walkers)} walkers crossing the room through it."
+
+
+MAKERS = {"obstacles": scenario_obstacles, "open": scenario_open, "door": scenario_door, "corridor": scenario_corridor,
+          "fan_in": scenario_fan_in, "fan_out": scenario_fan_out, "ring": scenario_ring}
 
 
 def make(kind, seed):
@@ -218,12 +266,13 @@ def main():
     parser.add_argument("out", help="folder to write the scenarios to (made if missing)")
     parser.add_argument("-n", type=int, default=10, help="how many (default 10)")
     parser.add_argument("--seed", type=int, default=1, help="base seed (default 1)")
-    parser.add_argument("--kinds", default=",".join(KINDS), help="comma-separated, cycled (default all)")
+    parser.add_argument("--kinds", default=",".join(KINDS),
+                        help=f"comma-separated, cycled (default {','.join(KINDS)}; also {','.join(sorted(set(MAKERS) - set(KINDS)))})")
     args = parser.parse_args()
     kinds = [k for k in args.kinds.split(",") if k]
     for k in kinds:
         if k not in MAKERS:
-            parser.error(f"unknown kind {k!r} (kinds: {', '.join(KINDS)})")
+            parser.error(f"unknown kind {k!r} (kinds: {', '.join(MAKERS)})")
     os.makedirs(args.out, exist_ok=True)
     for i in range(args.n):
         kind = kinds[i % len(kinds)]
