@@ -470,8 +470,10 @@ void Choice::evaluate_random(const CrowdState& s) {
     plan_ = Plan{};
 }
 
-void Choice::evaluate(const CrowdState& s) {
-    std::vector<Candidate> candidates = std::move(point_.candidates);  // their memory, when the record left it
+// Forgets the last choice point's outcome and counters; keeps the candidates' memory, when the record
+// left it.
+void Choice::reset() {
+    std::vector<Candidate> candidates = std::move(point_.candidates);
     candidates.clear();
     point_ = ChoicePoint{};
     point_.candidates = std::move(candidates);
@@ -487,6 +489,12 @@ void Choice::evaluate(const CrowdState& s) {
     intended_.clear();
     reroutes_.clear();
     outcome_ = Outcome::Candidate;
+}
+
+// The candidates in the policy's order, each taken with the first of its escape routes that is free
+// (try_candidate); then the one given way deferred, the right of way, the agent's own escape, the fallback.
+void Choice::evaluate(const CrowdState& s) {
+    reset();
     order(s);
     point_.candidates.reserve(order_.size());
     if (!s.policy.avoids()) return evaluate_random(s);
@@ -502,48 +510,64 @@ void Choice::evaluate(const CrowdState& s) {
     deferred_ = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        if (deferred_ >= 0 && !s.escapes.moves[std::size_t(c.clip)]) return take_deferred();
-        if (right_of_way && !s.escapes.moves[std::size_t(c.clip)]) {
+        const bool moves = s.escapes.moves[std::size_t(c.clip)];
+        if (deferred_ >= 0 && !moves) return take_deferred();
+        if (right_of_way && !moves) {
             if (take_right_of_way(s, k)) return;
             right_of_way = false;
         }
-        point_.candidates.emplace_back().clip = c.clip;
-        Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        if (!free_of_others(s, k, mine, Hits::Stop)) continue;
-        if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
-            plan_ = Plan{};
-            take(k, Outcome::Candidate);
-            return;
-        }
-        const auto& routes = s.escapes.routes[std::size_t(c.clip)];
-        const std::uint32_t crowded = crowded_routes(s, k);
-        const std::vector<int>* refused_route = nullptr;
-        std::size_t refused = 0;
-        for (std::size_t r = 0; r < routes.size(); ++r) {
-            const std::vector<int>& route = routes[r];
-            // The same escape clip at the same place as one refused already.
-            if (refused > 0 && route.size() > refused &&
-                std::equal(route.begin(), route.begin() + std::ptrdiff_t(refused), refused_route->begin()))
-                continue;
-            if (crowded >> r & 1) continue;  // it would stop too close to another (standing_gap.cpp)
-            refused_route = &route;
-            if (!route_free(s, k, mine.clip, route, plan_, refused)) continue;
-            if (s.escapes.moves[std::size_t(c.clip)] && passes_waiting(s, k)) {
-                if (deferred_ < 0) deferred_ = k, deferred_plan_ = plan_;
-                break;
-            }
-            // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
-            const bool stops =
-                arriving_ && s.escapes.kind[std::size_t(c.clip)] == ClipKind::Idle && plan_.escape.empty();
-            take(k, stops ? Outcome::Arrived : Outcome::Candidate);
-            return;
-        }
-        point_.candidates.back().crowded = crowded != 0 && deferred_ != k;
+        if (try_candidate(s, k, c)) return;
     }
     if (deferred_ >= 0) return take_deferred();
     if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
+}
+
+// Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride, or one of
+// its escape routes is free too (try_routes). Returns whether it was taken.
+bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c) {
+    point_.candidates.emplace_back().clip = c.clip;
+    Piece mine;
+    mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+    if (!free_of_others(s, k, mine, Hits::Stop)) return false;
+    if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
+        plan_ = Plan{};
+        take(k, Outcome::Candidate);
+        return true;
+    }
+    const std::uint32_t crowded = crowded_routes(s, k);
+    if (try_routes(s, k, mine.clip, crowded)) return true;
+    point_.candidates.back().crowded = crowded != 0 && deferred_ != k;
+    return false;
+}
+
+// Candidate k's escape routes in turn, but those that would stop too close to another (`crowded`, a bit
+// per route: standing_gap.cpp): the first whose plan is free of the others is taken - or deferred, when the
+// clip passes an agent that waits (give_way.cpp). Returns whether it was taken.
+bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded) {
+    const auto& routes = s.escapes.routes[std::size_t(clip.clip)];
+    const std::vector<int>* refused_route = nullptr;
+    std::size_t refused = 0;
+    for (std::size_t r = 0; r < routes.size(); ++r) {
+        const std::vector<int>& route = routes[r];
+        // The same escape clip at the same place as one refused already.
+        if (refused > 0 && route.size() > refused &&
+            std::equal(route.begin(), route.begin() + std::ptrdiff_t(refused), refused_route->begin()))
+            continue;
+        if (crowded >> r & 1) continue;
+        refused_route = &route;
+        if (!route_free(s, k, clip, route, plan_, refused)) continue;
+        if (s.escapes.moves[std::size_t(clip.clip)] && passes_waiting(s, k)) {
+            if (deferred_ < 0) deferred_ = k, deferred_plan_ = plan_;
+            return false;
+        }
+        // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
+        const bool stops =
+            arriving_ && s.escapes.kind[std::size_t(clip.clip)] == ClipKind::Idle && plan_.escape.empty();
+        take(k, stops ? Outcome::Arrived : Outcome::Candidate);
+        return true;
+    }
+    return false;
 }
 
 // A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live

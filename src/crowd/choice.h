@@ -235,6 +235,9 @@ private:
     bool reroute_yielding(const CrowdState& s, const BoxedClip& c);
     bool reroute(const CrowdState& s, int owner);
     bool free_for_reroute(const CrowdState& s, const Piece& piece);
+    void reset();
+    bool try_candidate(const CrowdState& s, int k, const PlacedCandidate& c);
+    bool try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded);
     void evaluate_random(const CrowdState& s);
     bool take_escape(const CrowdState& s);
     bool hold_on(const CrowdState& s);
