@@ -491,8 +491,9 @@ void Choice::reset() {
     outcome_ = Outcome::Candidate;
 }
 
-// The candidates in the policy's order, each taken with the first of its escape routes that is free
-// (try_candidate); then the one given way deferred, the right of way, the agent's own escape, the fallback.
+// The candidates in the policy's order, the first taken whose clip and one of whose escape routes are free
+// (try_candidate). Failing that: the walk deferred to give way (give_way.cpp), the right of way
+// (right_of_way.cpp), the agent's own escape (follow_escape.cpp), and last the fallback.
 void Choice::evaluate(const CrowdState& s) {
     reset();
     order(s);
