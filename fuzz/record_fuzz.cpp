@@ -1,4 +1,4 @@
-// libFuzzer entry point for the HDF5 crowd-record readers (ours: src/crowd/record_h5_read.cpp, which reads
+// libFuzzer entry point for the HDF5 crowd-record readers (ours: src/crowd/record/record_h5_read.cpp, which reads
 // a file whole, record_h5_window.cpp, which reads it in parts - the viewer's and Python's way - h5.cpp and
 // the JSON reader's checks; libhdf5 itself is not instrumented): any file must read or throw one line
 // naming it, never crash. HDF5 reads files, so each input goes through one.
@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "mobb/crowd/record_reader.h"
-#include "record_json.h"
+#include "mobb/crowd/record/record_reader.h"
+#include "record/record_json.h"
 
 namespace {
 

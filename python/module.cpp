@@ -1,7 +1,7 @@
 // The Python module `mobb`: clips, trees, queries and crowds of the C++ library (pybind11).
 // Errors become Python exceptions carrying the message `mobb` prints after "error: ".
 #include "bindings.h"
-#include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/graph/motion_graph.h"
 #include "mobb/io/load.h"
 
 PYBIND11_MODULE(mobb, m) {

@@ -7,7 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "mobb/crowd/agent_pose.h"
+#include "mobb/crowd/motion/agent_pose.h"
 
 namespace mobb::python {
 

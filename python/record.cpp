@@ -11,7 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "mobb/crowd/record_reader.h"
+#include "mobb/crowd/record/record_reader.h"
 
 namespace mobb::python {
 

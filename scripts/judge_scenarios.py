@@ -6,7 +6,7 @@
 For every scenario file (*.json of each folder, sorted; default assets/scenarios) and seed it runs
     mobb crowd --scenario F --seed K --quiet --threads 1 --record R.json
 two at a time (from the repository root, so the default graph is found; MOBB=PATH is set in its
-environment), then reads R.json (layout: include/mobb/crowd/record.h) and judges:
+environment), then reads R.json (layout: include/mobb/crowd/record/record.h) and judges:
 
   pass     no two agents' disks overlap at any frame (|p_a - p_b| < r_a + r_b); no disk on an obstacle (the
            centre inside the polygon, or closer to its boundary than r) or, in a walled world, past the world

@@ -6,8 +6,8 @@
 
 #include "cli.h"
 #include "crowd_quality.h"
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/scenario.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/scenario/scenario.h"
 #include "report.h"
 
 namespace mobb::app {

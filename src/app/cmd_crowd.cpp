@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "cli.h"
-#include "mobb/crowd/crowd.h"
-#include "mobb/crowd/metrics.h"
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/motion_metrics.h"
-#include "mobb/crowd/record_file.h"
-#include "mobb/crowd/scenario.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/metrics/metrics.h"
+#include "mobb/crowd/motion/motion_metrics.h"
+#include "mobb/crowd/record/record_file.h"
+#include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "mobb/util/worker_pool.h"
 
 namespace mobb::app {

@@ -6,8 +6,8 @@
 #include <map>
 
 #include "cli.h"
-#include "mobb/crowd/crowd_export.h"
-#include "mobb/crowd/motion_metrics.h"
+#include "mobb/crowd/motion/crowd_export.h"
+#include "mobb/crowd/motion/motion_metrics.h"
 
 namespace mobb::app {
 

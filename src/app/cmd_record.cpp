@@ -1,8 +1,8 @@
-// mobb record convert: crowd records between JSON and HDF5 (include/mobb/crowd/record_file.h).
+// mobb record convert: crowd records between JSON and HDF5 (include/mobb/crowd/record/record_file.h).
 #include <iostream>
 
 #include "cli.h"
-#include "mobb/crowd/record_file.h"
+#include "mobb/crowd/record/record_file.h"
 
 namespace mobb::app {
 

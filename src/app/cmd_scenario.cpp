@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.h"
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/scenario.h"
-#include "mobb/crowd/steersuite.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/scenario/steersuite.h"
 
 namespace mobb::app {
 

@@ -9,8 +9,8 @@
 
 #include "bar_chart.h"
 #include "machine.h"
-#include "mobb/crowd/crowd.h"
-#include "mobb/crowd/scenario.h"
+#include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "mobb/util/json_text.h"
 #include "mobb/util/worker_pool.h"
 

@@ -1,5 +1,5 @@
 // The avoiding crowd's quality workload (`mobb bench crowd`): wandering crowds at the paper's density and
-// every shipped scenario, several seeds each, with their metrics (mobb/crowd/metrics.h) and the crowd
+// every shipped scenario, several seeds each, with their metrics (mobb/crowd/metrics/metrics.h) and the crowd
 // issue's targets: fallbacks, contacts, speed, idle time, scenarios passed, collision-detection cost.
 #pragma once
 #include <cstdint>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "mobb/crowd/metrics.h"
-#include "mobb/crowd/motion_metrics.h"
+#include "mobb/crowd/metrics/metrics.h"
+#include "mobb/crowd/motion/motion_metrics.h"
 #include "targets.h"
 
 namespace mobb::bench {

@@ -3,8 +3,8 @@
 #pragma once
 #include <cstdint>
 
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/record.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/record/record.h"
 
 namespace mobb::bench {
 

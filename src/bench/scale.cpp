@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "mobb/util/json_text.h"
 #include "mobb/util/median.h"
 #include "mobb/util/worker_pool.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mobb/crowd/record.h"
+#include "mobb/crowd/record/record.h"
 #include "targets.h"
 
 namespace mobb::bench {

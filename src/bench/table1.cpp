@@ -5,7 +5,7 @@
 
 #include "frame_stepping.h"
 #include "machine.h"
-#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "mobb/util/json_text.h"
 #include "tables.h"
 #include "workloads.h"

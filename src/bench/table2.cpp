@@ -2,7 +2,7 @@
 #include <stdexcept>
 
 #include "machine.h"
-#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "mobb/util/json_text.h"
 #include "tables.h"
 #include "workloads.h"

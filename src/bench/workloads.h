@@ -9,8 +9,8 @@
 
 #include "mobb/core/path.h"
 #include "mobb/core/tree.h"
-#include "mobb/crowd/crowd.h"
-#include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "query_set.h"
 
 namespace mobb::bench {

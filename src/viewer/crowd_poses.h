@@ -1,14 +1,14 @@
 // Skeletons of a recorded crowd at the time cursor: the agents' poses come from the library's one home
-// for them (mobb/crowd/agent_pose.h: sources, placement, blending at clip starts), as the export's and Python's.
+// for them (mobb/crowd/motion/agent_pose.h: sources, placement, blending at clip starts), as the export's and Python's.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "frame.h"
-#include "mobb/crowd/agent_pose.h"
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/record.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/motion/agent_pose.h"
+#include "mobb/crowd/record/record.h"
 
 namespace mobb::viewer {
 

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "crowd_poses.h"
-#include "mobb/crowd/motion_graph.h"
-#include "mobb/crowd/record.h"
-#include "mobb/crowd/record_reader.h"
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/record/record.h"
+#include "mobb/crowd/record/record_reader.h"
 #include "state.h"
 
 namespace mobb::viewer {

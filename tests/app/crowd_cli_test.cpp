@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files.h"
-#include "mobb/crowd/record.h"
+#include "mobb/crowd/record/record.h"
 #include "mobb/io/load.h"
 #include "query_set.h"
 #include "run.h"

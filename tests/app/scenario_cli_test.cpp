@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "files.h"
-#include "mobb/crowd/scenario.h"
+#include "mobb/crowd/scenario/scenario.h"
 #include "run.h"
 
 namespace mobb {

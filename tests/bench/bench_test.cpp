@@ -11,7 +11,7 @@
 #include "data.h"
 #include "files.h"
 #include "method.h"
-#include "mobb/crowd/crowd.h"
+#include "mobb/crowd/sim/crowd.h"
 #include "peak_memory.h"
 #include "report.h"
 #include "workloads.h"

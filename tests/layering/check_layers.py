@@ -9,7 +9,11 @@ below): the folder of a source file (src/LAYER, include/mobb/LAYER, bench/, pyth
 include "mobb/LAYER/x.h" names its layer; a quoted include "x.h" is looked up in the including file's
 folder, then in every layer's source folder (a name held by two layers is itself an error: the
 layer could not be told). Angle-bracket includes are checked against the headers a layer must not use
-(core knows no files and no OpenGL; only render, viewer and app touch OpenGL or ImGui)."""
+(core knows no files and no OpenGL; only render, viewer and app touch OpenGL or ImGui).
+
+Inside crowd, the folders (src/crowd/F, include/mobb/crowd/F) are in one order, CROWD_ORDER: a file uses
+only its own folder and those before it. Its quoted includes name the folder: "mobb/crowd/F/x.h" (public)
+or "F/x.h" (private, from src/crowd). The crowd's top holds only the files CROWD_TOP names."""
 import os
 import re
 import sys
@@ -36,6 +40,12 @@ FORBIDDEN_SYSTEM = {
     "python": GRAPHICS,
     "bench": ("glad/", "GL/", "GLFW/", "imgui", "tiny_gltf"),
 }
+# The crowd's folders, each using only those before it: the numbers, the ground, the motion graph, records,
+# metrics, poses and export, policies, a run's options, broad and narrow phase, the choice point, its rules,
+# the simulation, scenarios.
+CROWD_ORDER = ["tuning", "world", "graph", "record", "metrics", "motion", "policy", "options", "collision",
+               "choice", "rules", "sim", "scenario"]
+CROWD_TOP = {"tuning.h": "tuning", "tuning.cpp": "tuning", "options.h": "options", "CMakeLists.txt": None}
 SOURCE = (".h", ".hpp", ".cpp", ".cc")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
 
@@ -85,6 +95,36 @@ def quoted_layer(root, rel, name, flat):
     return (next(iter(layers)), None) if layers else (None, None)
 
 
+def crowd_folder(rel):
+    """The crowd folder of a repository path; None outside crowd; "?" for a file the crowd's top does not name."""
+    for top in ("src/crowd/", "include/mobb/crowd/"):
+        if rel.startswith(top):
+            rest = rel[len(top):]
+            return rest.split("/")[0] if "/" in rest else CROWD_TOP.get(rest, "?")
+    return None
+
+
+def crowd_problem(root, rel, name):
+    """Why a quoted include of a crowd file breaks CROWD_ORDER, or None."""
+    mine = crowd_folder(rel)
+    if mine is None:
+        return None
+    if name.startswith("mobb/crowd/"):
+        target = crowd_folder("include/" + name)
+    elif os.path.exists(os.path.join(root, "src/crowd", name)):
+        target = crowd_folder("src/crowd/" + name)
+    elif os.path.exists(os.path.join(root, os.path.dirname(rel), name)):
+        target = crowd_folder(os.path.relpath(os.path.join(os.path.dirname(rel), name)).replace(os.sep, "/"))
+    else:
+        return None
+    for folder in (mine, target):
+        if folder not in CROWD_ORDER:
+            return "crowd/%s is not in CROWD_ORDER" % folder
+    if CROWD_ORDER.index(target) > CROWD_ORDER.index(mine):
+        return "crowd/%s includes crowd/%s, a folder after it" % (mine, target)
+    return None
+
+
 def check(root):
     flat = header_layers(root)
     problems = []
@@ -92,6 +132,8 @@ def check(root):
         layer = layer_of(rel)
         if not layer:
             continue
+        if crowd_folder(rel) == "?":
+            problems.append(rel + ": at the crowd's top: move it into a folder, or name it in CROWD_TOP")
         with open(os.path.join(root, rel), encoding="utf-8", errors="replace") as f:
             for n, line in enumerate(f, 1):
                 m = INCLUDE.match(line)
@@ -105,6 +147,9 @@ def check(root):
                             problems.append(where + ": not in this layer")
                     continue
                 target, why = quoted_layer(root, rel, name, flat)
+                crowd_why = crowd_problem(root, rel, name)
+                if crowd_why:
+                    problems.append(where + ": " + crowd_why)
                 if why:
                     problems.append(where + ": " + why)
                 elif target and target != layer and target not in ALLOWED[layer]:
@@ -121,6 +166,12 @@ def self_test():
         "src/viewer/v.cpp": '#include "cli.h"\n',
         "src/app/cli.h": "#pragma once\n",
         "src/app/main.cpp": '#include "cli.h"\n#include "report.h"\n',
+        "src/crowd/record/r.cpp": '#include "record/r.h"\n#include "choice/choice.h"\n',
+        "src/crowd/record/r.h": "#pragma once\n",
+        "src/crowd/choice/choice.h": '#pragma once\n#include "record/r.h"\n#include "mobb/crowd/sim/crowd.h"\n',
+        "include/mobb/crowd/sim/crowd.h": '#pragma once\n#include "mobb/crowd/options.h"\n',
+        "include/mobb/crowd/options.h": "#pragma once\n",
+        "src/crowd/extra.cpp": "",
     }
     with tempfile.TemporaryDirectory() as root:
         for rel, text in files.items():
@@ -128,7 +179,8 @@ def self_test():
             with open(os.path.join(root, rel), "w") as f:
                 f.write(text)
         found = check(root)
-    expected = ["src/core/a.cpp:2", "src/crowd/c.cpp:1", "src/viewer/v.cpp:1"]
+    expected = ["src/core/a.cpp:2", "src/crowd/c.cpp:1", "src/crowd/c.cpp: at", "src/crowd/extra.cpp: at", "src/viewer/v.cpp:1", "src/crowd/record/r.cpp:2",
+                "src/crowd/choice/choice.h:3"]
     ok = len(found) == len(expected) and all(any(p.startswith(e) for p in found) for e in expected)
     print("\n".join(found))
     print("self-test " + ("passed" if ok else "FAILED: expected violations at " + ", ".join(expected)))

@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "mobb/crowd/motion_graph.h"
+#include "mobb/crowd/graph/motion_graph.h"
 
 namespace mobb::test {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <cmath>
 
-#include "mobb/crowd/record_reader.h"
+#include "mobb/crowd/record/record_reader.h"
 
 namespace mobb::test {
 

@@ -6,9 +6,9 @@
 #include <utility>
 
 #include "committed_graph.h"
-#include "mobb/crowd/crowd.h"
-#include "mobb/crowd/metrics.h"
-#include "mobb/crowd/scenario.h"
+#include "mobb/crowd/metrics/metrics.h"
+#include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/sim/crowd.h"
 
 namespace mobb::test {
 

@@ -17,7 +17,7 @@ struct CrowdTuning {
     /// see waiting.
     double moving_speed = 0.25;
 
-    // The escape (src/crowd/escape.cpp): the clips that stop an agent, then the ground it holds. Always
+    // The escape (src/crowd/choice/escape.cpp): the clips that stop an agent, then the ground it holds. Always
     // on - it is what keeps the crowd collision-free - and bounded here.
     int escape_steps = 3;    ///< clips at most from a clip to a stop (longer chains: no route)
     int escape_routes = 16;  ///< routes kept per clip, the shortest first (<= EscapeTable::kMaxRoutes)
@@ -33,13 +33,13 @@ struct CrowdTuning {
     /// "Room to stop at walls").
     bool stand_near_walls = true;
 
-    /// Leaving in stride (src/crowd/leave_in_stride.cpp): a clip that ends within the goal radius of an
+    /// Leaving in stride (src/crowd/rules/leave_in_stride.cpp): a clip that ends within the goal radius of an
     /// agent's exit (its last goal, AtGoal::Leave) is its whole plan - no stop reserved beyond the exit,
     /// where it leaves the run. Off, the exit holds each leaver's stop until it has left, and those behind
     /// queue for it (bench/results/README.md "leaving in stride").
     bool leave_in_stride = true;
 
-    // The right of way (src/crowd/right_of_way.cpp; Okumura et al.'s PIBT, 2019): an agent that has not
+    // The right of way (src/crowd/rules/right_of_way.cpp; Okumura et al.'s PIBT, 2019): an agent that has not
     // moved for `right_of_way_after` seconds may take a walk whose plan meets only the reservations of
     // at most `max_yielding` agents walking a clip, each of which then stops another way. Trades a
     // waiting agent's time against the others' detours; 2 s and 2 agents: bench/results/README.md
@@ -48,14 +48,14 @@ struct CrowdTuning {
     double right_of_way_after = 2.0;  ///< seconds without a moving clip
     int max_yielding = 2;             ///< agents whose reservations one taking may move
 
-    // Giving way (src/crowd/give_way.cpp): a free walk passing within `give_way_reach` metres of an agent
+    // Giving way (src/crowd/rules/give_way.cpp): a free walk passing within `give_way_reach` metres of an agent
     // that has not moved for `give_way_after` seconds is taken only when no later free walk keeps clear
     // of such agents. Reorders, never refuses: trades a walker's detour for the waiting agent's way out.
     bool give_way = true;
     double give_way_after = 2.0;  ///< seconds
     double give_way_reach = 2.5;  ///< metres
 
-    // The standing gap (src/crowd/standing_gap.cpp): a policy that keeps it (wandering, not goal agents,
+    // The standing gap (src/crowd/rules/standing_gap.cpp): a policy that keeps it (wandering, not goal agents,
     // which converge on purpose) takes no escape route whose held ground comes within `standing_gap`
     // metres, beyond the disks, of another's. Trades where an agent may stop for room to pass between
     // those who stopped: the longest idle stretches halved (bench/results/README.md "room between
@@ -63,7 +63,7 @@ struct CrowdTuning {
     bool standing_gap = true;
     double standing_gap_width = 0.45;  ///< metres
 
-    // The look-ahead (src/crowd/look_ahead.h; Lau and Kuffner 2005, Silver 2005): a goal agent searches
+    // The look-ahead (src/crowd/choice/look_ahead.h; Lau and Kuffner 2005, Silver 2005): a goal agent searches
     // clip sequences `goal_horizon` clips deep, at most `look_ahead_budget` clips tested per choice
     // point; a first clip whose every sequence met a reservation ranks `look_ahead_dead_end` seconds
     // behind. 96 clips and 2 s: bench/results/README.md "goal crowds that look ahead" (192 and a deeper
@@ -78,7 +78,7 @@ struct CrowdTuning {
     /// (bench/results/README.md "Goal crowds that look ahead").
     bool look_ahead_learns = true;
 
-    // Following (src/crowd/follow.cpp; Silver 2005: reservations trusted within a window): a goal agent
+    // Following (src/crowd/rules/follow.cpp; Silver 2005: reservations trusted within a window): a goal agent
     // follows the agents ahead of it - within `follow_angle` of its way (down its navigation field:
     // NavField::downhill) - that face its way, unless they end their clip within `follow_goal_reach` of
     // the goal they stop at: beyond its first clip its look-ahead plans past their reservations (escape
@@ -91,7 +91,7 @@ struct CrowdTuning {
     double follow_angle = 0.8;       ///< radians (46 degrees) either side of the agent's way
     double follow_goal_reach = 3.0;  ///< metres: 3 m kept l_walls_60 from hemming an agent in (1 m did not)
 
-    // The goal policy's estimate of the time to go (src/crowd/policy_goal.cpp): path length at
+    // The goal policy's estimate of the time to go (src/crowd/policy/policy_goal.cpp): path length at
     // `goal_walking` m/s, plus the turn to face down the path at `goal_turning` rad/s, plus
     // `goal_crowding` seconds per metre an end comes nearer than `goal_personal` to a neighbour. The
     // speeds are the committed graph's walking and turning clips', rounded. Crowding trades following

@@ -1,0 +1,138 @@
+// The pose of agent K at time t: the one home for it, used by the viewer, `mobb export-crowd` and Python.
+//
+// An agent at global frame k plays one graph clip; its pose is the clip's source sample at that frame,
+// moved into the world by the same rigid 2D motion that placed the clip's root path (source root at sample
+// `first` to the origin, heading to +x, then the clip's placement). At a clip start the pose eases from
+// where the previous clip left it (blending, below). Units: metres, seconds, radians.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/record/record.h"
+#include "mobb/crowd/record/record_file.h"
+
+namespace mobb::crowd {
+
+/// The graph file a record names (Record::graph), or the committed graph (default_graph_file) when the
+/// record names it relative to the repository and the working directory is elsewhere.
+std::string record_graph_file(const Record& record);
+
+/// One graph source as the poses need it: the animation, per sample the root and heading the graph used
+/// to localise clips (pose_track), and the lowest joint height over the take (the skeleton's feet).
+struct PoseSource {
+    std::shared_ptr<const io::Clip> clip;  ///< null when it could not be loaded (see error)
+    std::vector<double> root_x, root_y, heading;
+    double floor = 0.0;
+    std::string error;
+};
+
+/// Rigid motion from source ground coordinates to the world for graph clip `clip` placed at `place`
+/// (t0 kept): world = place o (rotate by -heading[first], root[first] to the origin).
+Placement source_to_world(const PoseSource& source, const GraphClip& clip, const Placement& place);
+
+/// The clip agent `agent` plays at global frame k (record frame k covers [k dt, (k + 1) dt)).
+struct AgentClipAt {
+    const PlacedClip* placed = nullptr;
+    int index = 0;   ///< in the agent's track.clips
+    int sample = 0;  ///< sample index in the source (graph fps)
+};
+/// The clip agent `agent` plays at global frame `k` of the record. False outside the agent's clips (or for
+/// an agent or clip id that does not exist).
+bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_t k, AgentClipAt& out);
+
+/// Every source of one graph, each loaded on first use and kept (a failure too, with its reason, so a
+/// missing file is not retried every frame). Not thread-safe.
+class PoseSources {
+public:
+    explicit PoseSources(std::shared_ptr<const MotionGraph> graph) : graph_(std::move(graph)) {}
+    const PoseSource& get(int source);
+    /// The first load failure met so far ("" when none).
+    const std::string& error() const { return error_; }
+    int loaded() const;
+    const MotionGraph& graph() const { return *graph_; }
+
+private:
+    std::shared_ptr<const MotionGraph> graph_;
+    std::vector<std::unique_ptr<PoseSource>> sources_;
+    std::string error_;
+};
+
+/// The joints every pose of a crowd carries, the same for every agent whatever source it plays: joint 0
+/// is the mocap root (each source's own root, the root of its path, named as the first source's), then in the first source's order the joints whose names
+/// every source has (All: End Sites included), or only the graph's compared joints (Major: pelvis, legs,
+/// spine, head, arms; pose_distance.h). A joint's parent is its nearest kept ancestor.
+enum class RigJoints { All, Major };
+struct Rig {
+    std::vector<std::string> names;
+    std::vector<int> parents;                     ///< -1 for joint 0
+    std::vector<std::vector<int>> source_joints;  ///< [source][joint]: its index in that source's skeleton
+    int size() const { return int(names.size()); }
+};
+/// Loads every source of the graph. Throws io::LoadError / GraphError for a source that cannot be loaded.
+Rig crowd_rig(PoseSources& sources, RigJoints joints);
+
+/// Blending at clip starts: inertialization in its offset form (D. Bollo, "Inertialization:
+/// High-Performance Animation Transitions in Gears of War", GDC 2018). At the first frame of a clip the
+/// difference d_j between the pose the previous clip would show then (its exit sample) and the new clip's
+/// first pose, both relative to the root, is added to the new clip's pose and decays to zero over
+/// `window` seconds: offset(s) = d_j (1 - 3 s^2 + 2 s^3), s = time since the clip start / window (Bollo
+/// fits a quintic to the offset's velocity; this cubic starts at the offset and ends with zero slope).
+/// The root is never blended, so the ground path is exactly the clip's. Bound: a joint whose ground
+/// distance to the root exceeds e(k) = min over the next `look_ahead` seconds of r(k') + pull_speed (t_k' -
+/// t_k) (at most the record's r(t_k)) is pulled radially (height kept) onto that circle, so the disk r(t)
+/// the collision answers used still holds every joint of the blended pose, and where a clip starts from a
+/// smaller disk than the pose it eases out of, joints are drawn in over the frames before (at most
+/// pull_speed) rather than at once.
+struct PoseBlend {
+    double window = 0.25;     ///< seconds; 0 = no blending (the raw clips, jumping at clip starts)
+    double pull_speed = 1.5;  ///< metres per second
+    double look_ahead = 0.5;  ///< seconds
+};
+
+/// Poses of a record's agents. Throws like crowd_rig on construction; GraphError when the record's dt is
+/// not the graph's (frames would not be samples). Not thread-safe (sources load on first use).
+class CrowdPoser {
+public:
+    CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints = RigJoints::All,
+               PoseBlend blend = {});
+    const Rig& rig() const { return rig_; }
+    const Record& record() const { return record_; }
+    /// The agents' disks from `window` (frames there; kept by the caller, null: the record's tracks) for
+    /// a record read in parts (record_reader.h), whose tracks hold none: the bound below uses the disks
+    /// of the frames ahead, so a pose near the window's end is bound by the frames the window has.
+    void use_samples(const SampleWindow* window) { window_ = window; }
+    PoseSources& sources() const { return *sources_; }
+    const PoseBlend& blend() const { return blend_; }
+    /// Joint positions of agent `agent` at global frame k: world ground coordinates (x, y, h), metres, h
+    /// above the source's lowest joint (so feet stand on h = 0); out[0] is the root's ground point: the
+    /// clip's path point (x, y) on the record's track, h = 0 (sources root their skeletons at the hips or
+    /// at the floor, so the root's own height is not kept).
+    /// An agent past the end of its clips (it left the run) keeps its last pose. False for an agent or frame
+    /// outside the record.
+    bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out);
+    /// Both at once (one posing for the two): `out` as pose() gives it, `raw` the same frame unblended
+    /// (as a poser with window 0 gives it).
+    bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw);
+    /// At time t (seconds, 0 <= t <= frames * dt): linear between the poses of the frames around t, so a
+    /// frame's own time gives that frame's pose.
+    bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
+
+private:
+    /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor).
+    bool raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
+    void keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const;
+
+    const Record& record_;
+    const SampleWindow* window_ = nullptr;
+    std::shared_ptr<PoseSources> sources_;
+    Rig rig_;
+    PoseBlend blend_;
+    std::vector<glm::dvec3> a_, b_, c_;
+};
+
+}  // namespace mobb::crowd

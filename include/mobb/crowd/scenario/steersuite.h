@@ -1,0 +1,79 @@
+// SteerSuite test cases as mobb scenarios (`mobb scenario import FILE.xml --out F.json`).
+//
+// SteerSuite's test cases (repository SteerSuite/Release, testcases/*.xml, schema TestCaseSchema.xsd) are
+// XML: <SteerBenchTestCase> holds a <header> (version, name, worldBounds), then <obstacle> boxes,
+// <obstacleRegion>s of random square obstacles, <agent>s with their <initialConditions> and a
+// <goalSequence>, and <agentRegion>s of agents at random positions. SteerSuite is Y-up: its ground
+// (x, z) is mobb's (x, y), and heights (y) are dropped. Units are metres and seconds in both; a direction
+// (x, z) becomes the heading atan2(z, x) (radians in AgentSpec, degrees in the JSON), none faces the goal.
+// Coordinates are kept to a micrometre; random ones (agentRegion starts, <random> positions, directions
+// and goals, obstacleRegion squares) come from ImportOptions::seed, to a centimetre and a tenth of a degree.
+//
+// What a mobb agent cannot do is not refused but reported, one line per finding (ImportedScenario::notes),
+// and left out of the scenario where it would stop `mobb crowd` from running it: an agent starting
+// within AgentRoom::wall_clearance of a wall or an obstacle, or within 2 x AgentRoom::hold_radius of an
+// agent kept before it. Reported and kept: gaps narrower than AgentRoom::walk_width, speeds and radii
+// (mobb's agents walk at their clips' speeds with their clips' disks), goal types mobb has not (the agent
+// is left out when no seekStaticTarget remains), and - when agents stay at their goals - goals two agents
+// share. A goalSequence's static targets become the agent's "goals", reached in turn; at the last the
+// agents leave the run, as SteerSuite's do (ImportOptions::at_goal).
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/scenario/scenario.h"
+
+namespace mobb::crowd {
+
+/// A test case that cannot be read: "FILE:LINE: element: message" (one line; "FILE: message" when the
+/// file cannot be opened). Not XML, a required element missing, a field that is not a number.
+class SteerSuiteError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The room mobb's agents need, from a motion graph (metres, metres per second). The defaults are those
+/// of the committed graph (assets/graphs/cmu_locomotion.json) rounded up to the centimetre (the speed
+/// rounded): 0.9786, 0.4825, 0.9545 m, 1.3805 m/s.
+struct AgentRoom {
+    /// A start this far from every wall and obstacle: room to turn round on the spot
+    /// (EscapeTable::turn_clearance; `mobb crowd` refuses a scenario whose agent starts closer).
+    double wall_clearance = 0.98;
+    /// The ground an agent stands on when it stops (EscapeTable::hold_radius): two starts are at least
+    /// twice this apart.
+    double hold_radius = 0.49;
+    /// The narrowest gap a walking clip passes: twice its widest disk, for the walking clip (ClipKind::Walk)
+    /// whose widest disk is the smallest. No agent walks through a narrower one.
+    double walk_width = 0.96;
+    /// Mean speed of the walking clips, start to exit (m/s): the time limit's estimate.
+    double walk_speed = 1.38;
+
+    /// The values of `graph`. Throws std::invalid_argument when it has no idle clip.
+    static AgentRoom of(const MotionGraph& graph);
+};
+
+struct ImportOptions {
+    std::uint64_t seed = 1;  ///< random positions, directions and obstacles (agentRegion, obstacleRegion, <random>)
+    /// Seconds; 0: estimated, twice the longest straight walk from a start to its goal at
+    /// AgentRoom::walk_speed plus 20 s (through its goals in turn), in whole tens, and no more than the agent's timeDurations.
+    double time_limit = 0;
+    /// What the agents do at their last goal: leave, as SteerSuite disables an agent that reached its
+    /// goal (the default), or stay there.
+    AtGoal at_goal = AtGoal::Leave;
+};
+
+struct ImportedScenario {
+    Scenario scenario;
+    /// One line each, no newline: what could not be mapped and what was done instead.
+    std::vector<std::string> notes;
+};
+
+/// Reads a SteerSuite test case. Throws SteerSuiteError on bad input. The scenario may be left with no agent
+/// (the notes say why; load_scenario would refuse it). The same file, room and options give the same
+/// scenario, ready for scenario_json().
+ImportedScenario import_steersuite(const std::string& file, const AgentRoom& room, const ImportOptions& options = {});
+
+}  // namespace mobb::crowd

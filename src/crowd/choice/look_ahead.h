@@ -1,0 +1,114 @@
+// Look-ahead at a choice point: a bounded best-first search over clip sequences of the motion graph,
+// each clip placed where the one before leaves the agent and tested, as it is reached, against what the
+// other agents reserved (the same exact queries as the candidates). A sequence is scored by its duration
+// plus the policy's estimate of the time still to go from where it ends (Policy::to_go); the first clips
+// are then tried in the order of the best sequence each leads to. The agent commits the first clip of
+// its choice (with its escape, checked as always) and re-plans at its next choice point.
+//
+// Sources: Lau and Kuffner, "Behavior Planning for Character Animation" (SCA 2005): best-first search of
+// a behaviour graph to a horizon, re-planned as the character moves; Silver, "Cooperative Pathfinding"
+// (AIIDE 2005): a window searched against the others' space-time reservations; Sung, Kovar and Gleicher
+// (SCA 2005): motion-graph clips chained towards a goal with MOBB-style tests.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+#include "mobb/core/path.h"
+#include "mobb/crowd/graph/motion_graph.h"
+
+namespace mobb::crowd {
+
+/// A clip of a searched sequence: graph clip `clip` placed at `place` (its t0 on the global frame grid)
+/// from global frame `frame` on. The tester decides whether it is free.
+struct SearchStep {
+    int clip = 0;
+    Placement place;
+    std::int64_t frame = 0;
+};
+
+struct LookAheadLimits {
+    int horizon = 3;      ///< clips in a sequence
+    int budget = 96;      ///< steps tested per choice point (each: the broad phase and its exact queries)
+    double dead_end = 0;  ///< seconds added to a first clip without a free sequence to the horizon
+    double weight = 2;    ///< of the time to go in the order of search (weighted A*; 1: plain best-first)
+};
+
+/// One agent's learned times to go (LookAhead::learned), kept on a grid of kCell metres: each cell the
+/// largest learned, so the search's estimate of a place only rises where the agent found it worse than
+/// it looked - a local minimum it waits in (a wall of standing agents between it and its goal) fills
+/// up until another way scores better.
+class LearnedCost {
+public:
+    static constexpr double kCell = 0.5;  // metres: about an agent's width
+    /// Seconds learned at (x, y); 0 where nothing was.
+    double at(double x, double y) const;
+    void raise(double x, double y, double seconds);
+    /// Forgets everything: what was learned holds for one goal only.
+    void clear() { value_.clear(); }
+
+private:
+    static std::int64_t key(double x, double y);
+    std::unordered_map<std::int64_t, double> value_;
+};
+
+class LookAhead {
+public:
+    using Free = std::function<bool(const SearchStep&)>;
+    /// Estimated seconds from a placement to what the agent seeks.
+    using ToGo = std::function<double(const Placement&)>;
+
+    /// Searches from `first` (candidate clips, all starting at `base` at frame `frame`) and returns one
+    /// score per candidate (seconds, lower is better): its sequence's duration plus to_go at its end - the
+    /// first found to the horizon, all of its clips free; without one, dead_end more than its best open
+    /// estimate (the budget ran out) or than its best free clip (every way on was refused); +infinity
+    /// for a first clip refused itself.
+    const std::vector<double>& search(const MotionGraph& graph, const std::vector<int>& first, const Placement& base,
+                                      std::int64_t frame, const LookAheadLimits& limits, const Free& free,
+                                      const ToGo& to_go);
+
+    /// The best sequence found through candidate k (its first clip included; empty when none was free).
+    std::vector<SearchStep> sequence(int k) const;
+    int tested() const { return tested_; }
+
+    /// What the search learned of the time to go (Korf's LRTA*, 1990; Koenig and Likhachev's RTAA*,
+    /// AAMAS 2006): from the end of every clip it found free and expanded, the goal is at least `best`
+    /// (the best score of the search) less the time to get there. Appends (end x, end y, seconds).
+    void learned(double best, std::vector<std::array<double, 3>>& out) const;
+
+private:
+    struct Node {
+        SearchStep step;
+        int parent = -1;  ///< index into nodes_; -1 for a first clip
+        int first = 0;    ///< the candidate it descends from
+        int depth = 1;
+        double elapsed = 0;  ///< seconds from the choice point to the end of this clip
+        double score = 0;    ///< elapsed + to_go(end)
+        Placement end;       ///< where the clip leaves the agent
+    };
+    struct Open {
+        double priority;
+        int node;
+        bool operator>(const Open& o) const { return priority != o.priority ? priority > o.priority : node > o.node; }
+    };
+
+    void push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth, double elapsed,
+              const ToGo& to_go);
+    void expand(const MotionGraph& graph, int node, const ToGo& to_go);
+    void settle(int first, const LookAheadLimits& limits);
+
+    LookAheadLimits limits_;
+    std::vector<Node> nodes_;
+    std::priority_queue<Open, std::vector<Open>, std::greater<>> open_;
+    std::vector<double> score_;    // per candidate
+    std::vector<int> best_;        // per candidate: node ending its best sequence (-1: none)
+    std::vector<int> pending_;     // per candidate: its nodes still open
+    std::vector<double> reached_;  // per candidate: the best score of its free nodes
+    std::vector<int> expanded_;    // free nodes whose successors were opened
+    int tested_ = 0;
+};
+
+}  // namespace mobb::crowd

@@ -1,0 +1,67 @@
+// A motion graph's clips: their kinds, where a clip leaves its successor, their sources. Building a
+// graph from mocap: motion_graph_build.cpp; its file (reading, checking, writing): motion_graph_file.cpp.
+#include "mobb/crowd/graph/motion_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "graph/clip_reach.h"
+#include "mobb/io/load.h"
+
+namespace mobb::crowd {
+
+double reach_of(const Path& p) {
+    double d = 0;
+    for (const Sample& s : p.samples) d = std::max(d, std::hypot(s.x - p.samples[0].x, s.y - p.samples[0].y));
+    return d;
+}
+
+ClipKind kind_of(const GraphClip& c, int id) {
+    const double reach = reach_of(c.path), exit = std::hypot(c.exit_x, c.exit_y);
+    const bool loops = std::find(c.successors.begin(), c.successors.end(), id) != c.successors.end();
+    if (loops && reach <= kIdleReach && c.exit_x == 0 && c.exit_y == 0 && c.exit_heading == 0) return ClipKind::Idle;
+    if (reach <= kInPlaceReach && exit <= kInPlaceExit) return ClipKind::InPlace;
+    return exit / c.path.duration() < kWalking ? ClipKind::Slow : ClipKind::Walk;
+}
+
+const char* to_string(ClipKind kind) {
+    switch (kind) {
+        case ClipKind::Walk: return "walk";
+        case ClipKind::Slow: return "slow";
+        case ClipKind::InPlace: return "in place";
+        case ClipKind::Idle: return "idle";
+    }
+    return "?";
+}
+
+Placement MotionGraph::next(const Placement& p, int clip) const { return next(p, Rigid2::of(p), clip); }
+
+Placement MotionGraph::next(const Placement& p, const Rigid2& m, int clip) const {
+    const GraphClip& c = clips[std::size_t(clip)];
+    return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y, p.theta + c.exit_heading,
+            p.t0 + double(c.path.size()) * dt()};
+}
+
+io::Clip load_graph_source(const MotionGraph& g, int source) {
+    const GraphSource& src = g.sources.at(std::size_t(source));
+    // Frames dropped first, then resampled (LoadOptions applies them in that order), as the build did.
+    io::LoadOptions lo;
+    lo.fps = g.fps;
+    lo.frame_begin = src.frame_begin;
+    lo.frame_end = src.frame_end;
+    const std::string file = io::resolve_data_file(src.file);
+    io::Clip clip = io::load_clip(file, lo);
+    if (int(clip.path.size()) != src.samples)
+        throw GraphError(file + ": " + std::to_string(clip.path.size()) + " samples at " + std::to_string(g.fps) +
+                         " fps, the graph expects " + std::to_string(src.samples) + " (a different file?)");
+    return clip;
+}
+
+std::string default_graph_file() {
+    std::string local = "assets/graphs/cmu_locomotion.json";
+    if (std::filesystem::exists(local)) return local;
+    return std::string(MOBB_SOURCE_DIR) + "/" + local;
+}
+
+}  // namespace mobb::crowd

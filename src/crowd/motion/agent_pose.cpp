@@ -1,0 +1,247 @@
+#include "mobb/crowd/motion/agent_pose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "mobb/crowd/graph/pose_distance.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+std::unique_ptr<PoseSource> make_source(const MotionGraph& g, int source) {
+    auto out = std::make_unique<PoseSource>();
+    try {
+        auto clip = std::make_shared<io::Clip>(load_graph_source(g, source));
+        const PoseTrack track = pose_track(*clip, select_joints(clip->animation.skeleton));
+        for (int f = 0; f < track.frames; ++f) {
+            out->root_x.push_back(track.root[std::size_t(f)].x);
+            out->root_y.push_back(track.root[std::size_t(f)].y);
+            out->heading.push_back(track.heading[std::size_t(f)]);
+        }
+        double lowest = 1e300;
+        for (const glm::dvec3& p : clip->animation.positions) lowest = std::min(lowest, io::to_ground(p, clip->up).z);
+        out->floor = clip->animation.positions.empty() ? 0.0 : lowest;
+        out->clip = std::move(clip);
+    } catch (const std::exception& e) {
+        out->error = e.what();
+    }
+    return out;
+}
+
+const PoseSource& loaded(PoseSources& sources, int source) {
+    const PoseSource& s = sources.get(source);
+    if (!s.clip) throw io::LoadError(s.error);
+    return s;
+}
+
+/// The last frame agent `agent` has a clip for (its clips end, or it left), -1 when none.
+std::int64_t last_frame(const Record& r, const MotionGraph& g, int agent) {
+    const AgentTrack& t = r.tracks[std::size_t(agent)];
+    if (t.clips.empty()) return -1;
+    const PlacedClip& p = t.clips.back();
+    if (p.clip < 0 || std::size_t(p.clip) >= g.clips.size()) return -1;
+    const GraphClip& gc = g.clips[std::size_t(p.clip)];
+    std::int64_t last = std::min<std::int64_t>(p.start + (gc.exit - gc.first), r.frames) - 1;
+    if (t.left_frame) last = std::min(last, *t.left_frame - 1);
+    return last;
+}
+
+}  // namespace
+
+std::string record_graph_file(const Record& r) {
+    if (!std::filesystem::exists(r.graph) &&
+        std::filesystem::path(r.graph).lexically_normal() == "assets/graphs/cmu_locomotion.json")
+        return default_graph_file();
+    return r.graph;
+}
+
+Placement source_to_world(const PoseSource& s, const GraphClip& clip, const Placement& place) {
+    const std::size_t i = std::size_t(clip.first);
+    if (i >= s.heading.size()) return place;
+    // world = R(theta) R(-h) (p - o) + (x, y) = R(theta - h) p + (x, y) - R(theta - h) o.
+    const double a = place.theta - s.heading[i];
+    const double c = std::cos(a), sn = std::sin(a);
+    const double ox = s.root_x[i], oy = s.root_y[i];
+    return {place.x - (c * ox - sn * oy), place.y - (sn * ox + c * oy), a, place.t0};
+}
+
+bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_t k, AgentClipAt& out) {
+    if (agent < 0 || std::size_t(agent) >= r.tracks.size() || k < 0 || k >= r.frames) return false;
+    const auto& clips = r.tracks[std::size_t(agent)].clips;
+    // The last clip started at or before frame k (clips are in time order).
+    auto it = std::upper_bound(clips.begin(), clips.end(), k,
+                               [](std::int64_t f, const PlacedClip& p) { return f < p.start; });
+    if (it == clips.begin()) return false;
+    const PlacedClip& p = *std::prev(it);
+    if (p.clip < 0 || std::size_t(p.clip) >= g.clips.size()) return false;
+    const GraphClip& gc = g.clips[std::size_t(p.clip)];
+    const std::int64_t i = k - p.start;
+    if (i >= std::int64_t(gc.exit - gc.first)) return false;
+    out.placed = &p;
+    out.index = int(std::prev(it) - clips.begin());
+    out.sample = gc.first + int(i);
+    return true;
+}
+
+const PoseSource& PoseSources::get(int source) {
+    if (sources_.empty()) sources_.resize(graph_->sources.size());
+    auto& slot = sources_.at(std::size_t(source));
+    if (!slot) {
+        slot = make_source(*graph_, source);
+        if (!slot->error.empty() && error_.empty()) error_ = slot->error;
+    }
+    return *slot;
+}
+
+int PoseSources::loaded() const {
+    return int(std::count_if(sources_.begin(), sources_.end(), [](const auto& s) { return s && s->clip; }));
+}
+
+Rig crowd_rig(PoseSources& sources, RigJoints joints) {
+    const MotionGraph& g = sources.graph();
+    if (g.sources.empty()) throw GraphError("graph: no sources");
+    std::vector<std::map<std::string, int>> by_name(g.sources.size());
+    for (std::size_t s = 0; s < g.sources.size(); ++s) {
+        const io::Skeleton& sk = loaded(sources, int(s)).clip->animation.skeleton;
+        for (int j = sk.size() - 1; j >= 0; --j) by_name[s][sk.names[std::size_t(j)]] = j;  // first of a name wins
+    }
+    const io::Skeleton& first = sources.get(0).clip->animation.skeleton;
+    std::vector<bool> keep(std::size_t(first.size()), false);
+    if (joints == RigJoints::Major) {
+        for (const std::string& n : select_joints(first).names) keep[std::size_t(by_name[0][n])] = true;
+    } else {
+        for (int j = 0; j < first.size(); ++j) keep[std::size_t(j)] = by_name[0][first.names[std::size_t(j)]] == j;
+    }
+    for (int j = 0; j < first.size(); ++j)
+        for (const auto& names : by_name)
+            if (!names.count(first.names[std::size_t(j)])) keep[std::size_t(j)] = false;
+    const int root = first.root;  // joint 0 is each source's own root, whatever its name: its path's root
+    Rig rig;
+    std::vector<int> index(std::size_t(first.size()), -1);
+    auto add = [&](int j) {
+        index[std::size_t(j)] = rig.size();
+        int p = first.parents[std::size_t(j)];
+        while (p >= 0 && index[std::size_t(p)] < 0) p = first.parents[std::size_t(p)];
+        rig.names.push_back(first.names[std::size_t(j)]);
+        rig.parents.push_back(j == root ? -1 : (p >= 0 ? index[std::size_t(p)] : 0));
+    };
+    add(root);
+    for (int j = 0; j < first.size(); ++j)
+        if (keep[std::size_t(j)] && j != root) add(j);
+    rig.source_joints.resize(g.sources.size());
+    for (std::size_t s = 0; s < g.sources.size(); ++s) {
+        const io::Skeleton& sk = sources.get(int(s)).clip->animation.skeleton;
+        rig.source_joints[s].push_back(sk.root);
+        for (std::size_t j = 1; j < rig.names.size(); ++j) rig.source_joints[s].push_back(by_name[s].at(rig.names[j]));
+    }
+    return rig;
+}
+
+CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints, PoseBlend blend)
+    : record_(record), sources_(std::move(sources)), blend_(blend) {
+    const MotionGraph& g = sources_->graph();
+    if (std::abs(record.dt - g.dt()) > 1e-9)
+        throw GraphError("record dt " + std::to_string(record.dt) + " s differs from its graph's " +
+                         std::to_string(g.dt()) + " s");
+    check_graph_clips(record, g.clips.size());
+    rig_ = crowd_rig(*sources_, joints);
+}
+
+bool CrowdPoser::raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out) {
+    const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
+    const PoseSource& src = loaded(*sources_, gc.source);
+    if (sample < 0 || sample >= src.clip->animation.frames()) return false;
+    const Rigid2 m = Rigid2::of(source_to_world(src, gc, at.placed->place));
+    const std::vector<int>& joints = rig_.source_joints[std::size_t(gc.source)];
+    out.resize(joints.size());
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const glm::dvec3 p = io::to_ground(src.clip->animation.at(sample, joints[j]), src.clip->up);
+        out[j] = {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y), p.z - src.floor};
+    }
+    out[0].z = 0.0;  // the path's point: sources root their skeletons at the hips or at the floor
+    return true;
+}
+
+bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) { return pose(agent, k, out, c_); }
+
+bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw_out) {
+    const MotionGraph& g = sources_->graph();
+    if (agent < 0 || std::size_t(agent) >= record_.tracks.size() || k < 0 || k >= record_.frames) return false;
+    const std::int64_t last = last_frame(record_, g, agent);
+    if (last < 0) return false;
+    k = std::min(k, last);
+    AgentClipAt at;
+    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, raw_out)) return false;
+    out = raw_out;
+    const AgentTrack& track = record_.tracks[std::size_t(agent)];
+    if (!(blend_.window > 0)) return true;
+    const double window = blend_.window / record_.dt;  // frames
+    const double i = double(k - at.placed->start);
+    if (at.index > 0 && i < window) {
+        const PlacedClip& prev = track.clips[std::size_t(at.index - 1)];
+        const GraphClip& gp = g.clips[std::size_t(prev.clip)];
+        const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
+        const AgentClipAt from{&prev, at.index - 1, gp.exit};
+        // Only clips played back to back blend (the previous one ran to its exit).
+        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, a_) && raw(at, gc.first, b_)) {
+            const double s = i / window, w = 1.0 - s * s * (3.0 - 2.0 * s);
+            // Offsets in the ground relative to the root, heights as they are (the root is on the floor).
+            for (std::size_t j = 1; j < out.size(); ++j) out[j] += w * ((a_[j] - a_[0]) - (b_[j] - b_[0]));
+        }
+    }
+    keep_inside(agent, k, out);
+    return true;
+}
+
+void CrowdPoser::keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const {
+    // The agent's disks: frames first .. last of the record's track, or of the window.
+    const AgentTrack& track = record_.tracks[std::size_t(agent)];
+    std::int64_t first = 0, last = std::int64_t(track.samples.size()) - 1;
+    if (window_) {
+        first = window_->first;
+        last = std::min(window_->last, track.left_frame.value_or(record_.frames)) - 1;
+        if (std::size_t(agent) < window_->agent_first || std::size_t(agent) >= window_->agent_last) last = -1;
+    }
+    const auto radius = [&](std::int64_t m) {
+        return window_ ? window_->samples[std::size_t(m - first) * window_->width() + std::size_t(agent) -
+                                          window_->agent_first][3]
+                       : track.samples[std::size_t(m)][3];
+    };
+    k = std::min(k, last);
+    if (k < first) return;
+    // The envelope e(k) = min over k' in [k, k + look-ahead] of r(k') + pull_speed (k' - k) dt is at most
+    // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
+    // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
+    // drawn in over the frames before rather than at once.
+    const std::int64_t ahead = std::int64_t(std::ceil(blend_.look_ahead / record_.dt));
+    double e = radius(k);
+    for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m)
+        e = std::min(e, radius(m) + blend_.pull_speed * double(m - k) * record_.dt);
+    for (std::size_t j = 1; j < out.size(); ++j) {
+        const double dx = out[j].x - out[0].x, dy = out[j].y - out[0].y, d2 = dx * dx + dy * dy;
+        if (d2 <= e * e) continue;
+        const double f = e / std::sqrt(d2);
+        out[j] = {out[0].x + dx * f, out[0].y + dy * f, out[j].z};
+    }
+}
+
+bool CrowdPoser::pose_at(int agent, double t, std::vector<glm::dvec3>& out) {
+    if (!(t >= 0) || !(t <= double(record_.frames) * record_.dt)) return false;
+    const double f = t / record_.dt;
+    std::int64_t k = std::int64_t(std::floor(f + 1e-9));
+    const double u = f - double(k);
+    if (k >= record_.frames) return pose(agent, record_.frames - 1, out);
+    if (u < 1e-9 || k + 1 >= record_.frames) return pose(agent, k, out);
+    std::vector<glm::dvec3> next;
+    if (!pose(agent, k, out) || !pose(agent, k + 1, next)) return false;
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] += u * (next[j] - out[j]);
+    return true;
+}
+
+}  // namespace mobb::crowd

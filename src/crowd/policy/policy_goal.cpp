@@ -1,0 +1,139 @@
+// Goal-directed agents: candidates ranked by an estimate of the time to the goal from where they end -
+// the clip's own duration, the path length to the goal around the obstacles (a navigation field per
+// goal) at walking speed, the turn still needed to face down that path - plus a cost for ending close to
+// where the neighbours will be. Clips that stand idle come last. An agent that could not move on for a
+// few choice points tries its candidates in random order instead, which breaks the deadlocks of agents
+// meeting head-on. Within the goal radius the agent stops: standing idle first.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "mobb/core/angle.h"
+#include "mobb/crowd/policy/policy.h"
+#include "policy/follow.h"
+#include "policy/nav_field.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+class GoalPolicy : public Policy {
+public:
+    explicit GoalPolicy(const PolicyContext& c)
+        : graph_(c.graph), tuning_(c.tuning), radius_(c.goal_radius), grid_(c.world, c.tuning.nav_clearance) {
+        for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
+        // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
+        // stops that much inside the goal radius so that it stays within it to the end.
+        double sway = 0;
+        for (int k = 0; k < int(graph_.clips.size()); ++k) {
+            if (kinds_[std::size_t(k)] != ClipKind::Idle) continue;
+            const auto& samples = graph_.clips[std::size_t(k)].path.samples;
+            for (const Sample& x : samples)
+                sway = std::max(sway, std::hypot(x.x - samples.front().x, x.y - samples.front().y));
+        }
+        stop_radius_ = radius_ - sway;
+        for (const auto& g : c.goals) fields_.emplace(g, NavField(grid_, g));
+    }
+
+    Selection kind() const override { return Selection::Goal; }
+    bool stops_near_walls() const override { return true; }
+
+    void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
+        if (!site.goal) return;
+        const Rigid2 m = Rigid2::of(site.base);
+        std::vector<std::pair<double, int>> scored;
+        scored.reserve(candidates.size());
+        for (int c : candidates) scored.emplace_back(site.arrived ? stop_cost(site, m, c) : cost(site, m, c), c);
+        std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t k = 0; k < scored.size(); ++k) candidates[k] = scored[k].second;
+    }
+
+    double neighbourhood() const override { return 6.0; }
+
+    // A stuck agent (CrowdTuning::goal_patience) and one at its goal order their candidates alone.
+    int horizon(const ChoiceSite& site) const override {
+        return site.goal && !site.arrived && site.stalled < tuning_.goal_patience ? tuning_.goal_horizon : 0;
+    }
+
+    double to_go(const ChoiceSite& site, const Placement& end) const override {
+        return seconds(fields_.at(*site.goal), end, site);
+    }
+
+    std::optional<double> heading(const ChoiceSite& site) const override {
+        if (!site.goal) return std::nullopt;
+        return fields_.at(*site.goal).downhill(site.base.x, site.base.y);
+    }
+
+    // Agents standing at their goals are obstacles for the others' paths.
+    void settled(double x, double y, double r) override {
+        grid_.block_disk(x, y, r);
+        for (auto& [goal, field] : fields_) field.block(grid_);
+    }
+
+    bool arrived(const ChoiceSite& site) const override {
+        return site.goal && site.stops &&
+               std::hypot(site.base.x - (*site.goal)[0], site.base.y - (*site.goal)[1]) < stop_radius_;
+    }
+
+private:
+    // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
+    // cost for ending close to where the neighbours will be. Within the stop radius, the path alone: the
+    // agent stops there whichever way it faces and whoever stands near (else ending at the goal facing
+    // away, or beside an agent standing at its own goal, would cost more than ending short of it, and an
+    // agent could circle its goal for good).
+    double seconds(const NavField& field, const Placement& end, const ChoiceSite& site) const {
+        const double distance = field.distance(end.x, end.y);
+        const CrowdTuning& k = tuning_;
+        if (distance < stop_radius_) return distance / k.goal_walking;
+        const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
+        double t = distance / k.goal_walking + turn / k.goal_turning;
+        for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
+            const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
+            if (d2 >= k.goal_personal * k.goal_personal || goes_my_way(site, n)) continue;
+            t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
+        }
+        return t;
+    }
+
+    // Following (CrowdTuning::follow): a leader is one to follow, not to keep away from.
+    bool goes_my_way(const ChoiceSite& site, const Neighbour& n) const {
+        return site.way && n.facing &&
+               follows(*site.way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow_angle);
+    }
+
+    // Walking on: the estimated time to the goal; standing idle last. A stuck agent
+    // (CrowdTuning::goal_patience) keeps the stream's random order instead, clips that move before those
+    // in place, which moves it out of the way of the agents it waits for: two agents meeting head-on in a
+    // door each step aside or back rather than turn on the spot in front of the other
+    // (bench/results/README.md "following").
+    double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
+        const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
+        if (site.stalled >= tuning_.goal_patience)
+            return idle + (kinds_[std::size_t(c)] == ClipKind::InPlace ? 1e6 : 0.0);
+        const Placement end = graph_.next(site.base, m, c);
+        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);
+    }
+
+    // At the goal: standing idle first, then turning in place, then the clips that end nearest to it.
+    double stop_cost(const ChoiceSite& site, const Rigid2& m, int c) const {
+        const ClipKind kind = kinds_[std::size_t(c)];
+        if (kind == ClipKind::Idle) return 0;
+        const Placement end = graph_.next(site.base, m, c);
+        const double d = std::hypot(end.x - (*site.goal)[0], end.y - (*site.goal)[1]);
+        return (kind == ClipKind::InPlace ? 1e3 : 1e6) + d;
+    }
+
+    const MotionGraph& graph_;
+    const CrowdTuning tuning_;
+    std::vector<ClipKind> kinds_;
+    double radius_;
+    double stop_radius_;  // metres: radius_ less the idle clips' sway
+    NavGrid grid_;
+    std::map<std::array<double, 2>, NavField> fields_;
+};
+
+}  // namespace
+
+std::unique_ptr<Policy> goal_policy(const PolicyContext& context) { return std::make_unique<GoalPolicy>(context); }
+
+}  // namespace mobb::crowd

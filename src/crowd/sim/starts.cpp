@@ -1,0 +1,132 @@
+// Where the agents of a crowd start: at random (the paper's density, a gap apart, clear of obstacles) or
+// where a scenario places them, and the ground each holds there before its first choice point.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "mobb/core/angle.h"
+#include "mobb/util/random.h"
+#include "sim/simulation.h"
+
+namespace mobb::crowd {
+
+double Simulation::max_radius() const {
+    double rmax = 0;
+    for (const GraphClip& c : g_.clips)
+        for (const Sample& s : c.path.samples) rmax = std::max(rmax, s.r);
+    return rmax;
+}
+
+// Random positions `margin` inside the world, rejected when closer than `gap` to an agent placed before
+// or (with reservations) when their held ground meets an obstacle. Placed agents are kept in a grid of
+// cells at least `gap` wide, so a test reads the 3 x 3 cells around the position.
+void Simulation::place_at_random(double gap, double margin) {
+    const World& w = o_.world;
+    if (w.width() <= 2 * margin || w.height() <= 2 * margin)
+        throw std::invalid_argument("crowd: world smaller than an agent");
+    const double cell = std::max(gap, std::sqrt(w.width() * w.height() / double(o_.agents)));
+    const int nx = int(w.width() / cell) + 1, ny = int(w.height() / cell) + 1;
+    std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));
+    auto cell_of = [&](double v, int n) { return std::clamp(int(v / cell), 0, n - 1); };
+    auto free_at = [&](const Placement& p) {
+        const int cx = cell_of(p.x - w.x0, nx), cy = cell_of(p.y - w.y0, ny);
+        for (int ix = std::max(0, cx - 1); ix <= std::min(nx - 1, cx + 1); ++ix)
+            for (int iy = std::max(0, cy - 1); iy <= std::min(ny - 1, cy + 1); ++iy)
+                for (int b : grid[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)]) {
+                    const Placement& q = agents_[std::size_t(b)].start;
+                    if (!(std::hypot(q.x - p.x, q.y - p.y) >= gap)) return false;
+                }
+        for (const Polygon& s : w.obstacles)
+            if (disk_overlaps(s, p.x, p.y, margin)) return false;
+        return true;
+    };
+    util::Random rng(o_.seed);
+    agents_.reserve(std::size_t(o_.agents));
+    for (int a = 0; a < o_.agents; ++a) {
+        Placement p;
+        bool ok = false;
+        for (int attempt = 0; attempt < 100000 && !ok; ++attempt) {
+            p = {rng.uniform(w.x0 + margin, w.x1 - margin), rng.uniform(w.y0 + margin, w.y1 - margin),
+                 rng.uniform(-kPi, kPi), 0.0};
+            ok = free_at(p);
+        }
+        if (!ok)
+            throw std::invalid_argument("crowd: no room for " + std::to_string(o_.agents) + " agents " +
+                                        std::to_string(gap) + " m apart in the world");
+        grid[std::size_t(cell_of(p.x - w.x0, nx)) * std::size_t(ny) + std::size_t(cell_of(p.y - w.y0, ny))].push_back(
+            a);
+        agents_.emplace_back().start = p;
+    }
+}
+
+// A scenario's agents, or random ones: 2 r_max apart and r_max from the edges in random mode (the
+// paper's experiment), their held grounds apart and inside the walls otherwise.
+void Simulation::place_agents() {
+    if (o_.placed.empty()) {
+        if (!policy_->avoids()) return place_at_random(2 * max_radius(), max_radius());
+        return place_at_random(2 * escapes_.hold_radius, escapes_.turn_clearance);
+    }
+    agents_.reserve(o_.placed.size());
+    for (const AgentSpec& s : o_.placed) {
+        Placement p = s.start;
+        p.t0 = 0;
+        const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
+        Agent& a = agents_.emplace_back();
+        a.start = p;
+        a.start_frame = a.moved_until = std::max<std::int64_t>(0, frame);
+        a.goals = s.goals;
+        a.at_goal = s.at_goal;
+    }
+}
+
+// A piece under an unused id: one that left the broad phase before this frame, else a new one.
+int Simulation::add_piece(const Piece& piece, bool pending) {
+    int id = int(pieces_.size());
+    if (unused_.empty()) {
+        pieces_.push_back(piece);
+    } else {
+        id = unused_.back();
+        unused_.pop_back();
+        pieces_[std::size_t(id)] = piece;
+    }
+    pieces_[std::size_t(id)].seq = placed_++;
+    const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
+    // A committed clip leaves by expiring (BroadPhase::expire); the plans' pieces are released.
+    if (piece.kind == Piece::Clip && piece.index == 0 && item.box.f1 < std::int64_t(ending_.size()))
+        ending_[std::size_t(item.box.f1)].push_back(id);
+    if (pending)
+        pending_.push_back(item);
+    else
+        broad_.insert(item.id, item.owner, item.box);
+    return id;
+}
+
+// Every agent's held ground where it starts: the escape of its first choice point. Scenario agents must
+// start apart, clear of the solids (checked here).
+void Simulation::reserve_starts() {
+    for (int a = 0; a < int(agents_.size()); ++a) {
+        Agent& agent = agents_[std::size_t(a)];
+        const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};
+        for (const Polygon& s : solids_)
+            if (disk_overlaps(s, h.x, h.y, escapes_.turn_clearance))
+                throw std::invalid_argument("crowd: agent " + std::to_string(a) + " starts within " +
+                                            std::to_string(escapes_.turn_clearance) + " m of a wall or an obstacle");
+        for (int b = 0; b < a && !o_.placed.empty(); ++b) {  // random starts are placed apart
+            const Placement& q = agents_[std::size_t(b)].start;
+            if (std::hypot(q.x - h.x, q.y - h.y) < 2 * h.r)
+                throw std::invalid_argument("crowd: agents " + std::to_string(b) + " and " + std::to_string(a) +
+                                            " start closer than " + std::to_string(2 * h.r) + " m");
+        }
+        Piece p;
+        p.kind = Piece::Held;
+        p.agent = a;
+        p.choice = -1;
+        p.index = -1;
+        p.hold = h;
+        agent.plan.hold = h;
+        agent.reserved.push_back(add_piece(p, false));
+    }
+}
+
+}  // namespace mobb::crowd
