@@ -18,13 +18,13 @@ namespace mobb {
 /// Every candidate is confirmed by times_overlap on sample_time() and samples_overlap() in double,
 /// so rounding can only cost time. Different sample spacings use an exact two-pointer scan instead.
 /// (The paper's trees, section 3, bound with boxes and recurse; this flat sweep is the same bounding
-/// idea laid out for SIMD: bench/results/README.md.)
+/// idea laid out for SIMD: bench/results/log.md.)
 /// This overload evaluates std::cos / std::sin of the placements only when a candidate pair needs
 /// the exact test: the root test and the filters rotate with a polynomial approximation (within
 /// 1e-8, angles up to 1e6 rad; beyond, the exact rotations at once) whose error is added to their
 /// margins. Most non-colliding queries then end without the two library calls, which were a fifth
 /// of a short query's instructions; this and the leaf blocks make it at least as fast as the best
-/// scan (scan.h) on short clips too (bench/results/README.md, 2026-11-25).
+/// scan (scan.h) on short clips too (bench/results/log.md, 2026-11-25).
 /// On a hit, stores a colliding pair in `hit` (not necessarily the one brute force reports).
 bool collide_sweep(const ClipIndex& a, const Placement& pa, const ClipIndex& b, const Placement& pb,
                    SamplePair* hit = nullptr);

@@ -1,7 +1,7 @@
 // The metrics of metrics.h on a run's frames as they complete (FrameStream, frame_stream.h), one frame at
 // a time, with a fixed state per agent (its last frames for the idle window and SteerSuite's resampling,
 // its sums), so nothing grows with the run's length. Each number is summed in the order crowd_metrics
-// sums it on the whole record, so the two agree to the last bit (tests/crowd/record_stream_test.cpp).
+// sums it on the whole record, so the two agree to the last bit (tests/crowd/record/record_stream_test.cpp).
 // Private to src/crowd.
 #pragma once
 #include <array>

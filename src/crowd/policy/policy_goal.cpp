@@ -105,7 +105,7 @@ private:
     // (CrowdTuning::goal_patience) keeps the stream's random order instead, clips that move before those
     // in place, which moves it out of the way of the agents it waits for: two agents meeting head-on in a
     // door each step aside or back rather than turn on the spot in front of the other
-    // (bench/results/README.md "following").
+    // (bench/results/log.md, "Following").
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
         if (site.stalled >= tuning_.goal_patience)

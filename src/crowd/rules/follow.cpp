@@ -3,8 +3,8 @@
 // play - since they are expected to walk on. Held ground is what an agent would stop on if it found no
 // way on, and an agent walking down the same path as another finds its way on as the one ahead does: a
 // queue at a door moves. Without this rule the search treats each such reservation as a wall for good,
-// and the agents behind walk round the queue or turn away from it, then back (bench/results/README.md
-// "following"). Silver's windowed cooperative A* (2005) likewise trusts reservations only within a
+// and the agents behind walk round the queue or turn away from it, then back (bench/results/log.md,
+// "Following"). Silver's windowed cooperative A* (2005) likewise trusts reservations only within a
 // window. The first clip, with its escape, is still tested against everything, so the crowd stays
 // collision-free; this only changes which free clip ranks first.
 #include "policy/follow.h"

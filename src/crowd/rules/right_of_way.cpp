@@ -6,7 +6,7 @@
 // instead: safe as before, it just stops elsewhere. Priority to the agent that waited, as in Okumura et
 // al.'s priority inheritance with backtracking (PIBT, 2019): the higher-priority agent pushes the lower
 // ones, which plan again. The right of way also passes the standing gap: one that waited may stop close
-// (keeping the gap there too made the idle tail longer: bench/results/README.md).
+// (keeping the gap there too made the idle tail longer: bench/results/log.md).
 #include "choice/choice.h"
 
 #include <algorithm>

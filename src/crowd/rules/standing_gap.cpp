@@ -4,7 +4,7 @@
 // the agent already stands that close to that ground (the test is then left out: it could never stop
 // otherwise). Agents that stop leave room to pass between them instead of packing into knots whose every
 // walk is refused and that untangle one slow clip at a time (the longest idle stretches:
-// bench/results/README.md). A preference of the choice, not a collision: contacts keep the exact test.
+// bench/results/log.md). A preference of the choice, not a collision: contacts keep the exact test.
 #include "choice/choice.h"
 
 #include <algorithm>

@@ -5,8 +5,7 @@
 namespace mobb::crowd {
 
 /// sqrt(dx^2 + dy^2), metres. Not std::hypot: glibc's is correctly rounded for any magnitude and several
-/// times slower, and the crowd's coordinates (metres, at most kilometres) are far from overflow. It was
-/// a tenth of a 10,000-agent run's time in the metrics alone (bench/results/README.md).
+/// times slower, and the crowd's coordinates (metres, at most kilometres) are far from overflow.
 inline double planar_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
 
 }  // namespace mobb::crowd

@@ -13,6 +13,7 @@
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/sim/crowd.h"
 
 namespace mobb::crowd {
 namespace {

@@ -73,7 +73,7 @@ TEST(Rules, LookAheadLeavesARingThroughItsGapSooner) {
 
 // Learned times to go switched off (CrowdTuning::look_ahead_learns): the search alone still takes the
 // agent out of the ring and to its goal, without contact, and the runs differ - the switch acts and is
-// safe. Which is sooner depends on the seed here (bench/results/README.md "Goal crowds that look ahead").
+// safe. Which is sooner depends on the seed here (bench/results/log.md, "Goal crowds that look ahead").
 TEST(Rules, LookAheadLearningSwitchesOff) {
     bool differs = false;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {

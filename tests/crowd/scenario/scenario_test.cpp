@@ -12,6 +12,7 @@
 #include "files.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/scenario/scenario.h"
+#include "mobb/crowd/sim/crowd.h"
 
 namespace mobb::crowd {
 namespace {

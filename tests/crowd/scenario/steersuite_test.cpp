@@ -14,6 +14,7 @@
 #include "mobb/core/angle.h"
 #include "mobb/crowd/collision/narrow_phase.h"
 #include "mobb/crowd/scenario/steersuite.h"
+#include "mobb/crowd/sim/crowd.h"
 
 namespace mobb::crowd {
 namespace {

@@ -63,7 +63,7 @@ public:
     /// Whether its agents may stop with room to stand but not to turn from walls and obstacles
     /// (CrowdTuning::stand_near_walls): goal agents do, to queue in doors and corridors; a wanderer that
     /// stopped facing a wall with no room to turn stood there 42.9 s in a 10,000-agent run
-    /// (bench/results/README.md "Room to stop at walls").
+    /// (bench/results/log.md, "Room to stop at walls").
     virtual bool stops_near_walls() const { return false; }
     /// Puts `candidates` (successor clips, already in the random order of the choice point's own stream)
     /// in the order they are tried.
