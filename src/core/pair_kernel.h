@@ -7,19 +7,16 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "disc_filter.h"
 #include "mobb/core/clip_index.h"
 #include "mobb/core/obb.h"
 #include "mobb/core/query.h"
 
 namespace mobb::detail {
 
-/// One query: B's local frame expressed in A's (float, for filters), the filter margin (metres),
-/// and the world transforms the exact test uses.
-struct PairQuery {
+/// One query: B's local frame expressed in A's (float, for the filters: DiscFilter, set by
+/// passes_root_test()) with the filter margin (metres), and the world transforms the exact test uses.
+struct PairQuery : DiscFilter {
     const ClipIndex& a;
     const ClipIndex& b;
     const Placement& pa;
@@ -27,7 +24,6 @@ struct PairQuery {
     SamplePair* hit;
     Rigid2 ta, tb;
     SpaceTimeRigid rel;  // double, for the root box test
-    float c = 1, s = 0, tx = 0, ty = 0, margin = 0;
 
     PairQuery(const ClipIndex& ia, const Placement& qa, const ClipIndex& ib, const Placement& qb, SamplePair* h)
         : a(ia), b(ib), pa(qa), pb(qb), hit(h), ta(Rigid2::of(qa)), tb(Rigid2::of(qb)) {
@@ -73,29 +69,6 @@ struct PairQuery {
     // Bit k set when pair (i + k, j + k), k < 4, may collide. Branch-free.
     unsigned filter4(std::int64_t i, std::int64_t j) const {
         return discs4(a.xs() + i, a.ys() + i, a.rs() + i, b.xs() + j, b.ys() + j, b.rs() + j);
-    }
-
-    // Bit k set when disc k of A (ax, ay, ar) and disc k of B, moved into A's frame, may overlap.
-    unsigned discs4(const float* ax, const float* ay, const float* ar, const float* bx, const float* by,
-                    const float* br) const {
-#if defined(__SSE2__)
-        const __m128 vc = _mm_set1_ps(c), vs = _mm_set1_ps(s), vm = _mm_set1_ps(margin);
-        const __m128 x = _mm_loadu_ps(bx), y = _mm_loadu_ps(by);
-        const __m128 qx = _mm_add_ps(_mm_sub_ps(_mm_mul_ps(vc, x), _mm_mul_ps(vs, y)), _mm_set1_ps(tx));
-        const __m128 qy = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vs, x), _mm_mul_ps(vc, y)), _mm_set1_ps(ty));
-        const __m128 dx = _mm_sub_ps(_mm_loadu_ps(ax), qx), dy = _mm_sub_ps(_mm_loadu_ps(ay), qy);
-        const __m128 rr = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(ar), _mm_loadu_ps(br)), vm);
-        const __m128 d2 = _mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy));
-        return unsigned(_mm_movemask_ps(_mm_cmplt_ps(d2, _mm_mul_ps(rr, rr))));
-#else
-        unsigned mask = 0;
-        for (int k = 0; k < 4; ++k) {
-            const float qx = c * bx[k] - s * by[k] + tx, qy = s * bx[k] + c * by[k] + ty;
-            const float dx = ax[k] - qx, dy = ay[k] - qy, rr = ar[k] + br[k] + margin;
-            mask |= unsigned(dx * dx + dy * dy < rr * rr) << k;
-        }
-        return mask;
-#endif
     }
 
     // Pairs (i, i + d) for i in [lo, hi), in blocks of 16 filtered pairs with one early-exit branch

@@ -6,17 +6,15 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "approx_rotation.h"
+#include "disc_filter.h"
 #include "mobb/core/clip_index.h"
 #include "mobb/core/query.h"
 
 namespace mobb::detail {
 
-class SweepQuery {
+// B's frame in A's for the float filters, and their margin (DiscFilter): set_float_frame().
+class SweepQuery : public DiscFilter {
 public:
     const ClipIndex& a;
     const ClipIndex& b;
@@ -27,7 +25,6 @@ public:
     // can overlap in time only for d in [dmin, dmax] (at most three), centre = floor of their mean;
     // A's samples with a partner on one of them are [ilo, ihi).
     std::int64_t dmin, dmax, center, ilo, ihi;
-    float c, s, tx, ty, margin;  // B's frame in A's, float filters' margin (metres): set_float_frame()
 
     /// ra and rb: the placements' rotations (Rigid2::of(pa), Rigid2::of(pb)) when the caller has
     /// them, else null (computed only if a candidate pair needs the exact test).
@@ -161,34 +158,6 @@ private:
     // is rare: they are not kept).
     Rigid2 frame_a() const { return given_a_ ? *given_a_ : Rigid2::of(pa); }
     Rigid2 frame_b() const { return given_b_ ? *given_b_ : Rigid2::of(pb); }
-
-    // Squared distance between A's point (x, y) and B's (bx, by) moved into A's frame, in float.
-    float distance2(float x, float y, float bx, float by) const {
-        const float qx = c * bx - s * by + tx, qy = s * bx + c * by + ty;
-        const float dx = x - qx, dy = y - qy;
-        return dx * dx + dy * dy;
-    }
-
-    unsigned discs4(const float* ax, const float* ay, const float* ar, const float* bx, const float* by,
-                    const float* br) const {
-#if defined(__SSE2__)
-        const __m128 vc = _mm_set1_ps(c), vs = _mm_set1_ps(s), vm = _mm_set1_ps(margin);
-        const __m128 x = _mm_loadu_ps(bx), y = _mm_loadu_ps(by);
-        const __m128 qx = _mm_add_ps(_mm_sub_ps(_mm_mul_ps(vc, x), _mm_mul_ps(vs, y)), _mm_set1_ps(tx));
-        const __m128 qy = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vs, x), _mm_mul_ps(vc, y)), _mm_set1_ps(ty));
-        const __m128 dx = _mm_sub_ps(_mm_loadu_ps(ax), qx), dy = _mm_sub_ps(_mm_loadu_ps(ay), qy);
-        const __m128 rr = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(ar), _mm_loadu_ps(br)), vm);
-        const __m128 d2 = _mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy));
-        return unsigned(_mm_movemask_ps(_mm_cmplt_ps(d2, _mm_mul_ps(rr, rr))));
-#else
-        unsigned mask = 0;
-        for (int k = 0; k < 4; ++k) {
-            const float rr = ar[k] + br[k] + margin;
-            mask |= unsigned(distance2(ax[k], ay[k], bx[k], by[k]) < rr * rr) << k;
-        }
-        return mask;
-#endif
-    }
 };
 
 }  // namespace mobb::detail

@@ -1,4 +1,5 @@
-// glTF 2.0 writer of animated skeletons (mobb/io/export.h), through tinygltf.
+// glTF 2.0 writer of animated skeletons (mobb/io/export.h), through tinygltf, and the buffer views it shares
+// with the viewer's scene export (mobb/io/gltf_buffer.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,8 +12,23 @@
 
 #include "mobb/io/capsule.h"
 #include "mobb/io/export.h"
+#include "mobb/io/gltf_buffer.h"
 
 namespace mobb::io {
+
+int append_buffer_view(tinygltf::Model& model, const void* data, std::size_t bytes, int target) {
+    auto& buffer = model.buffers[0].data;
+    while (buffer.size() % 4) buffer.push_back(0);
+    tinygltf::BufferView v;
+    v.buffer = 0;
+    v.byteOffset = buffer.size();
+    v.byteLength = bytes;
+    v.target = target;
+    const auto* p = static_cast<const unsigned char*>(data);
+    buffer.insert(buffer.end(), p, p + bytes);
+    model.bufferViews.push_back(v);
+    return int(model.bufferViews.size()) - 1;
+}
 
 namespace {
 
@@ -34,7 +50,7 @@ public:
     template <class T>
     int accessor(const std::vector<T>& v, int component, int type, int target, bool bounds = false) {
         tinygltf::Accessor a;
-        a.bufferView = view(v.data(), v.size() * sizeof(T), target);
+        a.bufferView = append_buffer_view(model_, v.data(), v.size() * sizeof(T), target);
         a.componentType = component;
         a.type = type;
         a.count = v.size() * sizeof(T) / (component_size(component) * std::size_t(count(type)));
@@ -78,20 +94,6 @@ private:
             a.minValues[c] = std::min(a.minValues[c], double(f[i]));
             a.maxValues[c] = std::max(a.maxValues[c], double(f[i]));
         }
-    }
-
-    int view(const void* data, std::size_t bytes, int target) {
-        auto& buffer = model_.buffers[0].data;
-        while (buffer.size() % 4) buffer.push_back(0);
-        tinygltf::BufferView v;
-        v.buffer = 0;
-        v.byteOffset = buffer.size();
-        v.byteLength = bytes;
-        v.target = target;
-        const auto* p = static_cast<const unsigned char*>(data);
-        buffer.insert(buffer.end(), p, p + bytes);
-        model_.bufferViews.push_back(v);
-        return int(model_.bufferViews.size()) - 1;
     }
 
     tinygltf::Model model_;

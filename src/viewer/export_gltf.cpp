@@ -9,6 +9,7 @@
 
 #include "box_layer.h"
 #include "disk_layer.h"
+#include "mobb/io/gltf_buffer.h"
 #include "space.h"
 #include "trace_layer.h"
 
@@ -76,23 +77,10 @@ public:
     tinygltf::Model& model() { return model_; }
 
 private:
-    int view(const void* data, std::size_t bytes, int target) {
-        auto& buffer = model_.buffers[0].data;
-        while (buffer.size() % 4) buffer.push_back(0);
-        tinygltf::BufferView v;
-        v.buffer = 0;
-        v.byteOffset = buffer.size();
-        v.byteLength = bytes;
-        v.target = target;
-        const auto* p = static_cast<const unsigned char*>(data);
-        buffer.insert(buffer.end(), p, p + bytes);
-        model_.bufferViews.push_back(v);
-        return int(model_.bufferViews.size()) - 1;
-    }
-
     int accessor(const std::vector<glm::vec3>& v, bool bounds) {
         tinygltf::Accessor a;
-        a.bufferView = view(v.data(), v.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+        a.bufferView =
+            io::append_buffer_view(model_, v.data(), v.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
         a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         a.type = TINYGLTF_TYPE_VEC3;
         a.count = v.size();
@@ -111,7 +99,8 @@ private:
 
     int index_accessor(const std::vector<std::uint32_t>& v) {
         tinygltf::Accessor a;
-        a.bufferView = view(v.data(), v.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+        a.bufferView = io::append_buffer_view(model_, v.data(), v.size() * sizeof(std::uint32_t),
+                                              TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
         a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
         a.type = TINYGLTF_TYPE_SCALAR;
         a.count = v.size();
