@@ -91,46 +91,51 @@ void measure_motion(const crowd::Record& record, const crowd::MotionGraph& g, in
     }
 }
 
-void add_crowd(CLI::App& app, int& exit_code) {
-    auto* cmd =
-        app.add_subcommand("crowd", "Simulate a graph-driven crowd with collision-free clip choice (paper section 5)");
-    auto graph = std::make_shared<std::string>();
-    auto world = std::make_shared<std::string>("30x40");
-    auto select = std::make_shared<std::string>("avoid");
-    auto record = std::make_shared<std::string>();
-    auto scenario = std::make_shared<std::string>();
-    auto o = std::make_shared<crowd::CrowdOptions>();
-    o->threads = util::WorkerPool::hardware_threads();
-    auto tree = std::make_shared<TreeArgs>();
-    auto quiet = std::make_shared<bool>(false);
-    auto no_motion = std::make_shared<bool>(false);
-    cmd->add_option("--graph", *graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
-    cmd->add_option("--agents", o->agents, "Number of agents")->check(CLI::Range(1, 1000000))->capture_default_str();
-    cmd->add_option("--world", *world, "World rectangle WxH (metres)")->capture_default_str();
-    cmd->add_option("--seconds", o->seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
-    cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-    cmd->add_option("--select", *select, "Clip choice: avoid (wander), random (the paper's timing) or goal")
+// What `mobb crowd` reads from its command line.
+struct CrowdArgs {
+    CLI::App* cmd = nullptr;
+    std::string graph, world = "30x40", select = "avoid", record, scenario;
+    crowd::CrowdOptions options;
+    crowd::CrowdTuning tuning;  // the rules' switches and numbers (--no-..., --tune)
+    std::vector<std::string> tune;
+    TreeArgs tree;
+    bool quiet = false, no_motion = false, candidates = false;
+};
+
+void add_run_options(CLI::App& cmd, CrowdArgs& a) {
+    crowd::CrowdOptions& o = a.options;
+    cmd.add_option("--graph", a.graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
+    cmd.add_option("--agents", o.agents, "Number of agents")->check(CLI::Range(1, 1000000))->capture_default_str();
+    cmd.add_option("--world", a.world, "World rectangle WxH (metres)")->capture_default_str();
+    cmd.add_option("--seconds", o.seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
+    cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
+    cmd.add_option("--select", a.select, "Clip choice: avoid (wander), random (the paper's timing) or goal")
         ->check(CLI::IsMember({"avoid", "random", "goal"}))
         ->capture_default_str();
-    cmd->add_option("--cell", o->cell, "Broad-phase grid cell (metres)")
+    cmd.add_option("--cell", o.cell, "Broad-phase grid cell (metres)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads,
-                    "Worker threads for the choice points (the record is the same for any count)")
+    cmd.add_option("--threads", o.threads,
+                   "Worker threads for the choice points (the record is the same for any count)")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
-    cmd->add_option("--record", *record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
-    auto candidates = std::make_shared<bool>(false);
-    cmd->add_flag("--record-candidates,!--no-record-candidates", *candidates,
-                  "Keep each choice point's candidates and their queries in the record (default: in a JSON record, "
-                  "not in HDF5, where they would be most of the file's tables and slow the run)");
-    cmd->add_option("--scenario", *scenario,
-                    "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
-    // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
-    auto off = std::make_shared<crowd::CrowdTuning>();
+    cmd.add_option("--record", a.record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
+    cmd.add_flag("--record-candidates,!--no-record-candidates", a.candidates,
+                 "Keep each choice point's candidates and their queries in the record (default: in a JSON record, "
+                 "not in HDF5, where they would be most of the file's tables and slow the run)");
+    cmd.add_option("--scenario", a.scenario,
+                   "Run a scenario (JSON: world, obstacles, agents with goals, time limit; assets/scenarios)");
+    cmd.add_flag("--quiet", a.quiet, "No progress bar");
+    cmd.add_flag("--no-motion", a.no_motion,
+                 "Skip the motion metrics (joint jumps, foot sliding: they pose every agent from the mocap)");
+    a.tree.add_to(cmd, false);
+}
+
+// Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
+void add_rule_switches(CLI::App& cmd, crowd::CrowdTuning& off, std::vector<std::string>& tune) {
     const auto rule_off = [&](const char* flag, bool crowd::CrowdTuning::*rule, const char* what) {
-        cmd->add_flag_callback(
-            flag, [off, rule] { (*off).*rule = false; }, what);
+        cmd.add_flag_callback(
+            flag, [&off, rule] { off.*rule = false; }, what);
     };
     rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
              "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
@@ -146,96 +151,114 @@ void add_crowd(CLI::App& app, int& exit_code) {
              "Agents leaving at an exit reserve a stop beyond it, as any clip's plan does");
     rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
              "Wanderers may stop right beside another's held ground");
-    auto tune = std::make_shared<std::vector<std::string>>();
-    cmd->add_option("--tune", *tune,
-                    "Set a field of CrowdTuning, NAME=VALUE (repeatable; include/mobb/crowd/tuning.h), e.g. "
-                    "--tune look_ahead_budget=192");
-    cmd->add_flag("--quiet", *quiet, "No progress bar");
-    cmd->add_flag("--no-motion", *no_motion,
-                  "Skip the motion metrics (joint jumps, foot sliding: they pose every agent from the mocap)");
-    tree->add_to(*cmd, false);
-    cmd->callback([=, &exit_code] {
-        // A scenario brings its own world, agents, policy and time limit.
-        for (const char* own : {"--agents", "--world", "--select", "--seconds"})
-            if (!scenario->empty() && cmd->count(own)) {
-                std::cerr << "crowd: " << own << " does not go with --scenario (the scenario sets it)\n";
-                exit_code = kUsage;
-                return;
-            }
-        if (record->empty() && cmd->count("--record-candidates")) {
-            std::cerr << "crowd: --record-candidates and --no-record-candidates go with --record\n";
+    cmd.add_option("--tune", tune,
+                   "Set a field of CrowdTuning, NAME=VALUE (repeatable; include/mobb/crowd/tuning.h), e.g. "
+                   "--tune look_ahead_budget=192");
+}
+
+// The usage errors the parser cannot see: options that do not go together, a bad --tune. Prints one line
+// and returns false on the first.
+bool check_usage(CrowdArgs& a) {
+    // A scenario brings its own world, agents, policy and time limit.
+    for (const char* own : {"--agents", "--world", "--select", "--seconds"})
+        if (!a.scenario.empty() && a.cmd->count(own)) {
+            std::cerr << "crowd: " << own << " does not go with --scenario (the scenario sets it)\n";
+            return false;
+        }
+    if (a.record.empty() && a.cmd->count("--record-candidates")) {
+        std::cerr << "crowd: --record-candidates and --no-record-candidates go with --record\n";
+        return false;
+    }
+    for (const std::string& t : a.tune) {
+        try {
+            crowd::set_tuning(a.tuning, t);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "crowd: --tune " << e.what() << "\n";
+            return false;
+        }
+    }
+    return true;
+}
+
+// The run's options: the command line's, or a scenario's with the command line's seed, threads and cell.
+crowd::CrowdOptions run_options(const CrowdArgs& a, const crowd::Scenario& s) {
+    crowd::CrowdOptions opt = a.options;
+    parse_world(a.world, opt.world.x1, opt.world.y1);
+    opt.select = crowd::parse_selection(a.select);
+    if (!a.scenario.empty()) {
+        opt = crowd::scenario_options(s);
+        opt.seed = a.options.seed;
+        opt.threads = a.options.threads;
+        opt.cell = a.options.cell;
+    }
+    opt.tuning = a.tuning;
+    // Only a written record shows them, and an HDF5 one only when asked.
+    opt.record_queries =
+        !a.record.empty() && (a.cmd->count("--record-candidates") ? a.candidates : crowd::keeps_candidates(a.record));
+    return opt;
+}
+
+void run_crowd_command(const CrowdArgs& a, std::ostream& out) {
+    crowd::Scenario s;
+    if (!a.scenario.empty()) s = crowd::load_scenario(a.scenario);
+    crowd::CrowdOptions opt = run_options(a, s);
+    const std::string file = a.graph.empty() ? crowd::default_graph_file() : a.graph;
+    const crowd::MotionGraph g = crowd::load_graph(file);
+    // The fastest exact query unless a tree is asked for (its counters then fill the summary).
+    const bool trees = a.cmd->count("--tree") || a.cmd->count("--nmin") || a.cmd->count("--fit");
+    const crowd::NarrowPhase narrow =
+        trees ? crowd::NarrowPhase::trees(g, a.tree.options()) : crowd::NarrowPhase::sweep(g);
+    // An HDF5 record streams as the run goes; a JSON one (small runs) is written at the end. Without a
+    // record the run streams to nowhere, keeping only its summary and metrics (memory stays flat) -
+    // unless its motion is measured, which poses the clips the run keeps (kMotionAgents at most).
+    const bool at_end = !a.record.empty() && !crowd::is_h5_record(a.record);
+    const bool motion = !a.no_motion && (at_end || (a.record.empty() && opt.agents <= kMotionAgents));
+    crowd::RecordSink nowhere;
+    std::unique_ptr<crowd::H5RecordWriter> writer;
+    if (!a.record.empty() && !at_end) writer = std::make_unique<crowd::H5RecordWriter>(a.record, file, s.name);
+    if (!at_end && !motion) opt.sink = writer ? writer.get() : &nowhere;
+    crowd::CrowdRun run;
+    try {
+        run = crowd::run_crowd(g, narrow, opt, a.quiet ? std::function<void(double)>() : progress_bar("crowd"));
+    } catch (const std::invalid_argument& e) {
+        if (writer) writer.reset(), std::remove(a.record.c_str());  // bad options: no frame, no file
+        if (a.scenario.empty()) throw;
+        throw InputError(a.scenario + ": " + e.what());  // its agents cannot start where it puts them
+    }
+    run.record.graph = file;
+    run.record.scenario = s.name;
+    const crowd::CrowdMetrics metrics =
+        run.metrics ? *run.metrics : crowd::crowd_metrics(run.record, g, opt.goal_radius);
+    std::string metrics_json = crowd::metrics_json(metrics), motion_text;
+    if (motion)
+        measure_motion(run.record, g, opt.threads, metrics_json, motion_text);
+    else if (!a.no_motion)
+        motion_text = "motion: not measured (a streamed run keeps no clips to pose: a JSON record, or " +
+                      std::to_string(kMotionAgents) + " agents or fewer)\n";
+    if (writer)
+        writer->finish(run.record, crowd::summary_json(run.summary), metrics_json);
+    else if (at_end)
+        crowd::write_record_file(a.record, run.record, crowd::summary_json(run.summary), metrics_json);
+    if (!s.name.empty()) out << "scenario " << s.name << ": ";
+    out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, " << opt.seconds
+        << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase " << narrow.name() << ", "
+        << opt.threads << " threads, graph " << file << " (" << g.clips.size() << " clips)\n"
+        << crowd::summary_text(run.summary) << crowd::metrics_text(metrics) << motion_text;
+}
+
+void add_crowd(CLI::App& app, int& exit_code) {
+    auto a = std::make_shared<CrowdArgs>();
+    a->cmd =
+        app.add_subcommand("crowd", "Simulate a graph-driven crowd with collision-free clip choice (paper section 5)");
+    a->options.threads = util::WorkerPool::hardware_threads();
+    add_run_options(*a->cmd, *a);
+    add_rule_switches(*a->cmd, a->tuning, a->tune);
+    a->cmd->callback([a, &exit_code] {
+        if (!check_usage(*a)) {
             exit_code = kUsage;
             return;
         }
-        for (const std::string& t : *tune) {
-            try {
-                crowd::set_tuning(*off, t);
-            } catch (const std::invalid_argument& e) {
-                std::cerr << "crowd: --tune " << e.what() << "\n";
-                exit_code = kUsage;
-                return;
-            }
-        }
-        exit_code = guarded([&](std::ostream& out) {
-            crowd::CrowdOptions opt = *o;
-            parse_world(*world, opt.world.x1, opt.world.y1);
-            opt.select = crowd::parse_selection(*select);
-            crowd::Scenario s;
-            if (!scenario->empty()) {
-                s = crowd::load_scenario(*scenario);
-                opt = crowd::scenario_options(s);
-                opt.seed = o->seed;
-                opt.threads = o->threads;
-                opt.cell = o->cell;
-            }
-            opt.tuning = *off;
-            // Only a written record shows them, and an HDF5 one only when asked.
-            opt.record_queries = !record->empty() &&
-                                 (cmd->count("--record-candidates") ? *candidates : crowd::keeps_candidates(*record));
-            const std::string file = graph->empty() ? crowd::default_graph_file() : *graph;
-            const crowd::MotionGraph g = crowd::load_graph(file);
-            // The fastest exact query unless a tree is asked for (its counters then fill the summary).
-            const bool trees = cmd->count("--tree") || cmd->count("--nmin") || cmd->count("--fit");
-            const crowd::NarrowPhase narrow =
-                trees ? crowd::NarrowPhase::trees(g, tree->options()) : crowd::NarrowPhase::sweep(g);
-            // An HDF5 record streams as the run goes; a JSON one (small runs) is written at the end. Without a
-            // record the run streams to nowhere, keeping only its summary and metrics (memory stays flat) -
-            // unless its motion is measured, which poses the clips the run keeps (kMotionAgents at most).
-            const bool at_end = !record->empty() && !crowd::is_h5_record(*record);
-            const bool motion = !*no_motion && (at_end || (record->empty() && opt.agents <= kMotionAgents));
-            crowd::RecordSink nowhere;
-            std::unique_ptr<crowd::H5RecordWriter> writer;
-            if (!record->empty() && !at_end) writer = std::make_unique<crowd::H5RecordWriter>(*record, file, s.name);
-            if (!at_end && !motion) opt.sink = writer ? writer.get() : &nowhere;
-            crowd::CrowdRun run;
-            try {
-                run = crowd::run_crowd(g, narrow, opt, *quiet ? std::function<void(double)>() : progress_bar("crowd"));
-            } catch (const std::invalid_argument& e) {
-                if (writer) writer.reset(), std::remove(record->c_str());  // bad options: no frame, no file
-                if (scenario->empty()) throw;
-                throw InputError(*scenario + ": " + e.what());  // its agents cannot start where it puts them
-            }
-            run.record.graph = file;
-            run.record.scenario = s.name;
-            const crowd::CrowdMetrics metrics =
-                run.metrics ? *run.metrics : crowd::crowd_metrics(run.record, g, opt.goal_radius);
-            std::string metrics_json = crowd::metrics_json(metrics), motion_text;
-            if (motion)
-                measure_motion(run.record, g, opt.threads, metrics_json, motion_text);
-            else if (!*no_motion)
-                motion_text = "motion: not measured (a streamed run keeps no clips to pose: a JSON record, or " +
-                              std::to_string(kMotionAgents) + " agents or fewer)\n";
-            if (writer)
-                writer->finish(run.record, crowd::summary_json(run.summary), metrics_json);
-            else if (at_end)
-                crowd::write_record_file(*record, run.record, crowd::summary_json(run.summary), metrics_json);
-            if (!s.name.empty()) out << "scenario " << s.name << ": ";
-            out << opt.agents << " agents, " << opt.world.width() << " x " << opt.world.height() << " m, "
-                << opt.seconds << " s, seed " << opt.seed << ", " << crowd::to_string(opt.select) << ", narrow phase "
-                << narrow.name() << ", " << opt.threads << " threads, graph " << file << " (" << g.clips.size()
-                << " clips)\n"
-                << crowd::summary_text(run.summary) << crowd::metrics_text(metrics) << motion_text;
-        });
+        exit_code = guarded([&](std::ostream& out) { run_crowd_command(*a, out); });
     });
 }
 

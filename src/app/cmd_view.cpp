@@ -198,119 +198,134 @@ void print_bench(std::ostream& out, const std::string& what, const viewer::Bench
         << std::fixed << std::setprecision(2) << r.fps << " frames per second\n";
 }
 
+// What `mobb render` reads from its command line.
+struct RenderArgs {
+    std::string out, crowd, disk_colour, box_colour;
+    std::vector<std::string> inputs, picks, panels;
+    int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
+    double time = -1, window = -1;
+    bool ui = false, help = false, bench = false, top = false, no_msaa = false, bodies = false;
+};
+
+void add_render_options(CLI::App& cmd, RenderArgs& a) {
+    cmd.add_option("SCENE_OR_FILES", a.inputs, "A scene (.json) or clip files: BVH, glTF, FBX, ...");
+    cmd.add_option("--crowd", a.crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
+    cmd.add_flag("--bodies", a.bodies,
+                 "Crowd agents as bodies, a capsule per bone, not lines (the scene's layers.bodies; Scene panel)");
+    cmd.add_option("--time", a.time, "With --crowd: time cursor in seconds (default: the middle)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--window", a.window,
+                   "Seconds either side of the time cursor drawn, 0 for all time (default: the scene's; 5 for "
+                   "crowds)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--agent", a.agent, "With --crowd: agent listed in the crowd panel")->check(CLI::NonNegativeNumber);
+    cmd.add_option("--choice", a.choice, "With --crowd: select this choice point (index in the record)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--candidate", a.candidate, "With --choice: open a query of this candidate in the trace")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--query", a.query, "With --candidate: which of its queries, in the order run (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--colour-disks", a.disk_colour,
+                   "Disks coloured by clip (default), radius, speed, time or clearance, with a colour bar");
+    cmd.add_option("--colour-boxes", a.box_colour,
+                   "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
+    cmd.add_flag("--top", a.top, "With --crowd: the top view (the panels' \"top\", the T key)");
+    cmd.add_option("--out", a.out, "PNG file to write");
+    cmd.add_option("--width", a.width, "Image width (default: the scene's; 1280 with --bench)")
+        ->check(CLI::Range(16, 8192));
+    cmd.add_option("--height", a.height, "Image height (default: the scene's; 720 with --bench)")
+        ->check(CLI::Range(16, 8192));
+    cmd.add_option("--step", a.step, "Trace step to show (default: the scene's)")->check(CLI::NonNegativeNumber);
+    cmd.add_flag("--ui", a.ui, "Also draw the ImGui panels");
+    cmd.add_flag("--shortcuts", a.help, "With --ui: the Shortcuts window open too (F1 in the viewer)");
+    cmd.add_option("--pick", a.picks, "With --ui: click disk CLIP:SAMPLE (twice: the Inspector's ruler)");
+    cmd.add_option("--panel", a.panels, "With --ui: also open this panel (as in the View menu), e.g. Open");
+    cmd.add_flag("--no-msaa", a.no_msaa,
+                 "One sample per pixel instead of 4x multisampling: jagged edges, about 3x less fill work "
+                 "(crowds of over 100,000 disks always)");
+    cmd.add_flag("--bench", a.bench, "Print frames per second instead of writing an image");
+    cmd.add_option("--bench-frames", a.bench_frames, "Frames timed by --bench")->check(CLI::Range(1, 100000));
+}
+
+// The usage errors the parser cannot see: options that do not go together. Prints one line and returns
+// false on the first.
+bool check_render_usage(const RenderArgs& a) {
+    if (a.out.empty() && !a.bench) {
+        std::cerr << "render: --out FILE.png is required (or --bench)\n";
+        return false;
+    }
+    if (a.inputs.empty() == a.crowd.empty()) {
+        std::cerr << "render: expected a SCENE, clip files or --crowd RECORD.json (one of them)\n";
+        return false;
+    }
+    if (!a.ui && (!a.picks.empty() || !a.panels.empty() || a.help)) {
+        std::cerr << "render: --pick, --panel and --shortcuts go with --ui\n";
+        return false;
+    }
+    if (a.crowd.empty() && (a.choice >= 0 || a.candidate >= 0 || a.query >= 0 || a.time >= 0 || a.top)) {
+        std::cerr << "render: --time, --top, --choice, --candidate and --query go with --crowd\n";
+        return false;
+    }
+    return true;
+}
+
+// `render --crowd RECORD`: the record at the time cursor.
+void render_crowd(const RenderArgs& a, std::ostream& out) {
+    const int w = a.width ? a.width : 960, h = a.height ? a.height : 540;
+    State s = crowd_state(a.crowd, aspect(w, h), a.agent, a.time, a.window);
+    open_crowd_query(s, a.choice, a.candidate, a.query, a.time >= 0);
+    apply_step(s, a.step, "render");
+    apply_colouring(s, a.disk_colour, a.box_colour);
+    if (a.window >= 0) s.scene.window = a.window;
+    if (a.no_msaa) s.scene.multisample = false;
+    if (a.bodies) s.scene.layers.bodies = true;
+    if (a.top) {
+        s.camera.top();
+        viewer::frame_all(s, aspect(w, h));
+    }
+    if (a.bench) {
+        print_bench(out, "crowd", viewer::bench_headless(s, w, h, a.bench_frames), w, h);
+        return;
+    }
+    const viewer::Ui start = ui_start(s, a.picks, a.panels, true);
+    render::write_png(a.out, viewer::render_headless(s, {w, h, a.ui, a.help, &start}));
+    out << a.out << "\n";
+}
+
+// `render SCENE` or `render FILES...`.
+void render_scene(const RenderArgs& a, std::ostream& out) {
+    const bool files = names_clip_files(a.inputs);
+    Scene scene = files ? scene_of_inputs(a.inputs, {}) : viewer::load_scene(a.inputs[0]);
+    const int w = a.width ? a.width : a.bench ? 1280 : scene.width;
+    const int h = a.height ? a.height : a.bench ? 720 : scene.height;
+    State s = viewer::load_state(scene, aspect(w, h));
+    if (files) arrange_clip_files(s, aspect(w, h));
+    apply_step(s, a.step, "render");
+    apply_colouring(s, a.disk_colour, a.box_colour);
+    if (a.window >= 0) s.scene.window = a.window;
+    if (a.no_msaa) s.scene.multisample = false;
+    if (a.bodies) s.scene.layers.bodies = true;
+    if (a.bench) {
+        const viewer::BenchResult r = viewer::bench_headless(s, w, h, a.bench_frames);
+        print_bench(out, std::to_string(s.clips.size()) + " clips", r, w, h);
+        return;
+    }
+    const viewer::Ui start = ui_start(s, a.picks, a.panels, files || !scene.camera);
+    render::write_png(a.out, viewer::render_headless(s, {w, h, a.ui, a.help, &start}));
+    out << a.out << "\n";
+}
+
 void add_render(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("render", "Render a scene to PNG with no display (OSMesa, llvmpipe)");
-    struct Args {
-        std::string out, crowd, disk_colour, box_colour;
-        std::vector<std::string> inputs, picks, panels;
-        int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
-        double time = -1, window = -1;
-        bool ui = false, help = false, bench = false, top = false, no_msaa = false, bodies = false;
-    };
-    auto a = std::make_shared<Args>();
-    cmd->add_option("SCENE_OR_FILES", a->inputs, "A scene (.json) or clip files: BVH, glTF, FBX, ...");
-    cmd->add_option("--crowd", a->crowd, "Render a crowd record (mobb crowd --record) instead of a scene");
-    cmd->add_flag("--bodies", a->bodies,
-                  "Crowd agents as bodies, a capsule per bone, not lines (the scene's layers.bodies; Scene panel)");
-    cmd->add_option("--time", a->time, "With --crowd: time cursor in seconds (default: the middle)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--window", a->window,
-                    "Seconds either side of the time cursor drawn, 0 for all time (default: the scene's; 5 for "
-                    "crowds)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--agent", a->agent, "With --crowd: agent listed in the crowd panel")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--choice", a->choice, "With --crowd: select this choice point (index in the record)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--candidate", a->candidate, "With --choice: open a query of this candidate in the trace")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--query", a->query, "With --candidate: which of its queries, in the order run (default 0)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--colour-disks", a->disk_colour,
-                    "Disks coloured by clip (default), radius, speed, time or clearance, with a colour bar");
-    cmd->add_option(
-        "--colour-boxes", a->box_colour,
-        "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
-    cmd->add_flag("--top", a->top, "With --crowd: the top view (the panels' \"top\", the T key)");
-    cmd->add_option("--out", a->out, "PNG file to write");
-    cmd->add_option("--width", a->width, "Image width (default: the scene's; 1280 with --bench)")
-        ->check(CLI::Range(16, 8192));
-    cmd->add_option("--height", a->height, "Image height (default: the scene's; 720 with --bench)")
-        ->check(CLI::Range(16, 8192));
-    cmd->add_option("--step", a->step, "Trace step to show (default: the scene's)")->check(CLI::NonNegativeNumber);
-    cmd->add_flag("--ui", a->ui, "Also draw the ImGui panels");
-    cmd->add_flag("--shortcuts", a->help, "With --ui: the Shortcuts window open too (F1 in the viewer)");
-    cmd->add_option("--pick", a->picks, "With --ui: click disk CLIP:SAMPLE (twice: the Inspector's ruler)");
-    cmd->add_option("--panel", a->panels, "With --ui: also open this panel (as in the View menu), e.g. Open");
-    cmd->add_flag("--no-msaa", a->no_msaa,
-                  "One sample per pixel instead of 4x multisampling: jagged edges, about 3x less fill work "
-                  "(crowds of over 100,000 disks always)");
-    cmd->add_flag("--bench", a->bench, "Print frames per second instead of writing an image");
-    cmd->add_option("--bench-frames", a->bench_frames, "Frames timed by --bench")->check(CLI::Range(1, 100000));
+    auto a = std::make_shared<RenderArgs>();
+    add_render_options(*cmd, *a);
     cmd->callback([a, &exit_code] {
-        if (a->out.empty() && !a->bench) {
-            std::cerr << "render: --out FILE.png is required (or --bench)\n";
+        if (!check_render_usage(*a)) {
             exit_code = kUsage;
             return;
         }
-        if (a->inputs.empty() == a->crowd.empty()) {
-            std::cerr << "render: expected a SCENE, clip files or --crowd RECORD.json (one of them)\n";
-            exit_code = kUsage;
-            return;
-        }
-        if (!a->ui && (!a->picks.empty() || !a->panels.empty() || a->help)) {
-            std::cerr << "render: --pick, --panel and --shortcuts go with --ui\n";
-            exit_code = kUsage;
-            return;
-        }
-        if (a->crowd.empty() && (a->choice >= 0 || a->candidate >= 0 || a->query >= 0 || a->time >= 0 || a->top)) {
-            std::cerr << "render: --time, --top, --choice, --candidate and --query go with --crowd\n";
-            exit_code = kUsage;
-            return;
-        }
-        exit_code = guarded([&](std::ostream& out) {
-            if (!a->crowd.empty()) {
-                const int w = a->width ? a->width : 960, h = a->height ? a->height : 540;
-                State s = crowd_state(a->crowd, aspect(w, h), a->agent, a->time, a->window);
-                open_crowd_query(s, a->choice, a->candidate, a->query, a->time >= 0);
-                apply_step(s, a->step, "render");
-                apply_colouring(s, a->disk_colour, a->box_colour);
-                if (a->window >= 0) s.scene.window = a->window;
-                if (a->no_msaa) s.scene.multisample = false;
-                if (a->bodies) s.scene.layers.bodies = true;
-                if (a->top) {
-                    s.camera.top();
-                    viewer::frame_all(s, aspect(w, h));
-                }
-                if (a->bench) {
-                    print_bench(out, "crowd", viewer::bench_headless(s, w, h, a->bench_frames), w, h);
-                    return;
-                }
-                const viewer::Ui start = ui_start(s, a->picks, a->panels, true);
-                render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
-                out << a->out << "\n";
-                return;
-            }
-            const bool files = names_clip_files(a->inputs);
-            Scene scene = files ? scene_of_inputs(a->inputs, {}) : viewer::load_scene(a->inputs[0]);
-            const int w = a->width ? a->width : a->bench ? 1280 : scene.width;
-            const int h = a->height ? a->height : a->bench ? 720 : scene.height;
-            State s = viewer::load_state(scene, aspect(w, h));
-            if (files) arrange_clip_files(s, aspect(w, h));
-            apply_step(s, a->step, "render");
-            apply_colouring(s, a->disk_colour, a->box_colour);
-            if (a->window >= 0) s.scene.window = a->window;
-            if (a->no_msaa) s.scene.multisample = false;
-            if (a->bodies) s.scene.layers.bodies = true;
-            if (a->bench) {
-                const viewer::BenchResult r = viewer::bench_headless(s, w, h, a->bench_frames);
-                print_bench(out, std::to_string(s.clips.size()) + " clips", r, w, h);
-                return;
-            }
-            const viewer::Ui start = ui_start(s, a->picks, a->panels, files || !scene.camera);
-            render::write_png(a->out, viewer::render_headless(s, {w, h, a->ui, a->help, &start}));
-            out << a->out << "\n";
-        });
+        exit_code =
+            guarded([&](std::ostream& out) { a->crowd.empty() ? render_scene(*a, out) : render_crowd(*a, out); });
     });
 }
 
