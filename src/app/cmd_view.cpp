@@ -269,16 +269,21 @@ bool check_render_usage(const RenderArgs& a) {
     return true;
 }
 
-// `render --crowd RECORD`: the record at the time cursor.
-void render_crowd(const RenderArgs& a, std::ostream& out) {
-    const int w = a.width ? a.width : 960, h = a.height ? a.height : 540;
-    State s = crowd_state(a.crowd, aspect(w, h), a.agent, a.time, a.window);
-    open_crowd_query(s, a.choice, a.candidate, a.query, a.time >= 0);
+// What the command line sets on any state it renders: trace step, colouring, time window, samples, bodies.
+void apply_render_args(State& s, const RenderArgs& a) {
     apply_step(s, a.step, "render");
     apply_colouring(s, a.disk_colour, a.box_colour);
     if (a.window >= 0) s.scene.window = a.window;
     if (a.no_msaa) s.scene.multisample = false;
     if (a.bodies) s.scene.layers.bodies = true;
+}
+
+// `render --crowd RECORD`: the record at the time cursor.
+void render_crowd(const RenderArgs& a, std::ostream& out) {
+    const int w = a.width ? a.width : 960, h = a.height ? a.height : 540;
+    State s = crowd_state(a.crowd, aspect(w, h), a.agent, a.time, a.window);
+    open_crowd_query(s, a.choice, a.candidate, a.query, a.time >= 0);
+    apply_render_args(s, a);
     if (a.top) {
         s.camera.top();
         viewer::frame_all(s, aspect(w, h));
@@ -300,11 +305,7 @@ void render_scene(const RenderArgs& a, std::ostream& out) {
     const int h = a.height ? a.height : a.bench ? 720 : scene.height;
     State s = viewer::load_state(scene, aspect(w, h));
     if (files) arrange_clip_files(s, aspect(w, h));
-    apply_step(s, a.step, "render");
-    apply_colouring(s, a.disk_colour, a.box_colour);
-    if (a.window >= 0) s.scene.window = a.window;
-    if (a.no_msaa) s.scene.multisample = false;
-    if (a.bodies) s.scene.layers.bodies = true;
+    apply_render_args(s, a);
     if (a.bench) {
         const viewer::BenchResult r = viewer::bench_headless(s, w, h, a.bench_frames);
         print_bench(out, std::to_string(s.clips.size()) + " clips", r, w, h);

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "metrics/agent_sums.h"
 #include "mobb/util/json_text.h"
 #include "world/planar.h"
 
@@ -183,8 +185,8 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
     m.graph_speed = graph_mean_speed(graph);
     m.walking_speed = graph_walking_speed(graph);
     const double dt = r.dt, run = double(r.frames) * dt;
-    std::uint64_t idle = 0, counted = 0;
-    double speed = 0, time = 0, ratio = 0, time_ratio = 0, c1 = 0, c2 = 0;
+    std::uint64_t idle = 0;
+    AgentSums sums;
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         const AgentTrack& t = r.tracks[a];
         const Samples& s = t.samples;
@@ -194,38 +196,22 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
             if (!r.world.inside(s[f][1], s[f][2])) ++m.samples_outside;
         }
         if (!s.empty() && !r.world.inside(s.back()[1], s.back()[2])) ++m.samples_outside;
-        speed += s.size() > 1 ? length / (double(s.size() - 1) * dt) : 0.0;
-        const std::int64_t reached = arrival(t, goal_radius);
-        const std::int64_t until = reached >= 0 ? reached : std::int64_t(s.size());
-        counted += std::uint64_t(until);
-        m.longest_idle = std::max(m.longest_idle, double(idle_frames(s, until, dt, idle)) * dt);
-        double to_goal = 0;
-        for (std::int64_t f = 0; f < until && std::size_t(f) + 1 < s.size(); ++f) to_goal += step(s, std::size_t(f));
-        if (!t.goals.empty()) ++m.goal_agents;
-        if (reached >= 0) {
-            ++m.reached;
-            m.left += t.left_frame.has_value();
-            time += double(reached) * dt;
-            m.max_time_to_goal = std::max(m.max_time_to_goal, double(reached) * dt);
-            const double straight = straight_length(t);
-            ratio += straight > 0 ? to_goal / straight : 1.0;
-            time_ratio += straight > 0 ? double(reached) * dt * m.walking_speed / straight : 1.0;
-        }
-        const double enabled = reached >= 0 ? double(reached) * dt : run;
-        const auto [energy, acceleration] = effort(s, dt, enabled);
-        c1 += 50.0 * collisions[a] + enabled + energy;
-        c2 += acceleration;
+        AgentOutcome o;
+        o.speed = s.size() > 1 ? length / (double(s.size() - 1) * dt) : 0.0;
+        o.reached = arrival(t, goal_radius);
+        o.counted = o.reached >= 0 ? o.reached : std::int64_t(s.size());
+        o.longest_idle = double(idle_frames(s, o.counted, dt, idle)) * dt;
+        for (std::int64_t f = 0; f < o.counted && std::size_t(f) + 1 < s.size(); ++f)
+            o.to_goal += step(s, std::size_t(f));
+        o.has_goals = !t.goals.empty();
+        o.left = t.left_frame.has_value();
+        if (o.reached >= 0) o.straight = straight_length(t);
+        o.enabled = o.reached >= 0 ? double(o.reached) * dt : run;
+        std::tie(o.energy, o.acceleration) = effort(s, dt, o.enabled);
+        o.collisions = collisions[a];
+        sums.add(o, dt, m);
     }
-    const double n = double(std::max<std::size_t>(1, r.tracks.size()));
-    m.mean_speed = speed / n;
-    m.speed_ratio = m.graph_speed > 0 ? m.mean_speed / m.graph_speed : 0.0;
-    m.idle_share = counted ? double(idle) / double(counted) : 0.0;
-    m.mean_time_to_goal = m.reached ? time / m.reached : 0.0;
-    m.path_ratio = m.reached ? ratio / m.reached : 0.0;
-    m.time_ratio = m.reached ? time_ratio / m.reached : 0.0;
-    m.passed = m.reached == m.goal_agents && m.contacts == 0 && m.obstacle_contacts == 0;
-    m.composite01 = c1 / n;
-    m.composite02 = (c1 + c2) / n;
+    sums.finish(r.tracks.size(), idle, m);
     return m;
 }
 

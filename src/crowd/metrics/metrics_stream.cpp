@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 
+#include "metrics/agent_sums.h"
 #include "world/planar.h"
 
 namespace mobb::crowd {
@@ -196,42 +197,32 @@ CrowdMetrics MetricsStream::finish(std::uint64_t choice_points, std::uint64_t fa
     m.fallbacks = fallbacks;
     m.fallback_share = m.choice_points ? double(m.fallbacks) / double(m.choice_points) : 0.0;
     const double dt = header_.dt, run = double(header_.frames) * dt;
-    std::uint64_t counted = 0;
-    double speed = 0, time = 0, ratio = 0, time_ratio = 0, c1 = 0, c2 = 0;
+    AgentSums sums;
     for (std::size_t a = 0; a < tracks_.size(); ++a) {
         const Track& t = tracks_[a];
         const auto& goals = header_.tracks[a].goals;
-        speed += t.n > 1 ? t.length / (double(t.n - 1) * dt) : 0.0;
-        counted += std::uint64_t(t.reached >= 0 ? t.reached : t.n);
-        m.longest_idle = std::max(m.longest_idle, double(t.longest) * dt);
-        if (!goals.empty()) ++m.goal_agents;
+        AgentOutcome o;
+        o.speed = t.n > 1 ? t.length / (double(t.n - 1) * dt) : 0.0;
+        o.reached = t.reached;
+        o.counted = t.reached >= 0 ? t.reached : t.n;
+        o.longest_idle = double(t.longest) * dt;
+        o.has_goals = !goals.empty();
+        o.left = t.left;
+        o.to_goal = t.to_goal;
         if (t.reached >= 0) {
-            ++m.reached;
-            m.left += t.left;
-            time += double(t.reached) * dt;
-            m.max_time_to_goal = std::max(m.max_time_to_goal, double(t.reached) * dt);
-            double straight = 0, x = t.start[0], y = t.start[1];
+            double x = t.start[0], y = t.start[1];
             for (const auto& g : goals) {
-                straight += planar_distance(g[0] - x, g[1] - y);
+                o.straight += planar_distance(g[0] - x, g[1] - y);
                 x = g[0], y = g[1];
             }
-            ratio += straight > 0 ? t.to_goal / straight : 1.0;
-            time_ratio += straight > 0 ? double(t.reached) * dt * m.walking_speed / straight : 1.0;
         }
-        const double enabled = t.reached >= 0 ? double(t.reached) * dt : run;
-        c1 += 50.0 * t.collisions + enabled + t.energy;
-        c2 += t.acceleration;
+        o.enabled = t.reached >= 0 ? double(t.reached) * dt : run;
+        o.collisions = t.collisions;
+        o.energy = t.energy;
+        o.acceleration = t.acceleration;
+        sums.add(o, dt, m);
     }
-    const double n = double(std::max<std::size_t>(1, tracks_.size()));
-    m.mean_speed = speed / n;
-    m.speed_ratio = m.graph_speed > 0 ? m.mean_speed / m.graph_speed : 0.0;
-    m.idle_share = counted ? double(idle_) / double(counted) : 0.0;
-    m.mean_time_to_goal = m.reached ? time / m.reached : 0.0;
-    m.path_ratio = m.reached ? ratio / m.reached : 0.0;
-    m.time_ratio = m.reached ? time_ratio / m.reached : 0.0;
-    m.passed = m.reached == m.goal_agents && m.contacts == 0 && m.obstacle_contacts == 0;
-    m.composite01 = c1 / n;
-    m.composite02 = (c1 + c2) / n;
+    sums.finish(tracks_.size(), idle_, m);
     return m;
 }
 
