@@ -1,5 +1,6 @@
 // mobb bench ...: the paper's experiments and the performance workloads (src/bench).
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "mobb/crowd/graph/motion_graph.h"
 #include "mobb/crowd/scenario/scenario.h"
 #include "report.h"
+#include "steersuite_cases.h"
 
 namespace mobb::app {
 
@@ -248,6 +250,43 @@ void add_crowd_quality(CLI::App& bench, int& exit_code) {
     });
 }
 
+// The test-case files (*.xml) of `folder`, sorted; InputError when there are none.
+std::vector<std::string> test_case_files(const std::string& folder) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+        if (e.path().extension() == ".xml") out.push_back(e.path().string());
+    if (ec) throw InputError(folder + ": " + ec.message());
+    if (out.empty()) throw InputError(folder + ": no test-case files (*.xml)");
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void add_steersuite(CLI::App& bench, int& exit_code) {
+    auto* cmd = bench.add_subcommand("steersuite",
+                                     "SteerSuite's test cases (a folder of XML), each imported and run with several "
+                                     "seeds, judged per agent and scored with SteerSuite's composites");
+    auto o = std::make_shared<bench::SteerSuiteOptions>();
+    auto outputs = std::make_shared<TableOutputs>();
+    auto folder = std::make_shared<std::string>();
+    cmd->add_option("DIR", *folder, "Folder of test cases (e.g. ../shared/steersuite/testcases)")->required();
+    cmd->add_option("--graph", o->graph, "Motion graph JSON (default: assets/graphs/cmu_locomotion.json)");
+    cmd->add_option("--seeds", o->seeds, "Seeds of every case")->delimiter(',')->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads per run")->check(CLI::Range(1, 1024))->capture_default_str();
+    outputs->add_to(*cmd, "time to goal over the straight line, every run");
+    cmd->callback([=, &exit_code] {
+        exit_code = guarded([&](std::ostream& out) {
+            bench::SteerSuiteOptions opt = *o;
+            if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
+            opt.cases = test_case_files(*folder);
+            const bench::SteerSuiteTable t = bench::run_steersuite(opt, outputs->progress("steersuite"));
+            outputs->emit(
+                bench::steersuite_json(t), [&](const std::string& file) { bench::write_steersuite_png(t, file); },
+                bench::steersuite_markdown(t), out);
+        });
+    });
+}
+
 void add_bench(CLI::App& app, int& exit_code) {
     auto* bench = app.add_subcommand("bench", "The paper's experiments (section 5), every row measured in one run");
     bench->require_subcommand(1);
@@ -257,6 +296,7 @@ void add_bench(CLI::App& app, int& exit_code) {
     add_synth(*bench, exit_code, 120, 10000);
     add_scale(*bench, exit_code);
     add_crowd_quality(*bench, exit_code);
+    add_steersuite(*bench, exit_code);
 }
 
 }  // namespace

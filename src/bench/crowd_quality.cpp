@@ -80,27 +80,6 @@ ScenarioRow run_scenario(const std::shared_ptr<const crowd::MotionGraph>& g, con
             measure_motion(run.record, g, opt, note)};
 }
 
-// A count or a share (printed as a number), or a cost ratio (printed with "x").
-Target at_most(const std::string& what, double goal, double measured, const std::string& detail, bool ratio = false) {
-    Target t;
-    t.what = what;
-    t.goal = goal;
-    t.measured = measured;
-    t.at_most = true;
-    t.ratio = ratio;
-    t.detail = detail;
-    return t;
-}
-
-Target at_least(const std::string& what, double goal, double measured, const std::string& detail) {
-    Target t;
-    t.what = what;
-    t.goal = goal;
-    t.measured = measured;
-    t.detail = detail;
-    return t;
-}
-
 void add_wander_targets(CrowdQualityTable& t, const CrowdQualityOptions& o) {
     double fallbacks = 0, big_fallbacks = 0, unexcused = 0, contacts = 0, outside = 0, speed = 1e300, idle = 0,
            longest = 0, cost = 0;

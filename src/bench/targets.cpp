@@ -36,4 +36,24 @@ std::string target_text(const Target& t) {
     return s + "MISSED (" + fixed(gap, 2) + "x short)";
 }
 
+Target at_most(const std::string& what, double goal, double measured, const std::string& detail, bool ratio) {
+    Target t;
+    t.what = what;
+    t.goal = goal;
+    t.measured = measured;
+    t.at_most = true;
+    t.ratio = ratio;
+    t.detail = detail;
+    return t;
+}
+
+Target at_least(const std::string& what, double goal, double measured, const std::string& detail) {
+    Target t;
+    t.what = what;
+    t.goal = goal;
+    t.measured = measured;
+    t.detail = detail;
+    return t;
+}
+
 }  // namespace mobb::bench

@@ -20,6 +20,12 @@ struct Target {
     bool met() const { return known && (at_most ? measured <= goal : measured >= goal); }
 };
 
+/// A count or a share that must stay at most `goal` (printed as a number), or a cost ratio (`ratio`:
+/// printed with "x").
+Target at_most(const std::string& what, double goal, double measured, const std::string& detail, bool ratio = false);
+/// A count or a share that must reach `goal`.
+Target at_least(const std::string& what, double goal, double measured, const std::string& detail);
+
 /// "circle sweep >= goal x faster than <peer>", measured on the rows' times per query; unknown when a
 /// row is missing.
 Target speed_target(const std::vector<MethodRow>& rows, Method peer, double goal);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "mobb/crowd/sim/crowd.h"
 #include "peak_memory.h"
 #include "report.h"
+#include "steersuite_cases.h"
 #include "workloads.h"
 
 namespace mobb::bench {
@@ -254,6 +256,60 @@ TEST(Bench, ScaleQuickShape) {
         EXPECT_TRUE(row["us_per_query"].is_number());
     }
     EXPECT_NE(scale_markdown(t).find("| agents |"), std::string::npos);
+}
+
+// Two test cases written here in SteerSuite's schema: one agent walking 6 m to its goal (passes), and
+// one whose goal lies inside a closed box of obstacles (never reached), each with two seeds; and a
+// file that is not a test case.
+TEST(Bench, SteerSuiteCasesJudged) {
+    const std::string dir = temp_file("steersuite_cases");
+    std::filesystem::create_directories(dir);
+    const auto write = [&](const std::string& name, const std::string& items) {
+        std::ofstream(dir + "/" + name) << "<SteerBenchTestCase>\n<header> <version>1.0</version> <name>" << name
+                                        << "</name>\n<worldBounds> <xmin>-10</xmin> <xmax>10</xmax> <ymin>0</ymin> "
+                                           "<ymax>0</ymax> <zmin>-10</zmin> <zmax>10</zmax> </worldBounds> </header>\n"
+                                        << items << "</SteerBenchTestCase>\n";
+    };
+    const auto agent = [](double goal_x, double goal_z) {
+        return "<agent> <initialConditions> <radius>0.5</radius> <position> <x>-3</x> <y>0</y> <z>0</z> "
+               "</position> <direction> <x>1</x> <y>0</y> <z>0</z> </direction> <speed>0</speed> "
+               "</initialConditions> <goalSequence> <seekStaticTarget> <targetLocation> <x>" +
+               std::to_string(goal_x) + "</x> <y>0</y> <z>" + std::to_string(goal_z) +
+               "</z> </targetLocation> <desiredSpeed>1.3</desiredSpeed> <timeDuration>1000</timeDuration> "
+               "</seekStaticTarget> </goalSequence> </agent>\n";
+    };
+    const auto box = [](double x0, double x1, double z0, double z1) {
+        return "<obstacle> <xmin>" + std::to_string(x0) + "</xmin> <xmax>" + std::to_string(x1) +
+               "</xmax> <ymin>0</ymin> <ymax>1</ymax> <zmin>" + std::to_string(z0) + "</zmin> <zmax>" +
+               std::to_string(z1) + "</zmax> </obstacle>\n";
+    };
+    write("a_open.xml", agent(3, 0));
+    write("b_boxed.xml",
+          agent(6, 6) + box(4, 8, 3.5, 4) + box(4, 8, 8, 8.5) + box(3.5, 4, 3.5, 8.5) + box(8, 8.5, 3.5, 8.5));
+    std::ofstream(dir + "/c_broken.xml") << "<SteerBenchTestCase>\n";
+    SteerSuiteOptions o;
+    o.graph = kGraph;
+    o.cases = {dir + "/a_open.xml", dir + "/b_boxed.xml", dir + "/c_broken.xml"};
+    o.seeds = {1, 2};
+    const SteerSuiteTable t = run_steersuite(o);
+    ASSERT_EQ(t.rows.size(), 6u);
+    for (int k : {0, 1}) {
+        EXPECT_TRUE(t.rows[std::size_t(k)].verdict.passed) << t.rows[std::size_t(k)].verdict.reason;
+        EXPECT_EQ(t.rows[std::size_t(k)].agents, 1);
+        EXPECT_GT(t.rows[std::size_t(k)].metrics.time_ratio, 0.5);
+    }
+    for (int k : {2, 3}) {
+        EXPECT_EQ(t.rows[std::size_t(k)].verdict.never, 1);
+        EXPECT_EQ(t.rows[std::size_t(k)].metrics.contacts, 0u);
+    }
+    for (int k : {4, 5}) EXPECT_NE(t.rows[std::size_t(k)].error.find("c_broken.xml"), std::string::npos);
+    EXPECT_EQ(t.cases, 3);
+    EXPECT_EQ(t.cases_passed, 1);
+    const nlohmann::json j = nlohmann::json::parse(steersuite_json(t));
+    EXPECT_EQ(j["cases_passed"], 1);
+    EXPECT_EQ(j["rows"][2]["judge"]["never"], 1);
+    EXPECT_NE(steersuite_markdown(t).find("1 of 3 cases pass on every seed"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace
