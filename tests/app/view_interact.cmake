@@ -5,7 +5,7 @@
 #   EXPECT    KEY.PATH=VALUE (the value starts with VALUE) or KEY.PATH#=N (an array of N) on the
 #             last run's saved scene
 #   EXPECT_INI  lines the settings file must hold after the last run
-# Lists come with commas between items. Skips (77) without the mocap data.
+# Lists come with commas between items. Skipped without the mocap data (require_data.cmake).
 cmake_minimum_required(VERSION 3.19)
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 foreach(list IN ITEMS ACTIONS ACTIONS2 EXPECT EXPECT_INI)  # passed with commas between items

@@ -1,6 +1,6 @@
 # Real key presses (xdotool) in a real window (xvfb-run) on SCENE: each of KEYS must change the
 # window's screenshot from the one taken with no key pressed (png_check --differs-from).
-# Skips (77) without the mocap data.
+# Skipped without the mocap data (require_data.cmake).
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 file(MAKE_DIRECTORY ${OUTDIR})
 function(shot name key)

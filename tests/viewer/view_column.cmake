@@ -1,7 +1,7 @@
 # Collapsing a panel column in a real window (xvfb-run, xdotool): the default scene at 1280x720 shot with
 # no key, then with KEY held (`[`: the left column collapses). Where the column stood the 3D view's
 # background must show afterwards (column_check on RECT), and the settings file must keep the collapse.
-# Skips (77) without the mocap data.
+# Skipped without the mocap data (require_data.cmake).
 cmake_minimum_required(VERSION 3.19)
 include(${REQUIRE_DATA})
 file(MAKE_DIRECTORY ${OUTDIR})
