@@ -20,7 +20,9 @@ set(ENV{XDG_CONFIG_HOME} ${dir}/config)  # a fresh settings folder
 function(run index actions)
   set(png ${dir}/run${index}.png)
   set(state ${dir}/run${index}.json)
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${DRIVER} ${MOBB} ${SCENE} ${png} ${state} ${actions}
+  # -noreset: see x11_window.sh.
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24 -noreset"
+                          ${DRIVER} ${MOBB} ${SCENE} ${png} ${state} ${actions}
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS ${state})
     message(FATAL_ERROR "run ${index} (${actions}) exited ${code}\nstdout: ${out}\nstderr: ${err}")

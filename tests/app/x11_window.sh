@@ -1,7 +1,10 @@
 # Sourced by the window test drivers under xvfb-run: waiting for the display and for `mobb view`'s window
 # by asking the X server (never a fixed sleep), focusing it, and quitting it. Each wait gives up after 60 s.
+# The tests start Xvfb with -noreset: an X server resets when its last client leaves and refuses the clients
+# that connect meanwhile ("Can't open display", GLFW "Failed to open display"), as mobb view would after
+# wait_display's xdotool left, or xdotool after a client of mobb view's left.
 
-# Waits until the X server on $DISPLAY answers (xvfb-run may hand over before it accepts clients).
+# Waits until the X server on $DISPLAY answers.
 wait_display() {
   local deadline=$((SECONDS + 60))
   until xdotool getdisplaygeometry >/dev/null 2>&1; do

@@ -10,7 +10,9 @@ function(shot name key)
   file(REMOVE ${png})
   set(ENV{XDG_CONFIG_HOME} ${OUTDIR}/config_column_${name})  # fresh settings: the default layout
   file(REMOVE_RECURSE $ENV{XDG_CONFIG_HOME})
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
+  # -noreset: see tests/app/x11_window.sh.
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24 -noreset"
+                          ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS ${png})
     message(FATAL_ERROR "mobb view with key '${key}' exited ${code}\nstdout: ${out}\nstderr: ${err}")
