@@ -1,6 +1,6 @@
 # Runs COMMAND and checks its exit code is EXPECT; a failing command must leave no file at OUT, and bad
 # input (EXPECT 1) nothing on stdout and one line on stderr, holding the text MATCH when given.
-# With DATA set, skips (exit 77) unless DATA/cmu holds the mocap clips (fails if MOBB_REQUIRE_DATA=1).
+# With DATA set, skipped unless DATA/cmu holds the mocap clips (require_data.cmake; fails if MOBB_REQUIRE_DATA=1).
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 file(REMOVE ${OUT})
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

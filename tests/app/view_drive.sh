@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Run inside xvfb-run: opens `mobb view SCENE` in a real 1280x720 window, sends real input events
-# (xdotool) once it is up, then quits with Q; the window saves a screenshot and the scene as it was left.
+# Run inside xvfb-run: opens `mobb view SCENE` in a real 1280x720 window once the display answers, sends
+# real input events (xdotool) once the window has placed its panels, then quits with Q; the window saves a
+# screenshot and the scene as it was left.
 # Usage: view_drive.sh MOBB SCENE OUT.png STATE.json [ACTION...]
 # Actions: key:NAME (an xdotool key name, held 0.15 s: imgui 1.86 misses a press and release within one
 # frame, and 0.15 s is under its repeat delay), click:X:Y (window pixels), type:TEXT, wait:SECONDS.
@@ -9,10 +10,12 @@ set -euo pipefail
 source "$(dirname "$0")/x11_window.sh"
 mobb=$1 scene=$2 out=$3 state=$4
 shift 4
+wait_display
 "$mobb" view "$scene" --frames 100000 --screenshot "$out" --save-state "$state" --width 1280 --height 720 &
 pid=$!
-window=$(find_window)
-wait_placed
+trap 'kill "$pid" 2>/dev/null || true' EXIT  # no window left behind when a step fails
+window=$(find_window "$pid")
+wait_placed "$pid"
 focus "$window"
 xdotool mousemove --window "$window" 640 700
 for action in "$@"; do
@@ -27,5 +30,5 @@ for action in "$@"; do
   esac
   sleep 0.8  # a frame or more: llvmpipe under load draws a few frames a second
 done
-xdotool mousemove --window "$window" 640 700 keydown q; sleep 0.15; xdotool keyup q
-wait "$pid"
+xdotool mousemove --window "$window" 640 700
+quit "$pid"

@@ -5,7 +5,7 @@
 #   EXPECT    KEY.PATH=VALUE (the value starts with VALUE) or KEY.PATH#=N (an array of N) on the
 #             last run's saved scene
 #   EXPECT_INI  lines the settings file must hold after the last run
-# Lists come with commas between items. Skips (77) without the mocap data.
+# Lists come with commas between items. Skipped without the mocap data (require_data.cmake).
 cmake_minimum_required(VERSION 3.19)
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 foreach(list IN ITEMS ACTIONS ACTIONS2 EXPECT EXPECT_INI)  # passed with commas between items
@@ -20,7 +20,9 @@ set(ENV{XDG_CONFIG_HOME} ${dir}/config)  # a fresh settings folder
 function(run index actions)
   set(png ${dir}/run${index}.png)
   set(state ${dir}/run${index}.json)
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${DRIVER} ${MOBB} ${SCENE} ${png} ${state} ${actions}
+  # -noreset: see x11_window.sh.
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24 -noreset"
+                          ${DRIVER} ${MOBB} ${SCENE} ${png} ${state} ${actions}
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS ${state})
     message(FATAL_ERROR "run ${index} (${actions}) exited ${code}\nstdout: ${out}\nstderr: ${err}")

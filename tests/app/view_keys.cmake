@@ -1,6 +1,6 @@
 # Real key presses (xdotool) in a real window (xvfb-run) on SCENE: each of KEYS must change the
 # window's screenshot from the one taken with no key pressed (png_check --differs-from).
-# Skips (77) without the mocap data.
+# Skipped without the mocap data (require_data.cmake).
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 file(MAKE_DIRECTORY ${OUTDIR})
 function(shot name key)
@@ -9,7 +9,9 @@ function(shot name key)
   # A fresh settings folder per run: a camera kept from an earlier run would change the picture.
   set(ENV{XDG_CONFIG_HOME} ${OUTDIR}/config_key_${name})
   file(REMOVE_RECURSE $ENV{XDG_CONFIG_HOME})
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
+  # -noreset: see x11_window.sh.
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24 -noreset"
+                          ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS ${png})
     message(FATAL_ERROR "mobb view with key '${key}' exited ${code}\nstdout: ${out}\nstderr: ${err}")

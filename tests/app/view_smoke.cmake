@@ -1,11 +1,13 @@
-# mobb view SCENE --frames 30 --screenshot OUT under xvfb-run; skips (77) without the mocap data.
+# mobb view SCENE --frames 30 --screenshot OUT under xvfb-run, once the display answers (x11_run.sh);
+# skipped without the mocap data (require_data.cmake).
 include(${CMAKE_CURRENT_LIST_DIR}/require_data.cmake)
 file(REMOVE ${OUT})
 if(NOT DEFINED VIEW_ARGS)
   set(VIEW_ARGS ${SCENE})
 endif()
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${MOBB} view ${VIEW_ARGS} --frames 30 --screenshot ${OUT}
-                        --width 1024 --height 640
+# -noreset: see x11_window.sh.
+execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24 -noreset" ${CMAKE_CURRENT_LIST_DIR}/x11_run.sh
+                        ${MOBB} view ${VIEW_ARGS} --frames 30 --screenshot ${OUT} --width 1024 --height 640
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("exit ${code}\nstdout: ${out}\nstderr: ${err}")
 if(NOT code EQUAL 0)

@@ -1,7 +1,7 @@
 # Collapsing a panel column in a real window (xvfb-run, xdotool): the default scene at 1280x720 shot with
 # no key, then with KEY held (`[`: the left column collapses). Where the column stood the 3D view's
 # background must show afterwards (column_check on RECT), and the settings file must keep the collapse.
-# Skips (77) without the mocap data.
+# Skipped without the mocap data (require_data.cmake).
 cmake_minimum_required(VERSION 3.19)
 include(${REQUIRE_DATA})
 file(MAKE_DIRECTORY ${OUTDIR})
@@ -10,7 +10,9 @@ function(shot name key)
   file(REMOVE ${png})
   set(ENV{XDG_CONFIG_HOME} ${OUTDIR}/config_column_${name})  # fresh settings: the default layout
   file(REMOVE_RECURSE $ENV{XDG_CONFIG_HOME})
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
+  # -noreset: see tests/app/x11_window.sh.
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24 -noreset"
+                          ${DRIVER} ${MOBB} ${SCENE} ${png} 100000 ${key}
                   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0 OR NOT EXISTS ${png})
     message(FATAL_ERROR "mobb view with key '${key}' exited ${code}\nstdout: ${out}\nstderr: ${err}")

@@ -104,12 +104,13 @@ bool is_clip_file(const std::string& file);
 /// Returned as an absolute, normalised path.
 std::string data_dir();
 
-/// A data file's path: absolute names as given, relative ones under data_dir(). Throws LoadError
-/// "FILE: no data folder (...)" when the name is relative and there is no data folder.
+/// A data file's path: absolute names as given, relative ones under data_dir(); with no data folder, the
+/// copy shipped in the repository's assets/mocap (the default scene's two walks) when there is one. Throws
+/// LoadError "FILE: no data folder (...)" when the name is relative, there is no data folder and no copy.
 std::string resolve_data_file(const std::string& file);
 
-/// The inverse, for files that name data: the path relative to data_dir() when the file lies inside it
-/// (symbolic links resolved), else the name as given.
+/// The inverse, for files that name data: the path relative to data_dir() (with no data folder, to
+/// assets/mocap) when the file lies inside it (symbolic links resolved), else the name as given.
 std::string data_relative(const std::string& file);
 
 }  // namespace mobb::io
