@@ -41,7 +41,7 @@ void add_import(CLI::App& group, int& exit_code) {
             const crowd::ImportedScenario imported = crowd::import_steersuite(*file, room, *o);
             for (const std::string& n : imported.notes) std::cerr << "note: " << n << "\n";
             const crowd::Scenario& s = imported.scenario;
-            if (s.agents.empty())
+            if (s.agents.empty() && imported.case_agents > 0)
                 throw InputError(*file + ": no agent mobb can run is left (see the notes): nothing written");
             const std::string text = crowd::scenario_json(s);
             crowd::parse_scenario(nlohmann::json::parse(text), *out_file);  // what mobb crowd reads, or no file

@@ -1,6 +1,6 @@
 // mobb scenario import as a user meets it: a SteerSuite test case (written here in SteerSuite's schema)
 // becomes a scenario file that `mobb crowd --scenario` runs; what mobb cannot do goes to stderr; bad input
-// is one error line with nothing on stdout and no file written.
+// is one error line with nothing on stdout and no file written; a test case with no agent is a map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,7 +19,7 @@ using test::temp_file;
 
 const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
 
-// Two agents that swap sides past a pillar, and one that starts against it (left out with a note).
+// Two agents that swap sides past a pillar, and one that starts against it (moved clear of it, with a note).
 const char* kCase = R"(<SteerBenchTestCase xmlns="http://www.magix.ucla.edu/steerbench">
   <header>
     <version>1.0</version>
@@ -65,16 +65,20 @@ TEST(ScenarioCli, ImportThenCrowdRunsIt) {
     const Result r =
         test::run_mobb("scenario import " + xml + " --out " + json + " --seed 2 --time-limit 4 --graph " + kGraph);
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_EQ(r.out, json + ": scenario swap, 2 agents, 1 obstacle, 16 x 12 m, time limit 4 s\n");
-    EXPECT_NE(r.err.find("note: " + xml + ":24: agent: starts 0.5 m from a wall or an obstacle"), std::string::npos)
+    EXPECT_EQ(r.out, json + ": scenario swap, 3 agents, 1 obstacle, 16 x 12 m, time limit 4 s\n");
+    EXPECT_NE(r.err.find("note: " + xml +
+                         ":24: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.98 m to turn on "
+                         "the spot: moved 0.48 m to (0, -1.48), the nearest place with room\n"),
+              std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("note: " + xml + ": speeds of 0 to 1.3 m/s ignored"), std::string::npos) << r.err;
     const crowd::Scenario s = crowd::load_scenario(json);
-    EXPECT_EQ(s.agents.size(), 2u);
+    ASSERT_EQ(s.agents.size(), 3u);
+    EXPECT_EQ(s.agents[2].start.y, -1.48);
     EXPECT_EQ(s.time_limit, 4);
     const Result run = test::run_mobb("crowd --quiet --graph " + kGraph + " --scenario " + json);
     ASSERT_EQ(run.code, 0) << run.err;
-    EXPECT_EQ(run.out.rfind("scenario swap: 2 agents, 16 x 12 m, 4 s", 0), 0u) << run.out;
+    EXPECT_EQ(run.out.rfind("scenario swap: 3 agents, 16 x 12 m, 4 s", 0), 0u) << run.out;
     std::remove(xml.c_str());
     std::remove(json.c_str());
 }
@@ -84,7 +88,7 @@ TEST(ScenarioCli, DefaultGraph) {
     const std::string xml = write("swap2.xml", kCase), json = temp_file("swap2.json");
     const Result r = test::run_mobb("scenario import " + xml + " --out " + json);
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_EQ(crowd::load_scenario(json).agents.size(), 2u);
+    EXPECT_EQ(crowd::load_scenario(json).agents.size(), 3u);
     std::remove(xml.c_str());
     std::remove(json.c_str());
 }
@@ -114,23 +118,51 @@ TEST(ScenarioCli, BadInputIsOneLineAndNoFile) {
     std::remove(text.c_str());
 }
 
-// Every agent left out (here: each starts against the pillar or outside the world): the notes say why, and
-// no file is written that `mobb crowd` would refuse.
+// Every agent left out (here: each starts outside SteerSuite's own ground, which the world becomes): the
+// notes say why, and no file is written that `mobb crowd` would refuse.
 TEST(ScenarioCli, NoAgentLeftWritesNothing) {
     std::string text = kCase;
-    for (const char* from : {"<x>-5</x> <y>0</y> <z>0</z>", "<x>5</x> <y>0</y> <z>1.5</z>"})
-        text.replace(text.find(from), std::string(from).size(), "<x>50</x> <y>0</y> <z>0</z>");
+    for (const char* from :
+         {"<x>-5</x> <y>0</y> <z>0</z>", "<x>5</x> <y>0</y> <z>1.5</z>", "<x>0</x> <y>0</y> <z>-1</z>"})
+        text.replace(text.find(from), std::string(from).size(), "<x>150</x> <y>0</y> <z>0</z>");
     const std::string xml = write("nobody.xml", text), json = temp_file("nobody.json");
     std::remove(json.c_str());
     const Result r = test::run_mobb("scenario import " + xml + " --out " + json + " --graph " + kGraph);
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.out, "");
-    EXPECT_NE(r.err.find("note: " + xml + ":8: agent: starts outside the world: left out\n"), std::string::npos)
+    EXPECT_NE(r.err.find("note: " + xml +
+                         ":8: agent: starts outside the world, and no place within 1 m has room: left "
+                         "out\n"),
+              std::string::npos)
         << r.err;
     const std::string last = "error: " + xml + ": no agent mobb can run is left (see the notes): nothing written\n";
     EXPECT_EQ(r.err.substr(r.err.size() - std::min(r.err.size(), last.size())), last) << r.err;
     EXPECT_FALSE(std::ifstream(json).good());
     std::remove(xml.c_str());
+}
+
+// A test case with no agent (SteerSuite's BigGameHunters is a map of walls) is written as its world alone;
+// `mobb crowd` then says in one line that it has nothing to run.
+TEST(ScenarioCli, MapWithoutAgents) {
+    std::string text = kCase;
+    text.erase(text.find("  <agent>"), text.rfind("</agent>") + 9 - text.find("  <agent>"));
+    const std::string xml = write("map.xml", text), json = temp_file("map.json");
+    const Result r = test::run_mobb("scenario import " + xml + " --out " + json + " --graph " + kGraph);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out, json + ": scenario swap, 0 agents, 1 obstacle, 16 x 12 m, time limit 20 s\n");
+    EXPECT_NE(r.err.find("note: " + xml + ": the test case has no agent: the scenario is its world alone, a map"),
+              std::string::npos)
+        << r.err;
+    const crowd::Scenario s = crowd::load_scenario(json);
+    EXPECT_TRUE(s.agents.empty());
+    EXPECT_EQ(s.world.obstacles.size(), 1u);
+    const Result run = test::run_mobb("crowd --quiet --graph " + kGraph + " --scenario " + json);
+    EXPECT_EQ(run.code, 1);
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(run.err.rfind("error: " + json + ": ", 0), 0u) << run.err;
+    std::remove(xml.c_str());
+    std::remove(json.c_str());
 }
 
 }  // namespace

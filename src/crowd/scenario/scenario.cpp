@@ -165,8 +165,8 @@ Scenario parse_scenario(const json& j, const std::string& where) {
     }
     if (!j.contains("time_limit")) fail(where, "needs \"time_limit\" (seconds)");
     s.time_limit = time_limit(j["time_limit"], where + ".time_limit");
-    if (!j.contains("agents") || !j["agents"].is_array() || j["agents"].empty())
-        fail(where, "needs \"agents\": a non-empty array");
+    if (!j.contains("agents") || !j["agents"].is_array())
+        fail(where, "needs \"agents\": an array (empty: a map, its world alone)");
     if (j.contains("at_goal")) s.at_goal = at_goal(j["at_goal"], where + ".at_goal");
     for (std::size_t k = 0; k < j["agents"].size(); ++k)
         s.agents.push_back(agent(j["agents"][k], s.world, s.at_goal, where + ".agents[" + std::to_string(k) + "]"));

@@ -10,8 +10,10 @@
 //    "time_limit": s, "at_goal": "stay" | "leave",
 //    "agents": [ {"start": [x, y], "heading": deg, "start_time": s,
 //                 "goal": [x, y] | "goals": [[x, y], ...], "at_goal": "stay" | "leave"}, ... ]}
-// "walls", "obstacles", "start_time", "description" and "at_goal" may be left out; "heading" defaults to
-// facing the (first) goal. "goals" are reached in turn (SteerSuite's goalSequence of static targets).
+// "agents" may be empty: a map, its world alone (a SteerSuite test case with no agent); `mobb crowd` needs
+// at least one to run it. "walls", "obstacles", "start_time", "description" and "at_goal" may be left
+// out; "heading" defaults to facing the (first) goal. "goals" are reached in turn (SteerSuite's
+// goalSequence of static targets).
 // "at_goal" (the scenario's for every agent, an agent's for itself; "stay" when left out): at its last
 // goal an agent stands for good, within the goal radius to the end of the run ("stay"), or leaves the run
 // - an exit, a door - its track ending there and its ground free ("leave", SteerSuite's semantics).

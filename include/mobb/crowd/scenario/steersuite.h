@@ -1,22 +1,34 @@
 // SteerSuite test cases as mobb scenarios (`mobb scenario import FILE.xml --out F.json`).
 //
-// SteerSuite's test cases (repository SteerSuite/Release, testcases/*.xml, schema TestCaseSchema.xsd) are
-// XML: <SteerBenchTestCase> holds a <header> (version, name, worldBounds), then <obstacle> boxes,
-// <obstacleRegion>s of random square obstacles, <agent>s with their <initialConditions> and a
-// <goalSequence>, and <agentRegion>s of agents at random positions. SteerSuite is Y-up: its ground
-// (x, z) is mobb's (x, y), and heights (y) are dropped. Units are metres and seconds in both; a direction
-// (x, z) becomes the heading atan2(z, x) (radians in AgentSpec, degrees in the JSON), none faces the goal.
-// Coordinates are kept to a micrometre; random ones (agentRegion starts, <random> positions, directions
-// and goals, obstacleRegion squares) come from ImportOptions::seed, to a centimetre and a tenth of a degree.
+// SteerSuite's test cases (repository SteerSuite/Release, testcases/*.xml, read by its TestCaseReader) are
+// XML: <SteerBenchTestCase> holds a <header> (version, name, worldBounds), then obstacles - <obstacle>
+// boxes, <obstacleRegion>s of random squares, <circleObstacle>s, <orientedBoxObstacle>s,
+// <orientedWallObstacle>s (a wall with a door), <polygonObstacle>s - and agents: <agent>s with their
+// <initialConditions> and a <goalSequence>, <agentRegion>s of agents at random positions, and
+// <agentEmitter>s. SteerSuite is Y-up: its ground (x, z) is mobb's (x, y), and heights (y) are dropped.
+// Units are metres and seconds in both; a direction (x, z) becomes the heading atan2(z, x) (radians in
+// AgentSpec, degrees in the JSON), none faces the goal. Coordinates are kept to a micrometre; random ones
+// (agentRegion starts, <random> positions, directions and goals, obstacleRegion squares) come from
+// ImportOptions::seed, to a centimetre and a tenth of a degree.
+//
+// What SteerSuite's reader takes, this takes: a comment before the XML declaration, and bounds whose
+// minimum is above their maximum (swapped). The world is the header's bounds when they hold every position
+// the file gives, else SteerSuite's own ground (x and z from -100 to 100, its simulation grid). A circle
+// becomes the regular polygon around it with the fewest sides (8 to 256) whose corners lie within 1 cm of
+// it, an oriented box its turned rectangle; every shape is clipped to the world.
 //
 // What a mobb agent cannot do is not refused but reported, one line per finding (ImportedScenario::notes),
-// and left out of the scenario where it would stop `mobb crowd` from running it: an agent starting
-// within AgentRoom::wall_clearance of a wall or an obstacle, or within 2 x AgentRoom::hold_radius of an
-// agent kept before it. Reported and kept: gaps narrower than AgentRoom::walk_width, speeds and radii
-// (mobb's agents walk at their clips' speeds with their clips' disks), goal types mobb has not (the agent
-// is left out when no seekStaticTarget remains), and - when agents stay at their goals - goals two agents
-// share. A goalSequence's static targets become the agent's "goals", reached in turn; at the last the
-// agents leave the run, as SteerSuite's do (ImportOptions::at_goal).
+// and mapped as closely as mobb allows. A start given in the file within AgentRoom::wall_clearance of a
+// wall or an obstacle, or within 2 x AgentRoom::hold_radius of an agent kept before it, moves to the
+// nearest place within 1 m (the crowd's goal radius) where it fits, else the agent is left out. Goals:
+// seekStaticTargets become the agent's "goals", reached in turn, as does the targetLocation of a
+// seekAxisAlignedBoxRegion; a sequence that ends idle stands at its last goal (at_goal stay); goals with
+// no counterpart (flee, dynamic targets, flows) are dropped, and an agent left with none stands at its
+// start. An agentEmitter gives its first agent only (mobb's agents hold their start from the first frame).
+// At its last goal an agent leaves the run, as SteerSuite's do (ImportOptions::at_goal). Reported and
+// kept: gaps narrower than AgentRoom::walk_width, speeds and radii (mobb's agents walk at their clips'
+// speeds with their clips' disks), steering behaviours named per goal and - for agents that stay at their
+// goals - goals two agents share.
 #pragma once
 #include <cstdint>
 #include <stdexcept>
@@ -69,10 +81,13 @@ struct ImportedScenario {
     Scenario scenario;
     /// One line each, no newline: what could not be mapped and what was done instead.
     std::vector<std::string> notes;
+    /// The agents the test case holds (a region's count, one per agent and emitter): 0 for a map, whose
+    /// scenario is its world alone.
+    int case_agents = 0;
 };
 
 /// Reads a SteerSuite test case. Throws SteerSuiteError on bad input. The scenario may be left with no agent
-/// (the notes say why; load_scenario would refuse it). The same file, room and options give the same
+/// (a map, or every agent left out: the notes say why). The same file, room and options give the same
 /// scenario, ready for scenario_json().
 ImportedScenario import_steersuite(const std::string& file, const AgentRoom& room, const ImportOptions& options = {});
 
