@@ -311,7 +311,9 @@ Raises IndexError for a row past choice_count.)")
         R"(Opens a crowd record file, `mobb crowd --record` (.json, or HDF5 for .h5 / .hdf5), for reading in
 parts: returns a mobb.Record. An incomplete HDF5 record (its writing stopped: killed, a full disk) opens up
 to its last mark, with a warning. Raises ValueError "FILE: PLACE: message" for a file that cannot be read,
-as `mobb record convert` says it.)");
+as `mobb record convert` says it; a JSON record, read whole, whose reading would need more memory than
+MOBB_JSON_RECORD_MB megabytes (default 2 GB) is refused before it is parsed, the error naming the memory
+and the limit.)");
     m.def("read_record", &read_record, py::arg("file"), py::arg("first") = 0, py::arg("last") = py::none(),
           py::arg("agents") = py::none(),
           R"(Reads frames first .. last - 1 (clamped to the run; last None: to the end) of agents agents[0] ..
@@ -324,7 +326,8 @@ frames first, first + 1, ..., NaN from the frame an agent left the run on; of an
 (its writing stopped: killed, a full disk) the frames up to its last mark, with a warning saying so; first
 (the window's first frame), agent_first (its first agent), dt (seconds per frame), frames and agents (the
 run's), summary and metrics (dicts, as `mobb crowd` stores them; empty when the file has none). Raises
-ValueError "FILE: PLACE: message" for a file that cannot be read, as `mobb record convert` says it.)");
+ValueError "FILE: PLACE: message" for a file that cannot be read, as `mobb record convert` says it, and
+for a JSON record past the memory limit as mobb.open_record does.)");
 }
 
 }  // namespace mobb::python

@@ -156,3 +156,19 @@ def test_open_record_refuses_a_cut_file_in_one_line(tmp_path, long_records):
     with pytest.raises(ValueError, match="cut.h5: ") as e:
         mobb.open_record(str(cut))
     assert "\n" not in str(e.value)
+
+
+def test_a_json_record_past_the_memory_limit_is_refused(monkeypatch, records):
+    # A JSON record is read whole: past MOBB_JSON_RECORD_MB (a small limit here; 2 GB unless set) it is
+    # refused before it is parsed, in one line naming the file, the memory it would need and the limit; an
+    # HDF5 record is read in parts and not limited.
+    monkeypatch.setenv("MOBB_JSON_RECORD_MB", "0.01")
+    for read in (mobb.open_record, mobb.read_record):
+        with pytest.raises(ValueError) as e:
+            read(str(records["json"]))
+        message = str(e.value)
+        assert message.startswith(str(records["json"]) + ": reading this JSON record") and "\n" not in message
+        assert "over the limit of 0.01 MB (MOBB_JSON_RECORD_MB)" in message and "mobb record convert" in message
+        assert read(str(records["h5"])) is not None
+    monkeypatch.setenv("MOBB_JSON_RECORD_MB", "100")
+    assert mobb.open_record(str(records["json"])).agents == 10

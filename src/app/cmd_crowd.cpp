@@ -1,4 +1,5 @@
 // mobb graph build / crowd: the crowd layer's subcommands (src/crowd).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -198,12 +199,28 @@ crowd::CrowdOptions run_options(const CrowdArgs& a, const crowd::Scenario& s) {
     return opt;
 }
 
+// A JSON record is held whole and written at the end of the run (record_file.h): one that would need more
+// memory than the limit is refused before the run, from the choice points the simulation expects - one per
+// agent per clip, the graph's clips of their mean length - and no file is written.
+void check_json_record(const std::string& record, const crowd::CrowdOptions& opt, const crowd::MotionGraph& g) {
+    std::size_t samples = 0;
+    for (const crowd::GraphClip& c : g.clips) samples += c.path.size();
+    const double clip_frames = std::max(1.0, double(samples) / double(std::max<std::size_t>(1, g.clips.size())));
+    const std::int64_t frames = std::max<std::int64_t>(1, std::llround(opt.seconds / g.dt()));
+    const auto agents = std::uint64_t(opt.agents);
+    const auto choices = std::uint64_t(double(agents) * (double(frames) / clip_frames + 1));
+    crowd::check_json_record_write(
+        record, crowd::expected_json_record(agents, frames, choices, crowd::to_string(opt.select), opt.record_queries));
+}
+
 void run_crowd_command(const CrowdArgs& a, std::ostream& out) {
     crowd::Scenario s;
     if (!a.scenario.empty()) s = crowd::load_scenario(a.scenario);
     crowd::CrowdOptions opt = run_options(a, s);
     const std::string file = a.graph.empty() ? crowd::default_graph_file() : a.graph;
     const crowd::MotionGraph g = crowd::load_graph(file);
+    const bool at_end = !a.record.empty() && !crowd::is_h5_record(a.record);
+    if (at_end) check_json_record(a.record, opt, g);
     // The fastest exact query unless a tree is asked for (its counters then fill the summary).
     const bool trees = a.cmd->count("--tree") || a.cmd->count("--nmin") || a.cmd->count("--fit");
     const crowd::NarrowPhase narrow =
@@ -211,7 +228,6 @@ void run_crowd_command(const CrowdArgs& a, std::ostream& out) {
     // An HDF5 record streams as the run goes; a JSON one (small runs) is written at the end. Without a
     // record the run streams to nowhere, keeping only its summary and metrics (memory stays flat) -
     // unless its motion is measured, which poses the clips the run keeps (kMotionAgents at most).
-    const bool at_end = !a.record.empty() && !crowd::is_h5_record(a.record);
     const bool motion = !a.no_motion && (at_end || (a.record.empty() && opt.agents <= kMotionAgents));
     crowd::RecordSink nowhere;
     std::unique_ptr<crowd::H5RecordWriter> writer;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <utility>
 
@@ -183,6 +184,42 @@ TEST(CrowdCli, CandidatesOnlyWhenAsked) {
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err, "crowd: --record-candidates and --no-record-candidates go with --record\n");
     for (const std::string& f : {json, bare, h5, back}) std::remove(f.c_str());
+}
+
+// One line on stderr, starting "error: FILE: " and holding `part`; exit 1, nothing on stdout.
+void expect_refused(const Result& r, const std::string& file, const std::string& part) {
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(r.err.rfind("error: " + file + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// A JSON record is held whole: one that would need more memory than MOBB_JSON_RECORD_MB (1 MB here; 2 GB
+// unless set) is refused before the run - exit 1, one line naming the file, no file - and before it is
+// read, by `record convert` and `render`; an HDF5 record streams and is not limited. 10 agents x 30 s: some
+// 1 MB of JSON, estimated at 8 MB of memory to write.
+TEST(CrowdCli, AJsonRecordPastTheMemoryLimitIsRefused) {
+    const std::string json = temp_file("big.json"), h5 = temp_file("big.h5"), back = temp_file("big_back.json"),
+                      png = temp_file("big.png");
+    const std::string args = "crowd --quiet --no-motion --graph " + kGraph + " --agents 10 --seconds 30 --world 20x20 ";
+    ::setenv("MOBB_JSON_RECORD_MB", "1", 1);
+    expect_refused(run(args + "--record " + json), json, "(MOBB_JSON_RECORD_MB); record to .h5 instead");
+    EXPECT_FALSE(std::ifstream(json).good());
+    ASSERT_EQ(run(args + "--record " + h5).code, 0);
+    expect_refused(run("record convert " + h5 + " " + back), back, "record to .h5 instead");
+    EXPECT_FALSE(std::ifstream(back).good());
+    ::setenv("MOBB_JSON_RECORD_MB", "100", 1);
+    ASSERT_EQ(run("record convert " + h5 + " " + json).code, 0);
+    ::setenv("MOBB_JSON_RECORD_MB", "1", 1);
+    const std::string convert = "mobb record convert " + json + " ";
+    expect_refused(run("record convert " + json + " " + back), json, convert);
+    expect_refused(run("render --crowd " + json + " --width 64 --height 64 --out " + png), json, convert);
+    EXPECT_FALSE(std::ifstream(png).good());
+    ::setenv("MOBB_JSON_RECORD_MB", "a lot", 1);
+    expect_refused(run(args + "--record " + json), "MOBB_JSON_RECORD_MB", "expected a positive number");
+    ::unsetenv("MOBB_JSON_RECORD_MB");
+    for (const std::string& f : {json, h5, back, png}) std::remove(f.c_str());
 }
 
 TEST(CrowdCli, ScenarioRunsToItsGoals) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -497,6 +498,9 @@ std::string stored_summary(const nlohmann::ordered_json& j) {
 RecordFile read_json_record(const std::string& file) {
     std::ifstream in(file);
     if (!in) throw std::runtime_error(file + ": cannot open");
+    std::error_code size_error;
+    const std::uintmax_t bytes = std::filesystem::file_size(file, size_error);
+    if (!size_error) check_json_record_read(file, bytes);  // before the document takes the memory
     const json j = json::parse(in, nullptr, false);
     if (j.is_discarded() || !j.is_object()) throw std::runtime_error(file + ": not valid JSON");
     RecordFile out;

@@ -2,14 +2,17 @@
 // back writes the JSON text byte for byte), either way round; a truncated or damaged HDF5 file is
 // refused with one line naming the file (and the block, where one is damaged), never a crash.
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
 #include "files.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/record/record_file.h"
+#include "mobb/crowd/record/record_reader.h"
 #include "mobb/crowd/sim/crowd.h"
 #include "record_runs.h"
 
@@ -187,6 +190,67 @@ TEST(RecordFile, DamagedSamplesNameTheirBlock) {
     std::ofstream(h5, std::ios::binary) << bytes;
     const std::string e = read_error(h5);
     EXPECT_NE(e.find("/tracks/samples block"), std::string::npos) << e;
+    std::remove(h5.c_str());
+}
+
+// MOBB_JSON_RECORD_MB set to `mb` megabytes for the life of the guard, then unset as the tests run.
+struct JsonLimit {
+    explicit JsonLimit(double mb) { ::setenv("MOBB_JSON_RECORD_MB", std::to_string(mb).c_str(), 1); }
+    ~JsonLimit() { ::unsetenv("MOBB_JSON_RECORD_MB"); }
+    JsonLimit(const JsonLimit&) = delete;
+    JsonLimit& operator=(const JsonLimit&) = delete;
+};
+
+// The size a JSON record's text is estimated at, from its counts, is its size within a fifth.
+TEST(RecordFile, AJsonRecordsSizeIsEstimatedFromItsCounts) {
+    for (const Written* w : {&wandering(), &leaving(), &bare()}) {
+        const double text = double(record_to_text(w->record, w->summary, w->metrics).size());
+        const JsonRecordCounts n = json_record_counts(w->record);
+        EXPECT_GT(n.samples, 0u);
+        EXPECT_NEAR(double(json_record_bytes(n)) / text, 1.0, 0.2) << n.samples << " samples";
+    }
+    // A run's expected counts: every agent at every frame, and its choice points' candidates when kept.
+    const JsonRecordCounts e = expected_json_record(10, 300, 100, "avoid", true);
+    EXPECT_EQ(std::tuple(e.samples, e.clips, e.choices), std::tuple(3000u, 110u, 100u));
+    EXPECT_GT(expected_json_record(10, 300, 100, "random", true).candidates, e.candidates);
+    EXPECT_EQ(expected_json_record(10, 300, 100, "avoid", false).queries, 0u);
+}
+
+// A JSON record is held whole to be written and read: past the limit (MOBB_JSON_RECORD_MB, set small here)
+// it is refused in one line naming the file, the memory it would need and the limit, before any of it is
+// written or parsed; an HDF5 record, which streams, is not limited.
+TEST(RecordFile, AJsonRecordPastTheLimitIsRefusedUpFront) {
+    const Written& w = wandering();
+    const std::string json = test::temp_file("limit.json"), h5 = test::temp_file("limit.h5");
+    const double text_mb = double(record_to_text(w.record, w.summary, w.metrics).size()) / 1e6;
+    std::remove(json.c_str());
+    {
+        const JsonLimit limit(text_mb * 2);  // under the memory writing takes, several times the text
+        const std::string e = test::file_error(json, [&] { write_record_file(json, w.record, w.summary, w.metrics); });
+        EXPECT_NE(e.find(": writing this JSON record"), std::string::npos) << e;
+        EXPECT_NE(e.find("over the limit of"), std::string::npos) << e;
+        EXPECT_NE(e.find("(MOBB_JSON_RECORD_MB); record to .h5 instead"), std::string::npos) << e;
+        EXPECT_FALSE(std::ifstream(json).good());  // nothing written
+        write_record_file(h5, w.record, w.summary, w.metrics);
+        EXPECT_EQ(read_record_file(h5).record.choices.size(), w.record.choices.size());
+    }
+    write_record_file(json, w.record, w.summary, w.metrics);  // under the default limit (2 GB)
+    {
+        const JsonLimit limit(text_mb * 2);  // under the memory reading takes
+        const std::string e = read_error(json);
+        EXPECT_NE(e.find(": reading this JSON record ("), std::string::npos) << e;
+        EXPECT_NE(e.find("mobb record convert " + json + " "), std::string::npos) << e;
+        EXPECT_EQ(test::file_error(json, [&] { open_record(json); }), e);
+    }
+    {
+        const JsonLimit limit(text_mb * 8);
+        EXPECT_EQ(read_error(json), "");
+    }
+    ::setenv("MOBB_JSON_RECORD_MB", "lots", 1);
+    EXPECT_THROW(json_record_limit(), std::runtime_error);
+    ::unsetenv("MOBB_JSON_RECORD_MB");
+    EXPECT_EQ(json_record_limit(), 2000000000u);
+    std::remove(json.c_str());
     std::remove(h5.c_str());
 }
 

@@ -32,15 +32,60 @@ bool is_h5_record(const std::string& file);
 /// collecting them costs the run time; docs/formats.md).
 bool keeps_candidates(const std::string& file);
 
+// A JSON record is held whole: written at the end of its run from the whole record, as one document and
+// one text, and read back as one document (nlohmann::json) - several times its text in memory. Past a
+// limit it is refused up front, in one line naming the file, the memory it would need and the limit, and
+// an HDF5 record (which streams; docs/crowd.md, "Records and memory") is the way. Streaming the JSON
+// instead would not help: a record too large to hold is one the viewer and Python cannot read.
+
+/// What a JSON record holds, counted in a record or expected of a run: the size of its text, and so the
+/// memory to write or read it, follow from these (json_record_bytes).
+struct JsonRecordCounts {
+    std::uint64_t samples = 0;     ///< disks [t, x, y, r]: one per agent per frame it is in the run
+    std::uint64_t clips = 0;       ///< placed clips: each agent's first, then one per choice point
+    std::uint64_t choices = 0;     ///< choice points
+    std::uint64_t candidates = 0;  ///< their candidates, when kept (CrowdOptions::record_queries)
+    std::uint64_t queries = 0;     ///< the candidates' queries ("against")
+};
+
+/// Counted in a record.
+JsonRecordCounts json_record_counts(const Record& record);
+
+/// Expected of a run of `agents` x `frames` with `choices` choice points: with candidates kept, as many
+/// candidates and queries per choice point as a run of selection mode `select` tests on average ("random"
+/// tests every clip, some six times what the avoiding modes do).
+JsonRecordCounts expected_json_record(std::uint64_t agents, std::int64_t frames, std::uint64_t choices,
+                                      const std::string& select, bool candidates);
+
+/// Bytes of a JSON record's text (about: the bytes each sample, clip, choice point, candidate and query
+/// take in it).
+std::uint64_t json_record_bytes(const JsonRecordCounts& counts);
+
+/// The most memory (bytes) a JSON record may need to be written or read whole: MOBB_JSON_RECORD_MB
+/// megabytes (1e6 bytes) when set, else 2 GB (2e9 bytes). Throws std::runtime_error for a value that is
+/// not a positive number.
+std::uint64_t json_record_limit();
+
+/// Throws std::runtime_error "FILE: writing this JSON record (about T of text) would need about M of
+/// memory, over the limit of L (MOBB_JSON_RECORD_MB); record to .h5 instead" when writing a record of
+/// `counts` to `file` would need more than json_record_limit().
+void check_json_record_write(const std::string& file, const JsonRecordCounts& counts);
+
+/// Throws std::runtime_error "FILE: reading this JSON record (S) would need about M of memory, over the
+/// limit of L (MOBB_JSON_RECORD_MB); ..." when reading JSON record `file`, of `file_bytes` bytes, would
+/// need more than json_record_limit().
+void check_json_record_read(const std::string& file, std::uint64_t file_bytes);
+
 /// Reads a record file of either kind, every field checked as load_record says; an incomplete HDF5 file
 /// (RecordFile::note) up to its last mark: its frames so far, the choice points and clips of those
-/// frames. Throws
+/// frames; a JSON file past the limit is refused before it is parsed (check_json_record_read). Throws
 /// std::runtime_error, one line naming the file and the place: "FILE: PLACE: message" (a JSON place like
 /// tracks[2].samples[7][3], an HDF5 one like /choices/agent block 3).
 RecordFile read_record_file(const std::string& file);
 
 /// Writes the record to `file` (its kind by extension), replacing it. Throws std::runtime_error
-/// "FILE: cannot write ..." when the file cannot be written (a disk full, a missing folder).
+/// "FILE: cannot write ..." when the file cannot be written (a disk full, a missing folder), and as
+/// check_json_record_write does, before writing anything, for a JSON record past the limit.
 void write_record_file(const std::string& file, const Record& record, const std::string& summary_json,
                        const std::string& metrics_json = "");
 
