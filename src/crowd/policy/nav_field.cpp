@@ -3,6 +3,7 @@
 #include "world/planar.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <queue>
 #include <utility>
@@ -14,16 +15,25 @@ NavGrid::NavGrid(const World& world, double clear, double size)
     nx = std::max(1, int(std::ceil(world.width() / cell)));
     ny = std::max(1, int(std::ceil(world.height() / cell)));
     free.assign(std::size_t(nx) * std::size_t(ny), 1);
-    const std::vector<Polygon> solids = world.solids();
-    for (int ix = 0; ix < nx; ++ix)
-        for (int iy = 0; iy < ny; ++iy) {
-            const double x = x0 + (ix + 0.5) * cell, y = y0 + (iy + 0.5) * cell;
-            for (const Polygon& p : solids)
-                if (disk_overlaps(p, x, y, clearance)) {
-                    free[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)] = 0;
-                    break;
-                }
-        }
+    // Each solid blocks the cells of its bounds grown by the clearance whose centre it comes near: the cells
+    // a test over every cell would block, in time proportional to the solids' ground, not cells x solids.
+    for (const Polygon& p : world.solids()) {
+        const std::array<double, 4> b = bounds(p);
+        const int ix0 = std::max(0, int(std::floor((b[0] - clearance - x0) / cell)));
+        const int ix1 = std::min(nx - 1, int(std::floor((b[2] + clearance - x0) / cell)));
+        const int iy0 = std::max(0, int(std::floor((b[1] - clearance - y0) / cell)));
+        const int iy1 = std::min(ny - 1, int(std::floor((b[3] + clearance - y0) / cell)));
+        for (int ix = ix0; ix <= ix1; ++ix)
+            for (int iy = iy0; iy <= iy1; ++iy) {
+                char& f = free[std::size_t(ix) * std::size_t(ny) + std::size_t(iy)];
+                if (f && disk_overlaps(p, x0 + (ix + 0.5) * cell, y0 + (iy + 0.5) * cell, clearance)) f = 0;
+            }
+    }
+}
+
+double nav_cell(const World& world, std::size_t fields) {
+    const double cells = kFieldBytes / (kBytesPerCell * double(std::max<std::size_t>(1, fields)));
+    return std::max(kNavCell, std::sqrt(world.width() * world.height() / cells));
 }
 
 void NavGrid::block_disk(double x, double y, double r) {

@@ -13,11 +13,23 @@
 
 namespace mobb::crowd {
 
+/// Metres: the navigation grid's cell where memory allows (nav_cell).
+inline constexpr double kNavCell = 0.25;
+/// Bytes all of a policy's fields may take (one per goal): 1 GiB, so that a scenario of thousands of goals
+/// over a large world coarsens its fields rather than run out of memory (4,000 goals over 200 x 200 m at
+/// kNavCell would take 33 GB).
+inline constexpr double kFieldBytes = double(std::size_t(1) << 30);
+/// Bytes a field holds per cell: its value, its parent and its scratch mark.
+inline constexpr double kBytesPerCell = sizeof(double) + sizeof(int) + sizeof(char);
+
+/// The cell (metres) of a grid over `world` that `fields` fields fit in kFieldBytes: kNavCell, or coarser.
+double nav_cell(const World& world, std::size_t fields);
+
 /// Which cells of the world an agent's centre may cross: those whose centre is `clearance` metres clear
 /// of every solid (World::solids()) and of the disks blocked since.
 class NavGrid {
 public:
-    NavGrid(const World& world, double clear, double size = 0.25);  ///< clearance = clear, cell = size (metres)
+    NavGrid(const World& world, double clear, double size = kNavCell);  ///< clearance = clear, cell = size (metres)
 
     /// Blocks the cells whose centre lies within r + clearance of (x, y): an agent standing there for good.
     void block_disk(double x, double y, double r);

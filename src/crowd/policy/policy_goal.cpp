@@ -17,10 +17,18 @@ namespace mobb::crowd {
 
 namespace {
 
+std::size_t distinct_goals(std::vector<std::array<double, 2>> goals) {
+    std::sort(goals.begin(), goals.end());
+    return std::size_t(std::unique(goals.begin(), goals.end()) - goals.begin());
+}
+
 class GoalPolicy : public Policy {
 public:
     explicit GoalPolicy(const PolicyContext& c)
-        : graph_(c.graph), tuning_(c.tuning), radius_(c.goal_radius), grid_(c.world, c.tuning.nav_clearance) {
+        : graph_(c.graph),
+          tuning_(c.tuning),
+          radius_(c.goal_radius),
+          grid_(c.world, c.tuning.nav_clearance, nav_cell(c.world, distinct_goals(c.goals))) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
         // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
         // stops that much inside the goal radius so that it stays within it to the end.

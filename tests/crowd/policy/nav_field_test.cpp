@@ -45,5 +45,43 @@ TEST(NavField, BlockingDisksGivesTheFieldBuiltAgain) {
     EXPECT_LT(field.distance(12, 2), 10.0);
 }
 
+// The grid's free cells, found solid by solid, are those a test of every cell against every solid finds:
+// rectangles, a triangle and a polygon across the world's edge, with a clearance that reaches across cells.
+TEST(NavGrid, FreeCellsAreEveryCellTestedAgainstEverySolid) {
+    World world{-3, -2, 17, 11, true, {}};
+    world.obstacles.push_back(Polygon::rectangle(2.1, 1.3, 2.9, 7.7));
+    world.obstacles.push_back(Polygon::rectangle(9.05, -5, 10.2, 0.4));
+    world.obstacles.push_back({{{5, 5}, {8.3, 6.1}, {6.2, 9.4}}});
+    world.obstacles.push_back({{{14, 8}, {20, 9}, {16, 13}, {13.5, 10.5}}});
+    for (double clearance : {0.0, 0.45, 1.3}) {
+        const NavGrid grid(world, clearance);
+        const std::vector<Polygon> solids = world.solids();
+        int blocked = 0;
+        for (int ix = 0; ix < grid.nx; ++ix)
+            for (int iy = 0; iy < grid.ny; ++iy) {
+                const double x = grid.x0 + (ix + 0.5) * grid.cell, y = grid.y0 + (iy + 0.5) * grid.cell;
+                bool hit = false;
+                for (const Polygon& p : solids) hit = hit || disk_overlaps(p, x, y, clearance);
+                ASSERT_EQ(grid.free[std::size_t(ix) * std::size_t(grid.ny) + std::size_t(iy)], hit ? 0 : 1)
+                    << x << ", " << y << " clearance " << clearance;
+                blocked += hit;
+            }
+        EXPECT_GT(blocked, 100);
+    }
+}
+
+// Fields fit kFieldBytes: the cell is kNavCell for a few goals, and coarser as goals and ground grow -
+// 4,000 goals over 200 x 200 m (SteerSuite's random.xml) at about 1.4 m.
+TEST(NavGrid, CellsCoarsenToFitTheFieldsInMemory) {
+    const World small{0, 0, 30, 40, true, {}};
+    EXPECT_EQ(nav_cell(small, 60), kNavCell);
+    const World big{-100, -100, 100, 100, true, {}};
+    EXPECT_EQ(nav_cell(big, 2), kNavCell);
+    const double cell = nav_cell(big, 4000);
+    EXPECT_NEAR(cell, 1.39, 0.01);
+    const double cells = std::ceil(200 / cell) * std::ceil(200 / cell);
+    EXPECT_LE(cells * kBytesPerCell * 4000, kFieldBytes * 1.02);
+}
+
 }  // namespace
 }  // namespace mobb::crowd
