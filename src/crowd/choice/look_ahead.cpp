@@ -1,5 +1,5 @@
-// The look-ahead (CrowdTuning::look_ahead; look_ahead.h): LearnedCost, the bounded best-first search of
-// clip sequences, and Choice::look_ahead, which reorders a choice point's candidates by the sequences found.
+// The look-ahead (CrowdTuning::look_ahead; look_ahead.h): the bounded best-first search of clip sequences,
+// and Choice::look_ahead, which reorders a choice point's candidates by the sequences found.
 #include "choice/look_ahead.h"
 
 #include "choice/choice.h"
@@ -13,21 +13,6 @@ namespace mobb::crowd {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-}
-
-std::int64_t LearnedCost::key(double x, double y) {
-    const auto ix = std::int64_t(std::floor(x / kCell)), iy = std::int64_t(std::floor(y / kCell));
-    return ix * 0x100000000LL + (iy & 0xffffffffLL);
-}
-
-double LearnedCost::at(double x, double y) const {
-    const auto it = value_.find(key(x, y));
-    return it == value_.end() ? 0.0 : it->second;
-}
-
-void LearnedCost::raise(double x, double y, double seconds) {
-    double& v = value_[key(x, y)];
-    v = std::max(v, seconds);
 }
 
 void LookAhead::push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth, double elapsed,

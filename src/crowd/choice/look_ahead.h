@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <functional>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 #include "mobb/core/path.h"
@@ -35,24 +34,6 @@ struct LookAheadLimits {
     int budget = 96;      ///< steps tested per choice point (each: the broad phase and its exact queries)
     double dead_end = 0;  ///< seconds added to a first clip without a free sequence to the horizon
     double weight = 2;    ///< of the time to go in the order of search (weighted A*; 1: plain best-first)
-};
-
-/// One agent's learned times to go (LookAhead::learned), kept on a grid of kCell metres: each cell the
-/// largest learned, so the search's estimate of a place only rises where the agent found it worse than
-/// it looked - a local minimum it waits in (a wall of standing agents between it and its goal) fills
-/// up until another way scores better.
-class LearnedCost {
-public:
-    static constexpr double kCell = 0.5;  // metres: about an agent's width
-    /// Seconds learned at (x, y); 0 where nothing was.
-    double at(double x, double y) const;
-    void raise(double x, double y, double seconds);
-    /// Forgets everything: what was learned holds for one goal only.
-    void clear() { value_.clear(); }
-
-private:
-    static std::int64_t key(double x, double y);
-    std::unordered_map<std::int64_t, double> value_;
 };
 
 class LookAhead {

@@ -23,10 +23,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "choice/escape.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/escape.h"
 
 namespace mobb::crowd {
 namespace {

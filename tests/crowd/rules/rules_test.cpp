@@ -7,10 +7,10 @@
 #include <cmath>
 #include <memory>
 
-#include "choice/escape.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/escape.h"
 
 namespace mobb::crowd {
 namespace {

@@ -1,4 +1,4 @@
-#include "choice/escape.h"
+#include "plan/escape.h"
 
 #include <algorithm>
 #include <cmath>
