@@ -11,16 +11,6 @@
 
 namespace mobb::crowd {
 
-namespace {
-
-// What a piece's solid queries cover: its held ground reaches as far as it keeps clear of the walls.
-SpaceTimeBox solid_box(const CrowdState& s, const Piece& p) {
-    const Hold& h = p.hold;
-    return p.kind == Piece::Held ? hold_box({h.x, h.y, std::max(h.r, s.hold_clearance), h.frame}) : p.clip.box;
-}
-
-}  // namespace
-
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
     agent_ = agent;
     frame_ = frame;
@@ -59,9 +49,7 @@ void Choice::order(const CrowdState& s) {
         const SpaceTimeBox around{base_.x - reach, base_.y - reach,
                                   base_.x + reach, base_.y + reach,
                                   frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
-        note_query(around);
-        query_pieces(s, around, agent_, near_);
-        for (int id : near_) {
+        for (int id : queries_.pieces_near(s, around)) {
             const Piece& p = s.pieces[std::size_t(id)];
             const std::optional<double> facing = leader_facing(s, p.agent);
             if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing});
@@ -93,102 +81,6 @@ const PlacedCandidate& Choice::place(const CrowdState& s, int k) {
     return placed_[std::size_t(k)];
 }
 
-void Choice::count_query(const QueryStats& st) {
-    ++point_.queries;
-    point_.tests2d += st.tests2d;
-    point_.tests3d += st.tests3d;
-    point_.samples += st.samples;
-}
-
-void Choice::record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
-    Candidate& cand = point_.candidates[std::size_t(k)];
-    ++cand.queries;
-    count_query(st);
-    if (q.hit) ++cand.hits;
-    if (!s.options.record_queries) return;
-    q.mine = mine.index;
-    cand.against.push_back(q);
-}
-
-// The solids whose bounds overlap `box`, by solid index, into near_ (solid_grid.query). Walls and
-// obstacles never change: where one query around the choice point's first box finds none, every box
-// of the evaluation on that ground has none near.
-void Choice::solids_near(const CrowdState& s, const SpaceTimeBox& box) {
-    constexpr double kAround = 6.0;  // metres: most candidates and their plans stay this close
-    constexpr auto kAll = std::numeric_limits<std::int64_t>::max();
-    if (!solids_asked_) {
-        solids_asked_ = true;
-        const SpaceTimeBox around{box.x0 - kAround, box.y0 - kAround, box.x1 + kAround, box.y1 + kAround, -kAll, kAll};
-        s.solid_grid.query(around, -2, near_);
-        solid_free_ = near_.empty() ? around : SpaceTimeBox{0, 0, -1, -1, 0, 0};
-    }
-    const SpaceTimeBox& f = solid_free_;
-    if (f.x0 <= box.x0 && box.x1 <= f.x1 && f.y0 <= box.y0 && box.y1 <= f.y1) return near_.clear();
-    s.solid_grid.query(box, -2, near_);
-}
-
-// The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
-// solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
-// ever yields.
-bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits) {
-    solids_near(s, solid_box(s, mine));
-    bool free = true;
-    for (int i : near_) {
-        const bool hit = meets_solid(s, mine, i);
-        CandidateQuery q;
-        q.agent = -1, q.solid = i, q.hit = hit;
-        record_query(s, k, mine, q, {});
-        if (!hit) continue;
-        point_.candidates[std::size_t(k)].meets_solid = true;
-        free = false;
-        if (hits != Hits::Count) return false;
-    }
-    return free;
-}
-
-// The queries of one piece of candidate k's plan: the solids, then every other agent's piece live in
-// the broad phase.
-bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits) {
-    bool free = free_of_solids(s, k, mine, hits);
-    if (!free && hits != Hits::Count) return false;
-    const SpaceTimeBox box = box_of(mine);
-    note_query(box);
-    query_pieces(s, box, agent_, near_);
-    near_total_ += near_.size();
-    // The piece that refused the last piece tested here first: the candidates of one choice point start
-    // at the same place and mostly meet the same neighbour (same answers, fewer queries before the hit).
-    const auto last = std::find(near_.begin(), near_.end(), last_hit_);
-    if (last != near_.end()) std::rotate(near_.begin(), last, last + 1);
-    auto& against = point_.candidates[std::size_t(k)].against;
-    if (s.options.record_queries && against.capacity() < against.size() + near_.size())
-        against.reserve(std::max(2 * against.capacity(), against.size() + near_.size()));
-    for (int id : near_) {
-        const Piece& other = s.pieces[std::size_t(id)];
-        QueryStats st;
-        const bool hit = pieces_collide(s, mine, other, &st);
-        if (!hit && mine.kind == Piece::Clip && other.kind == Piece::Clip && st.tests2d + st.tests3d <= 1 &&
-            st.samples == 0)
-            ++root_rejected_;
-        CandidateQuery q;
-        q.agent = other.agent, q.choice = other.choice, q.piece = other.index, q.hit = hit;
-        record_query(s, k, mine, q, st);
-        if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
-            log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
-        if (!hit) continue;
-        if (hits == Hits::Yield && may_yield(s, other)) {
-            if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) continue;
-            if (yielding_.size() < std::size_t(s.options.tuning.max_yielding)) {
-                yielding_.push_back(other.agent);
-                continue;
-            }
-        }
-        last_hit_ = id;
-        free = false;
-        if (hits != Hits::Count) return false;
-    }
-    return free;
-}
-
 // Whether candidate k's plan along `route` is free of the others (its clip was tested already), tested
 // piece by piece as it is built. When an escape clip is not, `refused` is the route's prefix that
 // placed it (its length; 0 otherwise).
@@ -196,7 +88,7 @@ bool Choice::route_free(const CrowdState& s, int k, const BoxedClip& c, const st
                         std::size_t& refused) {
     refused = 0;
     return build_plan(s, c, route, plan, [&](const Piece& piece) {
-        if (free_of_others(s, k, piece, Hits::Stop)) return true;
+        if (queries_.candidate_free(s, k, piece, Hits::Stop)) return true;
         if (piece.kind == Piece::Clip) refused = std::size_t(piece.index);
         return false;
     });
@@ -207,7 +99,7 @@ void Choice::take(int k, Outcome how) {
     const PlacedCandidate& c = placed_[std::size_t(k)];
     taken_ = {c.clip, c.place, frame_, c.box, base_m_};
     outcome_ = how;
-    point_.taken = c.clip;
+    point().taken = c.clip;
     intended_.clear();
     if (!searched_) return;
     const std::vector<SearchStep> sequence = search_.sequence(ranked_[std::size_t(k)].second);
@@ -217,18 +109,18 @@ void Choice::take(int k, Outcome how) {
 // Nothing is free and the agent's escape cannot go on: the candidate that stays clear of walls and
 // obstacles with the fewest collisions (its queries run in full), its first route reserved unchecked.
 void Choice::fall_back(const CrowdState& s) {
-    point_.fallback = true;
+    point().fallback = true;
     int best = -1;
     std::pair<int, int> best_key{1 << 30, 1 << 30};
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
-        point_.candidates[std::size_t(k)] = Candidate{};
-        point_.candidates[std::size_t(k)].clip = c.clip;
+        if (int(point().candidates.size()) <= k) point().candidates.push_back({});
+        point().candidates[std::size_t(k)] = Candidate{};
+        point().candidates[std::size_t(k)].clip = c.clip;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, Hits::Count);
-        const Candidate& cand = point_.candidates[std::size_t(k)];
+        queries_.candidate_free(s, k, mine, Hits::Count);
+        const Candidate& cand = point().candidates[std::size_t(k)];
         const std::pair<int, int> key{cand.meets_solid ? 1 : 0, cand.hits};
         if (key < best_key) best = k, best_key = key;
     }
@@ -241,11 +133,11 @@ void Choice::fall_back(const CrowdState& s) {
 void Choice::evaluate_random(const CrowdState& s) {
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        point_.candidates.emplace_back().clip = c.clip;
-        point_.candidates.back().leaves_world = c.leaves_world;
+        point().candidates.emplace_back().clip = c.clip;
+        point().candidates.back().leaves_world = c.leaves_world;
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, Hits::Count);
+        queries_.candidate_free(s, k, mine, Hits::Count);
     }
     take(random_pick_, Outcome::Candidate);
     plan_ = Plan{};
@@ -254,18 +146,7 @@ void Choice::evaluate_random(const CrowdState& s) {
 // Forgets the last choice point's outcome and counters; keeps the candidates' memory, when the record
 // left it.
 void Choice::reset() {
-    std::vector<Candidate> candidates = std::move(point_.candidates);
-    candidates.clear();
-    point_ = ChoicePoint{};
-    point_.candidates = std::move(candidates);
-    point_.agent = agent_;
-    point_.frame = frame_;
-    queried_boxes_.clear();
-    solids_asked_ = false;
-    near_total_ = 0;
-    root_rejected_ = 0;
-    last_hit_ = -1;
-    log_.clear();
+    queries_.start(agent_, frame_);
     learned_.clear();
     intended_.clear();
     reroutes_.clear();
@@ -278,7 +159,7 @@ void Choice::reset() {
 void Choice::evaluate(const CrowdState& s) {
     reset();
     order(s);
-    point_.candidates.reserve(order_.size());
+    point().candidates.reserve(order_.size());
     if (!s.policy.avoids()) return evaluate_random(s);
     const Agent& a = s.agents[std::size_t(agent_)];
     if (frame_ < a.start_frame || a.arrived) {
@@ -308,10 +189,10 @@ void Choice::evaluate(const CrowdState& s) {
 // Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride, or one of
 // its escape routes is free too (try_routes). Returns whether it was taken.
 bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c) {
-    point_.candidates.emplace_back().clip = c.clip;
+    point().candidates.emplace_back().clip = c.clip;
     Piece mine;
     mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-    if (!free_of_others(s, k, mine, Hits::Stop)) return false;
+    if (!queries_.candidate_free(s, k, mine, Hits::Stop)) return false;
     if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
         plan_ = Plan{};
         take(k, Outcome::Candidate);
@@ -319,7 +200,7 @@ bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c)
     }
     const std::uint32_t crowded = crowded_routes(s, k);
     if (try_routes(s, k, mine.clip, crowded)) return true;
-    point_.candidates.back().crowded = crowded != 0 && deferred_ != k;
+    point().candidates.back().crowded = crowded != 0 && deferred_ != k;
     return false;
 }
 
@@ -352,28 +233,11 @@ bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::
     return false;
 }
 
-// A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live
-// piece of the others but the `excluded` ids (and, `following`, those of agents expected to walk on:
-// follow.cpp). Its queries count for the choice point, not for a candidate.
-bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded, bool following) {
-    solids_near(s, solid_box(s, piece));
-    for (int i : near_) {
-        count_query({});
-        if (meets_solid(s, piece, i)) return false;
-    }
-    const SpaceTimeBox box = box_of(piece);
-    note_query(box);
-    query_pieces(s, box, piece.agent, near_);
-    for (int id : near_) {
-        if (excluded && std::find(excluded->begin(), excluded->end(), id) != excluded->end()) continue;
-        if (following && walks_on(s, s.pieces[std::size_t(id)])) continue;
-        QueryStats st;
-        const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
-        count_query(st);
-        if (hit) return false;
-    }
-    return true;
+bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
+    return queries_.affected_by(chosen, from, below);
 }
+
+int Choice::last_change(const BatchGrid& chosen, int below) const { return queries_.last_change(chosen, below); }
 
 void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
     out.push_back(taken_.box);
@@ -386,33 +250,6 @@ void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
         add(r.plan);
         out.insert(out.end(), r.released.begin(), r.released.end());
     }
-}
-
-void Choice::note_query(const SpaceTimeBox& b) {
-    if (queried_boxes_.empty()) queried_all_ = b;
-    queried_all_.enclose(b);
-    queried_boxes_.push_back(b);
-}
-
-bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
-    if (queried_boxes_.empty() || from >= below) return false;
-    // Their union first: most choice points are far from every other of their frame.
-    if (!chosen.any_between(queried_all_, from, below)) return false;
-    for (const SpaceTimeBox& b : queried_boxes_)
-        if (chosen.any_between(b, from, below)) return true;
-    return false;
-}
-
-int Choice::last_change(const BatchGrid& chosen, int below) const {
-    if (queried_boxes_.empty()) return -1;
-    const int bound = chosen.last_between(queried_all_, 0, below);  // through their union: often none
-    if (bound < 0) return -1;
-    int last = -1;
-    for (const SpaceTimeBox& b : queried_boxes_) {
-        last = std::max(last, chosen.last_between(b, last + 1, below));
-        if (last == bound) break;
-    }
-    return last;
 }
 
 }  // namespace mobb::crowd

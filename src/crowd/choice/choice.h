@@ -14,6 +14,7 @@
 
 #include "choice/look_ahead.h"
 #include "collision/batch_grid.h"
+#include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
 
 namespace mobb::crowd {
@@ -59,34 +60,23 @@ public:
     void boxes(std::vector<SpaceTimeBox>& out) const;
     const PlacedCandidate& candidate(int k) const { return placed_[std::size_t(k)]; }
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
-    ChoicePoint& point() { return point_; }
-    int queried() const { return int(queried_boxes_.size()); }
-    std::uint64_t near_total() const { return near_total_; }
-    std::uint64_t root_rejected() const { return root_rejected_; }
+    ChoicePoint& point() { return queries_.point(); }
+    int queried() const { return queries_.queried(); }
+    std::uint64_t near_total() const { return queries_.near_total(); }
+    std::uint64_t root_rejected() const { return queries_.root_rejected(); }
     /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).
-    const std::vector<LoggedQuery>& log() const { return log_; }
+    const std::vector<LoggedQuery>& log() const { return queries_.log(); }
     /// The clips the look-ahead intends after the one taken (ChoicePoint::intended; empty without one).
     const std::vector<SearchStep>& intended() const { return intended_; }
     /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
     const std::vector<std::array<double, 3>>& learned() const { return learned_; }
 
 private:
-    /// What a piece's queries do at a hit: stop; go on and count them all (fallback); or, with the right
-    /// of way, go on past another agent's reservation that may yield (noting its owner) and stop at any
-    /// other hit.
-    enum class Hits { Stop, Count, Yield };
-
     void order(const CrowdState& s);
     void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
-    bool piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded, bool following = false);
     bool walks_on(const CrowdState& s, const Piece& other) const;
-    void note_query(const SpaceTimeBox& box);
-    void solids_near(const CrowdState& s, const SpaceTimeBox& box);
-    bool free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits);
-    void count_query(const QueryStats& st);
-    void record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st);
     const PlacedCandidate& place(const CrowdState& s, int k);
-    bool free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits);
+    bool yields(const CrowdState& s, const Piece& other);
     std::uint32_t crowded_routes(const CrowdState& s, int k);
     bool may_yield(const CrowdState& s, const Piece& other) const;
     bool route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
@@ -125,16 +115,9 @@ private:
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                  // random mode: index of the clip taken
     bool arriving_ = false;                // at its goal: stops as soon as it can
-    std::vector<int> near_;                // scratch: broad-phase ids of one query
     std::vector<int> waiters_;             // scratch: agents waiting near a candidate
     int deferred_ = -1;                    // the first free moving candidate that passes a waiting agent
     Plan deferred_plan_;
-    std::vector<SpaceTimeBox> queried_boxes_;  // every box the evaluation asked the broad phase about
-    SpaceTimeBox queried_all_;                 // their union (bounding box)
-    bool solids_asked_ = false;                // solid_free_ is set for this evaluation
-    SpaceTimeBox solid_free_;                  // ground without solids (its time: all)
-    std::uint64_t near_total_ = 0, root_rejected_ = 0;
-    int last_hit_ = -1;  // broad-phase id of the other agent's piece that refused the last piece
     Outcome outcome_ = Outcome::Candidate;
     BoxedClip taken_;
     Plan plan_;
@@ -142,8 +125,7 @@ private:
     std::vector<int> excluded_;  // right of way: broad-phase ids released if it is taken (theirs and its own)
     std::vector<Piece> extra_;   // right of way: the new plan's pieces and the reroutes found so far
     std::vector<Reroute> reroutes_;
-    ChoicePoint point_;
-    std::vector<LoggedQuery> log_;
+    ChoiceQueries queries_;
 };
 
 /// The way agent `agent` faces at the end of the clip it plays (radians, world frame) when others may

@@ -123,7 +123,8 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
         Piece piece;
         piece.agent = agent_;
         piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
-        return piece_free(s, piece, nullptr, way_heading_ && step.frame > frame_);  // beyond the first clip
+        const bool following = way_heading_ && step.frame > frame_;  // beyond the first clip
+        return queries_.piece_free(s, piece, [&](int, const Piece& other) { return following && walks_on(s, other); });
     };
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
     const auto to_go = [&](const Placement& end) {

@@ -16,7 +16,7 @@ bool Choice::take_escape(const CrowdState& s) {
         plan_.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
         plan_.hold = a.plan.hold;
         outcome_ = Outcome::Escape;
-        point_.taken = taken_.clip;
+        point().taken = taken_.clip;
         return true;
     }
     return hold_on(s);
@@ -59,7 +59,7 @@ bool Choice::hold_on(const CrowdState& s) {
         taken_ = frame_clip(s, c, base_, base_m_, frame_);
         plan_ = Plan{{}, h};
         outcome_ = Outcome::Escape;
-        point_.taken = c;
+        point().taken = c;
         return true;
     }
     return false;

@@ -27,6 +27,16 @@ bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
     return end > frame_ && !s.escapes.in_place[std::size_t(playing.clip)];
 }
 
+// A hit on another agent's piece that a plan with the right of way goes past: a reservation that may
+// yield, of an owner yielding already or of one more within max_yielding (noted in yielding_).
+bool Choice::yields(const CrowdState& s, const Piece& other) {
+    if (!may_yield(s, other)) return false;
+    if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) return true;
+    if (yielding_.size() >= std::size_t(s.options.tuning.max_yielding)) return false;
+    yielding_.push_back(other.agent);
+    return true;
+}
+
 bool Choice::has_right_of_way(const CrowdState& s) const {
     const Agent& a = s.agents[std::size_t(agent_)];
     return s.options.tuning.right_of_way && !arriving_ &&
@@ -43,12 +53,14 @@ bool Choice::take_right_of_way(const CrowdState& s, int end) {
         Piece mine;
         mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
         yielding_.clear();
-        if (!free_of_others(s, k, mine, Hits::Yield)) continue;
+        const auto yields = [&](int, const Piece& other) { return this->yields(s, other); };
+        if (!queries_.candidate_free(s, k, mine, Hits::Stop, yields)) continue;
         const std::size_t owners = yielding_.size();
         for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
             yielding_.resize(owners);
-            const bool free = build_plan(s, mine.clip, route, plan_,
-                                         [&](const Piece& piece) { return free_of_others(s, k, piece, Hits::Yield); });
+            const bool free = build_plan(s, mine.clip, route, plan_, [&](const Piece& piece) {
+                return queries_.candidate_free(s, k, piece, Hits::Stop, yields);
+            });
             if (!free || !reroute_yielding(s, mine.clip)) continue;
             take(k, Outcome::RightOfWay);
             return true;
@@ -126,14 +138,12 @@ bool Choice::reroute(const CrowdState& s, int owner) {
 // A piece of a reroute: free of everything but what the taking would release (excluded_), and of the
 // extra pieces (the new plan, the reroutes found before it).
 bool Choice::free_for_reroute(const CrowdState& s, const Piece& piece) {
-    if (!piece_free(s, piece, &excluded_)) return false;
-    for (const Piece& e : extra_) {
-        if (e.agent == piece.agent) continue;
-        QueryStats st;
-        const bool hit = pieces_collide(s, piece, e, &st);
-        count_query(st);
-        if (hit) return false;
-    }
+    const auto released = [&](int id, const Piece&) {
+        return std::find(excluded_.begin(), excluded_.end(), id) != excluded_.end();
+    };
+    if (!queries_.piece_free(s, piece, released)) return false;
+    for (const Piece& e : extra_)
+        if (e.agent != piece.agent && queries_.collide(s, piece, e)) return false;
     return true;
 }
 

@@ -36,11 +36,9 @@ std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
     }
     const double reach = s.escapes.hold_radius + gap;
     box.x0 -= reach, box.y0 -= reach, box.x1 += reach, box.y1 += reach;
-    note_query(box);
-    query_pieces(s, box, agent_, near_);
     const Hold here{base_.x, base_.y, s.escapes.hold_radius, 0};
     std::uint32_t crowded = 0;
-    for (int id : near_) {
+    for (int id : queries_.pieces_near(s, box)) {
         const Piece& p = s.pieces[std::size_t(id)];
         if (p.kind != Piece::Held || holds_meet(here, p.hold, gap)) continue;
         for (std::size_t r = 0; r < ends.size(); ++r)
