@@ -41,14 +41,18 @@ void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(agent_)];
     ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
     site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
-    if (s.options.tuning.follow) site.way = s.policy.heading(site);
+    if (s.options.tuning.follow.on) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
     if (reach > 0) {
-        const SpaceTimeBox around{base_.x - reach, base_.y - reach,
-                                  base_.x + reach, base_.y + reach,
-                                  frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
+        const SpaceTimeBox around{
+            base_.x - reach,
+            base_.y - reach,
+            base_.x + reach,
+            base_.y + reach,
+            frame_,
+            frame_ + std::int64_t(std::llround(s.options.tuning.goal.neighbours_ahead / s.graph.dt()))};
         for (int id : queries_.pieces_near(s, around)) {
             const Piece& p = s.pieces[std::size_t(id)];
             const std::optional<double> facing = leader_facing(s, p.agent);
@@ -61,7 +65,7 @@ void Choice::order(const CrowdState& s) {
     next_ = drawn_;
     s.policy.order(site, next_);
     searched_ = false;
-    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead)
+    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead.on)
         look_ahead(s, site, horizon);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);

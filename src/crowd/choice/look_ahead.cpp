@@ -117,7 +117,7 @@ std::vector<SearchStep> LookAhead::sequence(int k) const {
 // policy's order breaks ties.
 void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
     const CrowdTuning& t = s.options.tuning;
-    const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
+    const LookAheadLimits limits{horizon, t.look_ahead.budget, t.look_ahead.dead_end, t.look_ahead.weight};
     way_heading_ = site.way;
     const auto free = [&](const SearchStep& step) {
         Piece piece;
@@ -129,7 +129,7 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
     const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
     const auto to_go = [&](const Placement& end) {
         const double estimate = s.policy.to_go(site, end);
-        return t.look_ahead_learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
+        return t.look_ahead.learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
     };
     const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
     searched_ = true;

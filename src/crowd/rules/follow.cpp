@@ -22,7 +22,7 @@ std::optional<double> leader_facing(const CrowdState& s, int agent) {
     const Placement end = s.graph.next(playing.place, playing.clip);
     // Near the goal it stops at for good, it is about to stand there: no one to follow.
     const auto goal = a.goal();
-    const double reach = s.options.tuning.follow_goal_reach;
+    const double reach = s.options.tuning.follow.goal_reach;
     if (goal && a.stops_at_goal() && std::hypot(end.x - (*goal)[0], end.y - (*goal)[1]) < reach) return std::nullopt;
     return end.theta;
 }
@@ -35,7 +35,7 @@ bool Choice::walks_on(const CrowdState& s, const Piece& other) const {
     if (!facing) return false;
     const SpaceTimeBox b = box_of(other);
     return follows(*way_heading_, {base_.x, base_.y}, {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}, *facing,
-                   s.options.tuning.follow_angle);
+                   s.options.tuning.follow.angle);
 }
 
 }  // namespace mobb::crowd

@@ -19,14 +19,14 @@ void Choice::take_deferred() {
 // Whether candidate k's clip passes within give_way_reach of an agent that waits (CrowdState::waiting);
 // never with giving way off.
 bool Choice::passes_waiting(const CrowdState& s, int k) {
-    if (!s.options.tuning.give_way) return false;
+    if (!s.options.tuning.give_way.on) return false;
     const PlacedCandidate& c = placed_[std::size_t(k)];
     const SpaceTimeBox& b = c.box;
     s.waiting.query(
         {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},
         agent_, waiters_);
     if (waiters_.empty()) return false;
-    const double r2 = s.options.tuning.give_way_reach * s.options.tuning.give_way_reach;
+    const double r2 = s.options.tuning.give_way.reach * s.options.tuning.give_way.reach;
     for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {
         const double px = base_m_.apply_x(x.x, x.y), py = base_m_.apply_y(x.x, x.y);
         for (int w : waiters_) {

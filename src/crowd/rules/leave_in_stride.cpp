@@ -8,7 +8,7 @@ namespace mobb::crowd {
 
 bool Choice::leaves_after(const CrowdState& s, const PlacedCandidate& c) const {
     const Agent& a = s.agents[std::size_t(agent_)];
-    if (!s.options.tuning.leave_in_stride || a.at_goal != AtGoal::Leave || a.next_goal + 1 != a.goals.size())
+    if (!s.options.tuning.leave_in_stride.on || a.at_goal != AtGoal::Leave || a.next_goal + 1 != a.goals.size())
         return false;
     return reaches_goal(clip_end(s.graph, c.clip, c.place), a.goals.back(), s.options.goal_radius);
 }

@@ -32,15 +32,15 @@ bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
 bool Choice::yields(const CrowdState& s, const Piece& other) {
     if (!may_yield(s, other)) return false;
     if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) return true;
-    if (yielding_.size() >= std::size_t(s.options.tuning.max_yielding)) return false;
+    if (yielding_.size() >= std::size_t(s.options.tuning.right_of_way.max_yielding)) return false;
     yielding_.push_back(other.agent);
     return true;
 }
 
 bool Choice::has_right_of_way(const CrowdState& s) const {
     const Agent& a = s.agents[std::size_t(agent_)];
-    return s.options.tuning.right_of_way && !arriving_ &&
-           double(frame_ - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way_after;
+    return s.options.tuning.right_of_way.on && !arriving_ &&
+           double(frame_ - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way.after;
 }
 
 // The moving candidates before `end` again, in order, now past the reservations that may yield (at most

@@ -18,8 +18,8 @@ namespace mobb::crowd {
 // none when its policy keeps no gap or the rule is off.
 std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
     const CrowdTuning& tuning = s.options.tuning;
-    if (!tuning.standing_gap || !s.policy.keeps_standing_gap()) return 0;
-    const double gap = tuning.standing_gap_width;
+    if (!tuning.standing_gap.on || !s.policy.keeps_standing_gap()) return 0;
+    const double gap = tuning.standing_gap.width;
     const int clip = placed_[std::size_t(k)].clip;
     const auto& ends = s.escapes.ends[std::size_t(clip)];
     if (ends.empty()) return 0;

@@ -56,8 +56,8 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       o_(o),
       escapes_(EscapeTable::build(g, o.tuning)),
       policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
-      hold_clearance_(o.tuning.stand_near_walls && policy_->stops_near_walls() ? escapes_.stand_clearance
-                                                                               : escapes_.turn_clearance),
+      hold_clearance_(o.tuning.stand_near_walls.on && policy_->stops_near_walls() ? escapes_.stand_clearance
+                                                                                  : escapes_.turn_clearance),
       solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
       solid_grid_(solid_grid(solids_, o)),
       pool_(o.threads),
@@ -305,14 +305,14 @@ void Simulation::reserve(int agent, int choice, const Plan& plan) {
 void Simulation::note_waiting(int agent, std::int64_t end) {
     const Agent& a = agents_[std::size_t(agent)];
     const CrowdTuning& t = o_.tuning;
-    const bool waits = t.give_way && policy_->avoids() && !a.arrived && a.plan.hold &&
-                       double(end - a.moved_until) * g_.dt() >= t.give_way_after;
+    const bool waits = t.give_way.on && policy_->avoids() && !a.arrived && a.plan.hold &&
+                       double(end - a.moved_until) * g_.dt() >= t.give_way.after;
     if (!waits && !in_waiting_[std::size_t(agent)]) return;
     wait_changes_.push_back({agent, waits});
 }
 
 void Simulation::apply_waiting() {
-    const double reach = o_.tuning.give_way_reach;
+    const double reach = o_.tuning.give_way.reach;
     for (const auto& [agent, waits] : wait_changes_) {
         in_waiting_[std::size_t(agent)] = waits;
         if (!waits) {

@@ -127,7 +127,7 @@ TEST(LearnedCost, KeepsTheLargestPerCell) {
 TEST(LookAhead, ACircleOfAgentsReachesItsGoalsSoonerWithIt) {
     const Scenario s = load_scenario(default_scenario_folder() + "/circle_20.json");
     CrowdOptions with = scenario_options(s), without = with;
-    without.tuning.look_ahead = false;
+    without.tuning.look_ahead.on = false;
     const NarrowPhase narrow = NarrowPhase::sweep(graph());
     const CrowdMetrics a = crowd_metrics(run_crowd(graph(), narrow, with).record, graph());
     const CrowdMetrics b = crowd_metrics(run_crowd(graph(), narrow, without).record, graph());
