@@ -12,23 +12,23 @@
 namespace mobb::crowd {
 
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
-    agent_ = agent;
-    frame_ = frame;
+    base_.agent = agent;
+    base_.frame = frame;
     util::Random rng = util::Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
     const Agent& a = s.agents[std::size_t(agent)];
     const MotionGraph& g = s.graph;
     std::vector<int>& order = drawn_;
-    base_ = a.start;
+    base_.place = a.start;
     if (a.clips.empty()) {
         order = g.clips[std::size_t(rng.below(int(g.clips.size())))].successors;
     } else {
         const PlacedClip& last = a.clips.back();
         order = g.clips[std::size_t(last.clip)].successors;
-        base_ = g.next(last.place, last.clip);
+        base_.place = g.next(last.place, last.clip);
     }
     if (order.empty()) throw std::invalid_argument("crowd: a graph clip has no successors");
-    base_.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
-    base_m_ = Rigid2::of(base_);
+    base_.place.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
+    base_.m = Rigid2::of(base_.place);
     for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng.below(int(k)))]);
     random_pick_ = rng.below(int(order.size()));
     order_.clear();
@@ -38,21 +38,21 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // The policy's order of the drawn candidates, from the state as it is now (the neighbours may have
 // moved since a first evaluation); placements are kept only while the order is unchanged.
 void Choice::order(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
-    site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    ChoiceSite site{base_.agent, base_.place, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
+    site.arrived = base_.frame >= a.start_frame && s.policy.arrived(site);
     if (s.options.tuning.follow.on) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
     if (reach > 0) {
         const SpaceTimeBox around{
-            base_.x - reach,
-            base_.y - reach,
-            base_.x + reach,
-            base_.y + reach,
-            frame_,
-            frame_ + std::int64_t(std::llround(s.options.tuning.goal.neighbours_ahead / s.graph.dt()))};
+            base_.place.x - reach,
+            base_.place.y - reach,
+            base_.place.x + reach,
+            base_.place.y + reach,
+            base_.frame,
+            base_.frame + std::int64_t(std::llround(s.options.tuning.goal.neighbours_ahead / s.graph.dt()))};
         for (int id : queries_.pieces_near(s, around)) {
             const Piece& p = s.pieces[std::size_t(id)];
             const std::optional<double> facing = leader_facing(s, p.agent);
@@ -73,14 +73,14 @@ void Choice::order(const CrowdState& s) {
 
 const PlacedCandidate& Choice::place(const CrowdState& s, int k) {
     MOBB_ASSERT(k >= 0 && std::size_t(k) < order_.size());
-    const Rigid2& m = base_m_;
+    const Rigid2& m = base_.m;
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
         // The random mode ranks candidates leaving the world; the others meet the walls instead.
         const World* world = s.policy.avoids() ? nullptr : &s.options.world;
         placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
-                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, m, frame_,
-                                     world));
+                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_.place, m,
+                                     base_.frame, world));
     }
     return placed_[std::size_t(k)];
 }
@@ -101,7 +101,7 @@ bool Choice::route_free(const CrowdState& s, int k, const BoxedClip& c, const st
 void Choice::take(int k, Outcome how) {
     MOBB_ASSERT(k >= 0 && std::size_t(k) < placed_.size());  // tried, so placed
     const PlacedCandidate& c = placed_[std::size_t(k)];
-    taken_ = {c.clip, c.place, frame_, c.box, base_m_};
+    taken_ = {c.clip, c.place, base_.frame, c.box, base_.m};
     outcome_ = how;
     point().taken = c.clip;
     intended_.clear();
@@ -122,7 +122,7 @@ void Choice::fall_back(const CrowdState& s) {
         point().candidates[std::size_t(k)] = Candidate{};
         point().candidates[std::size_t(k)].clip = c.clip;
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+        mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
         queries_.candidate_free(s, k, mine, Hits::Count);
         const Candidate& cand = point().candidates[std::size_t(k)];
         const std::pair<int, int> key{cand.meets_solid ? 1 : 0, cand.hits};
@@ -140,7 +140,7 @@ void Choice::evaluate_random(const CrowdState& s) {
         point().candidates.emplace_back().clip = c.clip;
         point().candidates.back().leaves_world = c.leaves_world;
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+        mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
         queries_.candidate_free(s, k, mine, Hits::Count);
     }
     take(random_pick_, Outcome::Candidate);
@@ -150,7 +150,7 @@ void Choice::evaluate_random(const CrowdState& s) {
 // Forgets the last choice point's outcome and counters; keeps the candidates' memory, when the record
 // left it.
 void Choice::reset() {
-    queries_.start(agent_, frame_);
+    queries_.start(base_.agent, base_.frame);
     learned_.clear();
     intended_.clear();
     reroutes_.clear();
@@ -165,8 +165,8 @@ void Choice::evaluate(const CrowdState& s) {
     order(s);
     point().candidates.reserve(order_.size());
     if (!s.policy.avoids()) return evaluate_random(s);
-    const Agent& a = s.agents[std::size_t(agent_)];
-    if (frame_ < a.start_frame || a.arrived) {
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    if (base_.frame < a.start_frame || a.arrived) {
         if (!take_escape(s)) return fall_back(s);
         if (a.arrived) outcome_ = Outcome::Arrived;
         return;
@@ -195,9 +195,10 @@ void Choice::evaluate(const CrowdState& s) {
 bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c) {
     point().candidates.emplace_back().clip = c.clip;
     Piece mine;
-    mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+    mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
     if (!queries_.candidate_free(s, k, mine, Hits::Stop)) return false;
-    if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    if (leaves_in_stride(s.options.tuning.leave_in_stride, s.graph, a, c, s.options.goal_radius)) {  // no stop beyond
         plan_ = Plan{};
         take(k, Outcome::Candidate);
         return true;

@@ -16,6 +16,7 @@
 #include "collision/batch_grid.h"
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
+#include "rules/leave_in_stride.h"
 
 namespace mobb::crowd {
 
@@ -47,7 +48,7 @@ public:
     /// queried (affected_by(chosen, that position, below) holds); -1 when none does.
     int last_change(const BatchGrid& chosen, int below) const;
 
-    int agent() const { return agent_; }
+    int agent() const { return base_.agent; }
     Outcome outcome() const { return outcome_; }
     /// The clip taken and what is reserved beyond it.
     const BoxedClip& taken() const { return taken_; }
@@ -83,7 +84,6 @@ private:
                     std::size_t& refused);
     bool has_right_of_way(const CrowdState& s) const;
     bool passes_waiting(const CrowdState& s, int k);
-    bool leaves_after(const CrowdState& s, const PlacedCandidate& c) const;
     void take_deferred();
     bool take_right_of_way(const CrowdState& s, int end);
     bool reroute_yielding(const CrowdState& s, const BoxedClip& c);
@@ -98,8 +98,7 @@ private:
     void fall_back(const CrowdState& s);
     void take(int k, Outcome how);
 
-    int agent_ = 0;
-    std::int64_t frame_ = 0;
+    ChoiceBase base_;                             // whose, when and where: every candidate starts there
     std::vector<int> drawn_;                      // candidate clips in the stream's random order
     std::vector<int> order_;                      // the same in the policy's order, for the current evaluation
     std::vector<int> next_;                       // scratch: the order being made
@@ -110,8 +109,6 @@ private:
     std::optional<double> way_heading_;  // following: the direction the agent wants to go (Policy::heading)
     std::vector<SearchStep> intended_;
     std::vector<std::array<double, 3>> learned_;
-    Placement base_;                       // where and when the next clip starts
-    Rigid2 base_m_;                        // Rigid2::of(base_): every candidate starts there
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                  // random mode: index of the clip taken
     bool arriving_ = false;                // at its goal: stops as soon as it can

@@ -121,22 +121,22 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
     way_heading_ = site.way;
     const auto free = [&](const SearchStep& step) {
         Piece piece;
-        piece.agent = agent_;
+        piece.agent = base_.agent;
         piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
-        const bool following = way_heading_ && step.frame > frame_;  // beyond the first clip
+        const bool following = way_heading_ && step.frame > base_.frame;  // beyond the first clip
         return queries_.piece_free(s, piece, [&](int, const Piece& other) { return following && walks_on(s, other); });
     };
-    const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
+    const LearnedCost& learned = s.agents[std::size_t(base_.agent)].learned;
     const auto to_go = [&](const Placement& end) {
         const double estimate = s.policy.to_go(site, end);
         return t.look_ahead.learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
     };
-    const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
+    const std::vector<double>& score = search_.search(s.graph, next_, base_.place, base_.frame, limits, free, to_go);
     searched_ = true;
     const double best = *std::min_element(score.begin(), score.end());
     if (best < std::numeric_limits<double>::infinity()) {
         search_.learned(best, learned_);
-        learned_.push_back({base_.x, base_.y, best});
+        learned_.push_back({base_.place.x, base_.place.y, best});
     }
     ranked_.clear();
     for (std::size_t k = 0; k < next_.size(); ++k) ranked_.push_back({score[k], int(k)});

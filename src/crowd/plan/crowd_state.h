@@ -65,8 +65,17 @@ struct CrowdState {
     const std::vector<std::array<double, 2>>& waiting_at;  ///< per agent: where it waits (metres)
 };
 
+/// Where a choice point's candidates start: whose choice point it is, at which frame, the placement
+/// there (its t0 on the global frame grid) and its rotation m = Rigid2::of(place).
+struct ChoiceBase {
+    int agent = 0;
+    std::int64_t frame = 0;
+    Placement place;
+    Rigid2 m;
+};
+
 /// Where clip `clip` of `g`, placed at `place`, leaves the agent's disk: its last sample in the world
-/// (metres). Simulation::reach_goals and leaving in stride (Choice::leaves_after) both judge arrival by it
+/// (metres). Simulation::reach_goals and leaving in stride (leaves_in_stride) both judge arrival by it
 /// and reaches_goal, so they agree to the bit: a leaver holds no ground beyond the exit it reaches.
 std::array<double, 2> clip_end(const MotionGraph& g, int clip, const Placement& place);
 /// Whether a disk centred at `p` has reached `goal`: closer than `radius` metres (CrowdOptions::goal_radius).

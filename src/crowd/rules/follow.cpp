@@ -34,7 +34,7 @@ bool Choice::walks_on(const CrowdState& s, const Piece& other) const {
     const std::optional<double> facing = leader_facing(s, other.agent);
     if (!facing) return false;
     const SpaceTimeBox b = box_of(other);
-    return follows(*way_heading_, {base_.x, base_.y}, {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}, *facing,
+    return follows(*way_heading_, {base_.place.x, base_.place.y}, {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}, *facing,
                    s.options.tuning.follow.angle);
 }
 

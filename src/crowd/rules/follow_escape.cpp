@@ -10,7 +10,7 @@ namespace mobb::crowd {
 
 // The agent's own escape: its next stopping clip, else one more clip in place on its held ground.
 bool Choice::take_escape(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
+    const Agent& a = s.agents[std::size_t(base_.agent)];
     if (!a.plan.escape.empty()) {
         taken_ = a.plan.escape.front();
         plan_.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
@@ -40,7 +40,7 @@ bool inside_hold(const CrowdState& s, int c, const Placement& base, const Hold& 
 // One more idle clip on the held ground, all of its disks inside it (so free: the others planned around
 // it). Idle clips loop exactly in place, so the next one fits too.
 bool Choice::hold_on(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
+    const Agent& a = s.agents[std::size_t(base_.agent)];
     if (!a.plan.hold) return false;
     const Hold& h = *a.plan.hold;
     const MotionGraph& g = s.graph;
@@ -55,8 +55,8 @@ bool Choice::hold_on(const CrowdState& s) {
     }
     std::sort(options.begin(), options.end());
     for (int c : options) {
-        if (!inside_hold(s, c, base_, h)) continue;
-        taken_ = frame_clip(s, c, base_, base_m_, frame_);
+        if (!inside_hold(s, c, base_.place, h)) continue;
+        taken_ = frame_clip(s, c, base_.place, base_.m, base_.frame);
         plan_ = Plan{{}, h};
         outcome_ = Outcome::Escape;
         point().taken = c;

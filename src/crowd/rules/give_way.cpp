@@ -24,11 +24,11 @@ bool Choice::passes_waiting(const CrowdState& s, int k) {
     const SpaceTimeBox& b = c.box;
     s.waiting.query(
         {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},
-        agent_, waiters_);
+        base_.agent, waiters_);
     if (waiters_.empty()) return false;
     const double r2 = s.options.tuning.give_way.reach * s.options.tuning.give_way.reach;
     for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {
-        const double px = base_m_.apply_x(x.x, x.y), py = base_m_.apply_y(x.x, x.y);
+        const double px = base_.m.apply_x(x.x, x.y), py = base_.m.apply_y(x.x, x.y);
         for (int w : waiters_) {
             const auto& at = s.waiting_at[std::size_t(w)];
             if ((px - at[0]) * (px - at[0]) + (py - at[1]) * (py - at[1]) < r2) return true;

@@ -24,7 +24,7 @@ bool Choice::may_yield(const CrowdState& s, const Piece& other) const {
     if (owner.arrived || owner.clips.empty()) return false;
     const PlacedClip& playing = owner.clips.back();
     const auto end = playing.start + std::int64_t(s.graph.clips[std::size_t(playing.clip)].path.size());
-    return end > frame_ && !s.escapes.in_place[std::size_t(playing.clip)];
+    return end > base_.frame && !s.escapes.in_place[std::size_t(playing.clip)];
 }
 
 // A hit on another agent's piece that a plan with the right of way goes past: a reservation that may
@@ -38,9 +38,9 @@ bool Choice::yields(const CrowdState& s, const Piece& other) {
 }
 
 bool Choice::has_right_of_way(const CrowdState& s) const {
-    const Agent& a = s.agents[std::size_t(agent_)];
+    const Agent& a = s.agents[std::size_t(base_.agent)];
     return s.options.tuning.right_of_way.on && !arriving_ &&
-           double(frame_ - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way.after;
+           double(base_.frame - a.moved_until) * s.graph.dt() >= s.options.tuning.right_of_way.after;
 }
 
 // The moving candidates before `end` again, in order, now past the reservations that may yield (at most
@@ -51,7 +51,7 @@ bool Choice::take_right_of_way(const CrowdState& s, int end) {
         const PlacedCandidate& c = placed_[std::size_t(k)];
         if (!s.escapes.moves[std::size_t(c.clip)]) continue;
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
+        mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
         yielding_.clear();
         const auto yields = [&](int, const Piece& other) { return this->yields(s, other); };
         if (!queries_.candidate_free(s, k, mine, Hits::Stop, yields)) continue;
@@ -74,15 +74,15 @@ bool Choice::take_right_of_way(const CrowdState& s, int end) {
 // reroutes found before it and of everything else but what the taking would release.
 bool Choice::reroute_yielding(const CrowdState& s, const BoxedClip& c) {
     excluded_.clear();
-    excluded_.insert(excluded_.end(), s.agents[std::size_t(agent_)].reserved.begin(),
-                     s.agents[std::size_t(agent_)].reserved.end());
+    excluded_.insert(excluded_.end(), s.agents[std::size_t(base_.agent)].reserved.begin(),
+                     s.agents[std::size_t(base_.agent)].reserved.end());
     for (int w : yielding_) {
         const auto& r = s.agents[std::size_t(w)].reserved;
         excluded_.insert(excluded_.end(), r.begin(), r.end());
     }
     extra_.clear();
     Piece p;
-    p.agent = agent_;
+    p.agent = base_.agent;
     p.clip = c;
     extra_.push_back(p);
     for (const BoxedClip& e : plan_.escape) {

@@ -29,14 +29,14 @@ std::uint32_t Choice::crowded_routes(const CrowdState& s, int k) {
     Hold at[EscapeTable::kMaxRoutes];
     for (std::size_t r = 0; r < ends.size(); ++r) {
         const auto& [x, y] = ends[r];
-        at[r] = {base_m_.apply_x(x, y), base_m_.apply_y(x, y),
-                 s.escapes.hold_of(s.escapes.routes[std::size_t(clip)][r].back()), frame_};
+        at[r] = {base_.m.apply_x(x, y), base_.m.apply_y(x, y),
+                 s.escapes.hold_of(s.escapes.routes[std::size_t(clip)][r].back()), base_.frame};
         box.x0 = std::min(box.x0, at[r].x), box.y0 = std::min(box.y0, at[r].y);
         box.x1 = std::max(box.x1, at[r].x), box.y1 = std::max(box.y1, at[r].y);
     }
     const double reach = s.escapes.hold_radius + gap;
     box.x0 -= reach, box.y0 -= reach, box.x1 += reach, box.y1 += reach;
-    const Hold here{base_.x, base_.y, s.escapes.hold_radius, 0};
+    const Hold here{base_.place.x, base_.place.y, s.escapes.hold_radius, 0};
     std::uint32_t crowded = 0;
     for (int id : queries_.pieces_near(s, box)) {
         const Piece& p = s.pieces[std::size_t(id)];

@@ -1,0 +1,182 @@
+// Each rule of the choice point called alone (src/crowd/rules/, a header each) on a state built by hand -
+// a few agents, what they play and reserve, walls - with its tuning, asserting what the rule decides:
+// - leaving in stride: a clip ending within the goal radius of an exit is the whole plan;
+// The whole runs with each rule on and off are rules_test.cpp and rule_situations_test.cpp.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "choice/choice.h"
+#include "committed_graph.h"
+#include "plan/crowd_state.h"
+#include "rules/leave_in_stride.h"
+
+namespace mobb::crowd {
+namespace {
+
+const MotionGraph& graph() { return test::committed_graph(); }
+
+// A crowd's state built by hand, as the simulation keeps it (sim/simulation.h): agents, the pieces they
+// reserved in the broad phase, the solids, the waiting agents. Not copied: the policy and the state hold
+// references into it.
+struct Scene {
+    const MotionGraph& g = graph();
+    const std::vector<ClipOutline> outlines = outlines_of(g);
+    const NarrowPhase narrow = NarrowPhase::sweep(g);
+    const EscapeTable escapes = EscapeTable::build(g);
+    CrowdOptions options;
+    std::unique_ptr<Policy> policy;
+    double hold_clearance = 0;
+    std::vector<Polygon> solids;
+    BroadPhase solid_grid{4.0};
+    BroadPhase broad{4.0};
+    std::vector<Agent> agents;
+    std::vector<Piece> pieces;
+    BroadPhase waiting{4.0};
+    std::vector<std::array<double, 2>> waiting_at;
+
+    // A world [-20, 20]^2 with walls and `obstacles`, agents choosing by `select` (goals: every goal of the
+    // run, for the goal policy's navigation fields).
+    explicit Scene(Selection select = Selection::Avoid, std::vector<Polygon> obstacles = {},
+                   std::vector<std::array<double, 2>> goals = {}) {
+        options.world = {-20, -20, 20, 20, true, std::move(obstacles)};
+        options.select = select;
+        policy = make_policy(
+            select, {g, options.world, escapes.in_place, std::move(goals), options.goal_radius, options.tuning});
+        hold_clearance = escapes.turn_clearance;
+        solids = options.world.solids();
+        for (int k = 0; k < int(solids.size()); ++k) {
+            const auto b = bounds(solids[std::size_t(k)]);
+            solid_grid.insert(k, -1, {b[0], b[1], b[2], b[3], std::numeric_limits<std::int64_t>::min(), kForever});
+        }
+    }
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    CrowdState state() const {
+        return {g,      outlines,   narrow, escapes, *policy, options, hold_clearance,
+                solids, solid_grid, broad,  agents,  pieces,  waiting, waiting_at};
+    }
+
+    int add_agent(const Placement& start) {
+        agents.emplace_back().start = start;
+        waiting_at.push_back({0, 0});
+        return int(agents.size()) - 1;
+    }
+    // A piece in the broad phase, placed after every piece before it.
+    int place(Piece p) {
+        p.seq = std::int64_t(pieces.size());
+        pieces.push_back(p);
+        broad.insert(int(pieces.size()) - 1, p.agent, box_of(p));
+        return int(pieces.size()) - 1;
+    }
+    // Agent `a` plays `clip` placed at `p` from `frame` on, committed at choice point `choice`.
+    BoxedClip play(int a, int clip, const Placement& p, std::int64_t frame, int choice = 0) {
+        agents[std::size_t(a)].clips.push_back({clip, frame, p, false, choice});
+        Piece piece;
+        piece.agent = a;
+        piece.choice = choice;
+        piece.clip = frame_clip(state(), clip, p, Rigid2::of(p), frame);
+        place(piece);
+        return piece.clip;
+    }
+    // Agent `a` reserves `plan` (its escape clips, its held ground), as Simulation::reserve does.
+    void reserve(int a, const Plan& plan, int choice = 0) {
+        Agent& agent = agents[std::size_t(a)];
+        Piece p;
+        p.agent = a;
+        p.choice = choice;
+        for (std::size_t i = 0; i < plan.escape.size(); ++i) {
+            p.index = int(i) + 1;
+            p.clip = plan.escape[i];
+            agent.reserved.push_back(place(p));
+        }
+        if (plan.hold) {
+            p.kind = Piece::Held;
+            p.index = -1;
+            p.hold = *plan.hold;
+            agent.reserved.push_back(place(p));
+        }
+        agent.plan = plan;
+    }
+    // Agent `a` stands at its start for good: the ground it holds there (choice -1, as at a run's start).
+    void stand(int a) {
+        const Placement& s = agents[std::size_t(a)].start;
+        reserve(a, Plan{{}, Hold{s.x, s.y, escapes.hold_radius, 0}}, -1);
+    }
+};
+
+// Clip `clip` placed at `p` from frame 0 on, as a choice point places its candidates.
+PlacedCandidate candidate(const Scene& s, int clip, const Placement& p) {
+    const auto frames = std::int64_t(s.g.clips[std::size_t(clip)].path.size());
+    return place_clip(s.outlines[std::size_t(clip)], clip, frames, p, Rigid2::of(p), 0, nullptr);
+}
+
+// The walking clips of the graph, those that go farthest first.
+std::vector<int> walks(const MotionGraph& g) {
+    std::vector<int> out;
+    for (int c = 0; c < int(g.clips.size()); ++c)
+        if (kind_of(g.clips[std::size_t(c)], c) == ClipKind::Walk) out.push_back(c);
+    const auto reach = [&](int c) {
+        return std::hypot(g.clips[std::size_t(c)].exit_x, g.clips[std::size_t(c)].exit_y);
+    };
+    std::stable_sort(out.begin(), out.end(), [&](int a, int b) { return reach(a) > reach(b); });
+    return out;
+}
+
+// ---- Leaving in stride ----
+
+TEST(RuleUnits, LeavingInStrideTakesAClipEndingWithinTheGoalRadiusOfAnExit) {
+    Scene scene;
+    const int walk = walks(scene.g).front();
+    const Placement base{0, 0, 0, 0};
+    const PlacedCandidate c = candidate(scene, walk, base);
+    const std::array<double, 2> end = clip_end(scene.g, walk, base);
+    const double radius = scene.options.goal_radius;
+    Agent a;
+    a.goals = {{end[0] + 0.9 * radius, end[1]}};
+    a.at_goal = AtGoal::Leave;
+    const LeaveInStrideTuning on, off{false};
+    EXPECT_TRUE(leaves_in_stride(on, scene.g, a, c, radius));
+    EXPECT_FALSE(leaves_in_stride(off, scene.g, a, c, radius)) << "the rule off";
+    EXPECT_FALSE(leaves_in_stride(on, scene.g, a, c, 0.8 * radius)) << "the clip ends outside the goal radius";
+    Agent stays = a;
+    stays.at_goal = AtGoal::Stay;
+    EXPECT_FALSE(leaves_in_stride(on, scene.g, stays, c, radius)) << "its last goal is no exit";
+    Agent on_the_way = a;
+    on_the_way.goals.push_back({15, 15});
+    EXPECT_FALSE(leaves_in_stride(on, scene.g, on_the_way, c, radius)) << "the exit is not its last goal";
+    on_the_way.next_goal = 1;
+    on_the_way.goals.back() = a.goals.front();
+    EXPECT_TRUE(leaves_in_stride(on, scene.g, on_the_way, c, radius)) << "heading for its last goal, an exit";
+}
+
+// A goal agent 1.5 m short of its exit takes a clip into it, and reserves nothing beyond it with the rule
+// on; off, its plan holds ground, as every plan does.
+TEST(RuleUnits, LeavingInStrideLeavesThePlanEmptyAtTheChoicePoint) {
+    for (const bool on : {true, false}) {
+        Scene scene(Selection::Goal, {}, {{1.5, 0}});
+        scene.options.tuning.leave_in_stride.on = on;
+        const int a = scene.add_agent({0, 0, 0, 0});
+        scene.agents[std::size_t(a)].goals = {{1.5, 0}};
+        scene.agents[std::size_t(a)].at_goal = AtGoal::Leave;
+        scene.stand(a);
+        Choice choice;
+        choice.prepare(scene.state(), a, 0);
+        choice.evaluate(scene.state());
+        const BoxedClip& taken = choice.taken();
+        ASSERT_EQ(choice.outcome(), Outcome::Candidate);
+        const bool leaves = reaches_goal(clip_end(scene.g, taken.clip, taken.place), {1.5, 0}, 1.0);
+        EXPECT_TRUE(leaves) << "the clip taken ends in the exit";
+        EXPECT_EQ(!choice.plan().hold && choice.plan().escape.empty(), on && leaves);
+    }
+}
+
+}  // namespace
+}  // namespace mobb::crowd
