@@ -244,6 +244,14 @@ bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
 
 int Choice::last_change(const BatchGrid& chosen, int below) const { return queries_.last_change(chosen, below); }
 
+// The agent's own escape (follow_escape.h).
+bool Choice::take_escape(const CrowdState& s) {
+    if (!follow_escape(s, base_, taken_, plan_)) return false;
+    outcome_ = Outcome::Escape;
+    point().taken = taken_.clip;
+    return true;
+}
+
 void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
     out.push_back(taken_.box);
     const auto add = [&](const Plan& p) {

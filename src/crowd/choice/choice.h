@@ -16,6 +16,7 @@
 #include "collision/batch_grid.h"
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
+#include "rules/follow_escape.h"
 #include "rules/leave_in_stride.h"
 
 namespace mobb::crowd {
@@ -94,7 +95,6 @@ private:
     bool try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded);
     void evaluate_random(const CrowdState& s);
     bool take_escape(const CrowdState& s);
-    bool hold_on(const CrowdState& s);
     void fall_back(const CrowdState& s);
     void take(int k, Outcome how);
 
