@@ -203,7 +203,7 @@ bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c)
         take(k, Outcome::Candidate);
         return true;
     }
-    const std::uint32_t crowded = crowded_routes(s, k);
+    const std::uint32_t crowded = crowded_routes(s.options.tuning.standing_gap, s, base_, c.clip, queries_);
     if (try_routes(s, k, mine.clip, crowded)) return true;
     point().candidates.back().crowded = crowded != 0 && deferred_ != k;
     return false;

@@ -18,6 +18,7 @@
 #include "plan/crowd_state.h"
 #include "rules/follow_escape.h"
 #include "rules/leave_in_stride.h"
+#include "rules/standing_gap.h"
 
 namespace mobb::crowd {
 
@@ -79,7 +80,6 @@ private:
     bool walks_on(const CrowdState& s, const Piece& other) const;
     const PlacedCandidate& place(const CrowdState& s, int k);
     bool yields(const CrowdState& s, const Piece& other);
-    std::uint32_t crowded_routes(const CrowdState& s, int k);
     bool may_yield(const CrowdState& s, const Piece& other) const;
     bool route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
