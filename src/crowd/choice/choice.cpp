@@ -174,18 +174,18 @@ void Choice::evaluate(const CrowdState& s) {
     // With the right of way, the moving candidates tried so far get a second chance before the agent
     // settles for one that does not move.
     bool right_of_way = has_right_of_way(s);
-    deferred_ = -1;
+    give_way_.deferred = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
         const bool moves = s.escapes.moves[std::size_t(c.clip)];
-        if (deferred_ >= 0 && !moves) return take_deferred();
+        if (give_way_.deferred >= 0 && !moves) return take_deferred();
         if (right_of_way && !moves) {
             if (take_right_of_way(s, k)) return;
             right_of_way = false;
         }
         if (try_candidate(s, k, c)) return;
     }
-    if (deferred_ >= 0) return take_deferred();
+    if (give_way_.deferred >= 0) return take_deferred();
     if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
 }
@@ -205,7 +205,7 @@ bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c)
     }
     const std::uint32_t crowded = crowded_routes(s.options.tuning.standing_gap, s, base_, c.clip, queries_);
     if (try_routes(s, k, mine.clip, crowded)) return true;
-    point().candidates.back().crowded = crowded != 0 && deferred_ != k;
+    point().candidates.back().crowded = crowded != 0 && give_way_.deferred != k;
     return false;
 }
 
@@ -225,8 +225,9 @@ bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::
         if (crowded >> r & 1) continue;
         refused_route = &route;
         if (!route_free(s, k, clip, route, plan_, refused)) continue;
-        if (s.escapes.moves[std::size_t(clip.clip)] && passes_waiting(s, k)) {
-            if (deferred_ < 0) deferred_ = k, deferred_plan_ = plan_;
+        if (s.escapes.moves[std::size_t(clip.clip)] &&
+            passes_waiting(s.options.tuning.give_way, s, base_, placed_[std::size_t(k)], give_way_.waiters)) {
+            give_way_.defer(k, plan_);
             return false;
         }
         // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
@@ -243,6 +244,12 @@ bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
 }
 
 int Choice::last_change(const BatchGrid& chosen, int below) const { return queries_.last_change(chosen, below); }
+
+// Giving way (give_way.h): the walk deferred, no later one being free and clear of waiting agents.
+void Choice::take_deferred() {
+    std::swap(plan_, give_way_.plan);
+    take(give_way_.deferred, Outcome::Candidate);
+}
 
 // The agent's own escape (follow_escape.h).
 bool Choice::take_escape(const CrowdState& s) {

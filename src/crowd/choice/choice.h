@@ -17,6 +17,7 @@
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
 #include "rules/follow_escape.h"
+#include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
 #include "rules/standing_gap.h"
 
@@ -84,7 +85,6 @@ private:
     bool route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
     bool has_right_of_way(const CrowdState& s) const;
-    bool passes_waiting(const CrowdState& s, int k);
     void take_deferred();
     bool take_right_of_way(const CrowdState& s, int end);
     bool reroute_yielding(const CrowdState& s, const BoxedClip& c);
@@ -112,9 +112,7 @@ private:
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                  // random mode: index of the clip taken
     bool arriving_ = false;                // at its goal: stops as soon as it can
-    std::vector<int> waiters_;             // scratch: agents waiting near a candidate
-    int deferred_ = -1;                    // the first free moving candidate that passes a waiting agent
-    Plan deferred_plan_;
+    GiveWayState give_way_;
     Outcome outcome_ = Outcome::Candidate;
     BoxedClip taken_;
     Plan plan_;

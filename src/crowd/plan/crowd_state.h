@@ -61,7 +61,7 @@ struct CrowdState {
     const BroadPhase& broad;             ///< pieces live now
     const std::vector<Agent>& agents;
     const std::vector<Piece>& pieces;  ///< by broad-phase id
-    const BroadPhase& waiting;         ///< agents that waited give_way_after or longer, by id (their ground)
+    const BroadPhase& waiting;         ///< agents that wait (giving way: GiveWayTuning::after), by id (their ground)
     const std::vector<std::array<double, 2>>& waiting_at;  ///< per agent: where it waits (metres)
 };
 
