@@ -16,6 +16,7 @@
 #include "collision/batch_grid.h"
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
+#include "rules/follow.h"
 #include "rules/follow_escape.h"
 #include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
@@ -78,7 +79,6 @@ public:
 private:
     void order(const CrowdState& s);
     void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
-    bool walks_on(const CrowdState& s, const Piece& other) const;
     const PlacedCandidate& place(const CrowdState& s, int k);
     bool yields(const CrowdState& s, const Piece& other);
     bool may_yield(const CrowdState& s, const Piece& other) const;
@@ -122,10 +122,5 @@ private:
     std::vector<Reroute> reroutes_;
     ChoiceQueries queries_;
 };
-
-/// The way agent `agent` faces at the end of the clip it plays (radians, world frame) when others may
-/// follow it (follow.cpp); none when it stopped for good, ends that clip within follow_goal_reach of the
-/// goal it stops at (it is about to), or has played no clip yet.
-std::optional<double> leader_facing(const CrowdState& s, int agent);
 
 }  // namespace mobb::crowd

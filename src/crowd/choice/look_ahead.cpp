@@ -124,7 +124,10 @@ void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon
         piece.agent = base_.agent;
         piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
         const bool following = way_heading_ && step.frame > base_.frame;  // beyond the first clip
-        return queries_.piece_free(s, piece, [&](int, const Piece& other) { return following && walks_on(s, other); });
+        const std::array<double, 2> from{base_.place.x, base_.place.y};
+        return queries_.piece_free(s, piece, [&](int, const Piece& other) {
+            return following && walks_on(s.options.tuning.follow, s, *way_heading_, from, other);
+        });
     };
     const LearnedCost& learned = s.agents[std::size_t(base_.agent)].learned;
     const auto to_go = [&](const Placement& end) {
