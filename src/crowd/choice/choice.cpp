@@ -64,9 +64,7 @@ void Choice::order(const CrowdState& s) {
     }
     next_ = drawn_;
     s.policy.order(site, next_);
-    searched_ = false;
-    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead.on)
-        look_ahead(s, site, horizon);
+    look_ahead(s.options.tuning.look_ahead, s.options.tuning.follow, s, base_, site, queries_, next_, look_ahead_);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
 }
@@ -104,10 +102,7 @@ void Choice::take(int k, Outcome how) {
     taken_ = {c.clip, c.place, base_.frame, c.box, base_.m};
     outcome_ = how;
     point().taken = c.clip;
-    intended_.clear();
-    if (!searched_) return;
-    const std::vector<SearchStep> sequence = search_.sequence(ranked_[std::size_t(k)].second);
-    if (!sequence.empty()) intended_.assign(sequence.begin() + 1, sequence.end());
+    intended_after(look_ahead_, k, intended_);
 }
 
 // Nothing is free and the agent's escape cannot go on: the candidate that stays clear of walls and
@@ -151,7 +146,7 @@ void Choice::evaluate_random(const CrowdState& s) {
 // left it.
 void Choice::reset() {
     queries_.start(base_.agent, base_.frame);
-    learned_.clear();
+    look_ahead_.learned.clear();
     intended_.clear();
     reroutes_.clear();
     outcome_ = Outcome::Candidate;

@@ -12,7 +12,6 @@
 #include <utility>
 #include <vector>
 
-#include "choice/look_ahead.h"
 #include "collision/batch_grid.h"
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
@@ -20,6 +19,7 @@
 #include "rules/follow_escape.h"
 #include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
+#include "rules/look_ahead.h"
 #include "rules/standing_gap.h"
 
 namespace mobb::crowd {
@@ -74,11 +74,10 @@ public:
     /// The clips the look-ahead intends after the one taken (ChoicePoint::intended; empty without one).
     const std::vector<SearchStep>& intended() const { return intended_; }
     /// What the look-ahead learned (LookAhead::learned; empty without one), for the agent's LearnedCost.
-    const std::vector<std::array<double, 3>>& learned() const { return learned_; }
+    const std::vector<std::array<double, 3>>& learned() const { return look_ahead_.learned; }
 
 private:
     void order(const CrowdState& s);
-    void look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon);
     const PlacedCandidate& place(const CrowdState& s, int k);
     bool yields(const CrowdState& s, const Piece& other);
     bool may_yield(const CrowdState& s, const Piece& other) const;
@@ -98,17 +97,12 @@ private:
     void fall_back(const CrowdState& s);
     void take(int k, Outcome how);
 
-    ChoiceBase base_;                             // whose, when and where: every candidate starts there
-    std::vector<int> drawn_;                      // candidate clips in the stream's random order
-    std::vector<int> order_;                      // the same in the policy's order, for the current evaluation
-    std::vector<int> next_;                       // scratch: the order being made
-    std::vector<int> scratch_;                    // scratch: next_ before the look-ahead's reorder
-    std::vector<std::pair<double, int>> ranked_;  // scratch: (look-ahead score, policy rank)
-    LookAhead search_;
-    bool searched_ = false;              // order_ comes from the look-ahead (ranked_ maps it to its nodes)
-    std::optional<double> way_heading_;  // following: the direction the agent wants to go (Policy::heading)
+    ChoiceBase base_;         // whose, when and where: every candidate starts there
+    std::vector<int> drawn_;  // candidate clips in the stream's random order
+    std::vector<int> order_;  // the same in the policy's order, for the current evaluation
+    std::vector<int> next_;   // scratch: the order being made
+    LookAheadState look_ahead_;
     std::vector<SearchStep> intended_;
-    std::vector<std::array<double, 3>> learned_;
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                  // random mode: index of the clip taken
     bool arriving_ = false;                // at its goal: stops as soon as it can

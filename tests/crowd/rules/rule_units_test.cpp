@@ -5,6 +5,7 @@
 // - the standing gap: exactly the routes whose held ground comes within the gap of another's;
 // - giving way: who waits, and a free walk that passes one deferred for a later walk clear of it;
 // - following: whom an agent follows, and which of a leader's pieces it plans past;
+// - the look-ahead: candidates reordered by the best free sequence each leads to, round one who stands;
 // The whole runs with each rule on and off are rules_test.cpp and rule_situations_test.cpp.
 #include <gtest/gtest.h>
 
@@ -24,6 +25,7 @@
 #include "rules/follow_escape.h"
 #include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
+#include "rules/look_ahead.h"
 #include "rules/standing_gap.h"
 
 namespace mobb::crowd {
@@ -500,6 +502,76 @@ TEST(RuleUnits, FollowingHasNoLeaderThatIsAboutToStopForGood) {
     EXPECT_TRUE(leader_facing(t, s, a)) << "farther from its goal";
     agent.arrived = true;
     EXPECT_FALSE(leader_facing(t, s, a)) << "stopped for good";
+}
+
+// ---- The look-ahead ----
+
+// A goal agent at the origin facing its goal 10 m east, one agent standing 3 m ahead on its way: the
+// look-ahead reorders its candidates by sequences that go round, every step free of the one standing.
+TEST(RuleUnits, LookAheadOrdersTheCandidatesByTheirBestFreeSequence) {
+    Scene scene(Selection::Goal, {}, {{10, 0}});
+    const Placement at{0, 0, 0, 0};
+    const ChoiceBase base{scene.add_agent(at), 0, at, Rigid2::of(at)};
+    scene.agents[std::size_t(base.agent)].goals = {{10, 0}};
+    scene.stand(base.agent);
+    scene.stand(scene.add_agent({3, 0, M_PI, 0}));
+    const Piece& standing = scene.pieces.back();
+    const CrowdState s = scene.state();
+    const ChoiceSite site{base.agent, at, std::array<double, 2>{10, 0}, true, 0, false, std::nullopt, {}};
+    // The successors of a walk with many: the candidates of an agent walking.
+    std::vector<int> policy;
+    for (int walk : walks(scene.g))
+        if (policy.size() < 8) policy = scene.g.clips[std::size_t(walk)].successors;
+    s.policy.order(site, policy);
+    LookAheadTuning t;
+    t.budget = 2000;  // every candidate's search to the horizon
+    std::vector<int> order = policy;
+    LookAheadState io;
+    ChoiceQueries q;
+    q.start(base.agent, 0);
+    look_ahead(t, {}, s, base, site, q, order, io);
+    ASSERT_TRUE(io.searched);
+    EXPECT_LE(io.search.tested(), t.budget);
+    EXPECT_GT(q.point().queries, 0u) << "its steps are tested, and counted for the choice point";
+    std::vector<int> sorted = order, before = policy;
+    std::sort(sorted.begin(), sorted.end()), std::sort(before.begin(), before.end());
+    EXPECT_EQ(sorted, before) << "the same candidates";
+    for (std::size_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], policy[std::size_t(io.ranked[k].second)]);
+    for (std::size_t k = 1; k < order.size(); ++k)
+        EXPECT_LE(io.ranked[k - 1].first, io.ranked[k].first) << "the best sequence first";
+    // The sequences found: whole, and every step clear of the one standing; the first one found in the
+    // order is what the choice point intends after its first clip.
+    int whole = 0, first = -1;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::vector<SearchStep> seq = io.search.sequence(io.ranked[k].second);
+        if (seq.empty()) continue;
+        ++whole;
+        if (first < 0) first = int(k);
+        ASSERT_EQ(int(seq.size()), scene.options.tuning.goal.horizon);
+        EXPECT_EQ(seq[0].clip, order[k]);
+        for (const SearchStep& step : seq) {
+            Piece p;
+            p.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
+            EXPECT_FALSE(pieces_collide(s, p, standing, nullptr));
+        }
+    }
+    ASSERT_GT(whole, 0);
+    EXPECT_LT(whole, int(order.size())) << "some walks lead only into the one standing";
+    std::vector<SearchStep> intended;
+    intended_after(io, first, intended);
+    const std::vector<SearchStep> seq = io.search.sequence(io.ranked[std::size_t(first)].second);
+    ASSERT_EQ(intended.size(), seq.size() - 1);
+    EXPECT_EQ(intended[0].clip, seq[1].clip);
+    ASSERT_FALSE(io.learned.empty());
+    EXPECT_EQ(io.learned.back()[0], at.x) << "the time to go learned where it stands";
+    EXPECT_EQ(io.learned.back()[2], io.ranked[0].first);
+    // Off, the policy's order stays.
+    order = policy;
+    look_ahead({false}, {}, s, base, site, q, order, io);
+    EXPECT_FALSE(io.searched);
+    EXPECT_EQ(order, policy);
+    intended_after(io, 0, intended);
+    EXPECT_TRUE(intended.empty());
 }
 
 }  // namespace

@@ -14,10 +14,14 @@
 #include <cstdint>
 #include <functional>
 #include <queue>
+#include <utility>
 #include <vector>
 
 #include "mobb/core/path.h"
 #include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/tuning.h"
+#include "plan/choice_queries.h"
+#include "plan/crowd_state.h"
 
 namespace mobb::crowd {
 
@@ -91,5 +95,28 @@ private:
     std::vector<int> expanded_;    // free nodes whose successors were opened
     int tested_ = 0;
 };
+
+/// A choice point's look-ahead (LookAheadTuning): the search, and the order of the candidates it gave.
+struct LookAheadState {
+    LookAhead search;
+    bool searched = false;  ///< the order comes from the search (ranked maps it to the search's candidates)
+    /// Per candidate in the order given: its score, and its place in the order before (the search's k).
+    std::vector<std::pair<double, int>> ranked;
+    std::vector<int> scratch;                    ///< the order before
+    std::vector<std::array<double, 3>> learned;  ///< appended: what the searches learned (LookAhead::learned)
+};
+
+/// Reorders `io_order` - the candidates, all starting at `base`, in the policy's order - by the best
+/// sequence each leads to, the policy's order breaking ties, when the rule is on and the policy searches
+/// (Policy::horizon(site) clips deep). Each step searched is tested with `q` against the walls and the
+/// others' pieces - past the reservations of the leaders the agent follows beyond its first clip, when it
+/// follows (site.way: FollowTuning) - and the policy's estimate of the time to go rises to what the agent
+/// learned (Agent::learned, LookAheadTuning::learns). What this search learned is appended to io.learned.
+void look_ahead(const LookAheadTuning& t, const FollowTuning& follow, const CrowdState& s, const ChoiceBase& base,
+                const ChoiceSite& site, ChoiceQueries& q, std::vector<int>& io_order, LookAheadState& io);
+
+/// The clips the search intends after candidate k of the order it gave (its best sequence less its first
+/// clip), into `out`; none without a search.
+void intended_after(const LookAheadState& s, int k, std::vector<SearchStep>& out);
 
 }  // namespace mobb::crowd

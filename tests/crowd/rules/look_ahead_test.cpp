@@ -1,4 +1,4 @@
-// The look-ahead (src/crowd/choice/look_ahead.h) on hand-built situations: a barrier a few metres ahead that
+// The look-ahead (src/crowd/rules/look_ahead.h) on hand-built situations: a barrier a few metres ahead that
 // the straight walks run into in their third clip; its budget; refused first clips; the learned
 // times to go; and a crowd whose agents reach their goals sooner with it than without it.
 #include <gtest/gtest.h>
@@ -8,8 +8,8 @@
 #include <fstream>
 #include <limits>
 
-#include "choice/choice.h"
-#include "choice/look_ahead.h"
+#include "plan/learned_cost.h"
+#include "rules/look_ahead.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/scenario/scenario.h"
