@@ -148,7 +148,7 @@ void Choice::reset() {
     queries_.start(base_.agent, base_.frame);
     look_ahead_.learned.clear();
     intended_.clear();
-    reroutes_.clear();
+    right_of_way_.reroutes.clear();
     outcome_ = Outcome::Candidate;
 }
 
@@ -168,20 +168,20 @@ void Choice::evaluate(const CrowdState& s) {
     }
     // With the right of way, the moving candidates tried so far get a second chance before the agent
     // settles for one that does not move.
-    bool right_of_way = has_right_of_way(s);
+    bool right_of_way = has_right_of_way(s.options.tuning.right_of_way, a, base_.frame, s.graph.dt(), arriving_);
     give_way_.deferred = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
         const bool moves = s.escapes.moves[std::size_t(c.clip)];
         if (give_way_.deferred >= 0 && !moves) return take_deferred();
         if (right_of_way && !moves) {
-            if (take_right_of_way(s, k)) return;
+            if (try_right_of_way(s, k)) return;
             right_of_way = false;
         }
         if (try_candidate(s, k, c)) return;
     }
     if (give_way_.deferred >= 0) return take_deferred();
-    if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
+    if (right_of_way && try_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
 }
 
@@ -240,6 +240,16 @@ bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
 
 int Choice::last_change(const BatchGrid& chosen, int below) const { return queries_.last_change(chosen, below); }
 
+// The right of way (right_of_way.h): a moving candidate among the first `end` again, past the
+// reservations of agents that then stop another way.
+bool Choice::try_right_of_way(const CrowdState& s, int end) {
+    const CrowdTuning& t = s.options.tuning;
+    const int k = take_right_of_way(t.right_of_way, s, base_, placed_, end, queries_, right_of_way_, plan_);
+    if (k < 0) return false;
+    take(k, Outcome::RightOfWay);
+    return true;
+}
+
 // Giving way (give_way.h): the walk deferred, no later one being free and clear of waiting agents.
 void Choice::take_deferred() {
     std::swap(plan_, give_way_.plan);
@@ -261,7 +271,7 @@ void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
         if (p.hold) out.push_back(hold_box(*p.hold));
     };
     add(plan_);
-    for (const Reroute& r : reroutes_) {
+    for (const Reroute& r : right_of_way_.reroutes) {
         add(r.plan);
         out.insert(out.end(), r.released.begin(), r.released.end());
     }

@@ -20,6 +20,7 @@
 #include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
 #include "rules/look_ahead.h"
+#include "rules/right_of_way.h"
 #include "rules/standing_gap.h"
 
 namespace mobb::crowd {
@@ -58,7 +59,7 @@ public:
     const BoxedClip& taken() const { return taken_; }
     const Plan& plan() const { return plan_; }
     /// The other agents' plans that gave way (Outcome::RightOfWay).
-    const std::vector<Reroute>& reroutes() const { return reroutes_; }
+    const std::vector<Reroute>& reroutes() const { return right_of_way_.reroutes; }
     /// The boxes the commit changes beyond the agent's own released pieces: the taken clip, its plan, and
     /// the new and released boxes of the reroutes (for the frame's check of later choice points), appended
     /// to `out` (no list made per choice point).
@@ -79,16 +80,10 @@ public:
 private:
     void order(const CrowdState& s);
     const PlacedCandidate& place(const CrowdState& s, int k);
-    bool yields(const CrowdState& s, const Piece& other);
-    bool may_yield(const CrowdState& s, const Piece& other) const;
     bool route_free(const CrowdState& s, int k, const BoxedClip& c, const std::vector<int>& route, Plan& plan,
                     std::size_t& refused);
-    bool has_right_of_way(const CrowdState& s) const;
     void take_deferred();
-    bool take_right_of_way(const CrowdState& s, int end);
-    bool reroute_yielding(const CrowdState& s, const BoxedClip& c);
-    bool reroute(const CrowdState& s, int owner);
-    bool free_for_reroute(const CrowdState& s, const Piece& piece);
+    bool try_right_of_way(const CrowdState& s, int end);
     void reset();
     bool try_candidate(const CrowdState& s, int k, const PlacedCandidate& c);
     bool try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded);
@@ -110,10 +105,7 @@ private:
     Outcome outcome_ = Outcome::Candidate;
     BoxedClip taken_;
     Plan plan_;
-    std::vector<int> yielding_;  // right of way: owners of the reservations the plan being tried meets
-    std::vector<int> excluded_;  // right of way: broad-phase ids released if it is taken (theirs and its own)
-    std::vector<Piece> extra_;   // right of way: the new plan's pieces and the reroutes found so far
-    std::vector<Reroute> reroutes_;
+    RightOfWayState right_of_way_;
     ChoiceQueries queries_;
 };
 
