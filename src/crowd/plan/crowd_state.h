@@ -53,8 +53,7 @@ struct CrowdState {
     const EscapeTable& escapes;
     const Policy& policy;
     const CrowdOptions& options;
-    /// Metres held ground keeps from the solids: EscapeTable::stand_clearance where the policy's agents
-    /// stop near walls (Policy::stops_near_walls, CrowdTuning::stand_near_walls), else turn_clearance.
+    /// Metres held ground keeps from the solids: room to stand or to turn (rules/stand_near_walls.h).
     double hold_clearance;
     const std::vector<Polygon>& solids;  ///< World::solids(), by solid index
     const BroadPhase& solid_grid;        ///< the solids' bounds, by solid index (owner -1)

@@ -13,6 +13,7 @@
 #include "mobb/util/random.h"
 #include "mobb/util/worker_pool.h"
 #include "rules/give_way.h"
+#include "rules/stand_near_walls.h"
 #include "sim/simulation.h"
 
 namespace mobb::crowd {
@@ -57,8 +58,7 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       o_(o),
       escapes_(EscapeTable::build(g, o.tuning)),
       policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
-      hold_clearance_(o.tuning.stand_near_walls.on && policy_->stops_near_walls() ? escapes_.stand_clearance
-                                                                                  : escapes_.turn_clearance),
+      hold_clearance_(hold_clearance(o.tuning.stand_near_walls, *policy_, escapes_)),
       solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
       solid_grid_(solid_grid(solids_, o)),
       pool_(o.threads),

@@ -7,6 +7,7 @@
 // - following: whom an agent follows, and which of a leader's pieces it plans past;
 // - the look-ahead: candidates reordered by the best free sequence each leads to, round one who stands;
 // - the right of way: who has it, which reservations may yield, and a walker's reservation rerouted;
+// - stopping near walls: room to stand for goal agents' held ground, room to turn otherwise.
 // The whole runs with each rule on and off are rules_test.cpp and rule_situations_test.cpp.
 #include <gtest/gtest.h>
 
@@ -28,6 +29,7 @@
 #include "rules/leave_in_stride.h"
 #include "rules/look_ahead.h"
 #include "rules/right_of_way.h"
+#include "rules/stand_near_walls.h"
 #include "rules/standing_gap.h"
 
 namespace mobb::crowd {
@@ -704,6 +706,33 @@ TEST(RuleUnits, RightOfWayReroutesAWalkersReservation) {
     for (std::size_t i = 1; i < rerouted.size(); ++i)  // after the clip it plays
         for (const Piece& t : taken)
             EXPECT_FALSE(pieces_collide(s, rerouted[i], t, nullptr)) << "the reroute is clear of the plan taken";
+}
+
+// ---- Stopping near walls ----
+
+// A goal agent may hold ground in a door 1.6 m wide with the rule on (room to stand), not with it off
+// (room to turn), and a wanderer never: meets_solid with the clearance the rule gives.
+TEST(RuleUnits, StandingNearWallsLetsGoalAgentsStopWithRoomToStand) {
+    const std::vector<Polygon> door{Polygon::rectangle(-0.5, -4, 0.5, -0.8), Polygon::rectangle(-0.5, 0.8, 0.5, 4)};
+    Scene goal(Selection::Goal, door, {{5, 0}}), wander(Selection::Avoid, door);
+    const EscapeTable& e = goal.escapes;
+    ASSERT_LT(e.stand_clearance, 0.8);
+    ASSERT_GT(e.turn_clearance, 0.8);
+    EXPECT_EQ(hold_clearance({}, *goal.policy, e), e.stand_clearance);
+    EXPECT_EQ(hold_clearance({false}, *goal.policy, e), e.turn_clearance);
+    EXPECT_EQ(hold_clearance({}, *wander.policy, e), e.turn_clearance) << "wanderers keep room to turn";
+    Piece in_door;
+    in_door.kind = Piece::Held;
+    in_door.hold = {0, 0, e.hold_radius, 0};
+    const auto meets_a_post = [&](Scene& scene, double clearance) {
+        scene.hold_clearance = clearance;
+        bool meets = false;
+        for (int k = 0; k < int(scene.solids.size()); ++k) meets = meets || meets_solid(scene.state(), in_door, k);
+        return meets;
+    };
+    EXPECT_FALSE(meets_a_post(goal, hold_clearance({}, *goal.policy, e)));
+    EXPECT_TRUE(meets_a_post(goal, hold_clearance({false}, *goal.policy, e)));
+    EXPECT_TRUE(meets_a_post(wander, hold_clearance({}, *wander.policy, e)));
 }
 
 }  // namespace
