@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
-#include "mobb/core/angle.h"
 #include "mobb/core/assert.h"
 #include "mobb/util/random.h"
 
@@ -36,7 +34,8 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 }
 
 // The policy's order of the drawn candidates, from the state as it is now (the neighbours may have
-// moved since a first evaluation); placements are kept only while the order is unchanged.
+// moved since a first evaluation), then the look-ahead's (look_ahead.h); placements are kept only while
+// the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(base_.agent)];
     ChoiceSite site{base_.agent, base_.place, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
@@ -152,9 +151,17 @@ void Choice::reset() {
     outcome_ = Outcome::Candidate;
 }
 
-// The candidates in the policy's order, the first taken whose clip and one of whose escape routes are free
-// (try_candidate). Failing that: the walk deferred to give way (give_way.cpp), the right of way
-// (right_of_way.cpp), the agent's own escape (follow_escape.cpp), and last the fallback.
+// The steps of a choice point, in order (the rules: rules/, a header each):
+//  1. the candidates' order: the policy's, then the look-ahead's (look_ahead.h, past the reservations of
+//     the leaders it follows: follow.h) - order();
+//  2. an agent not started yet, or at its goal for good, follows its escape (follow_escape.h);
+//  3. the candidates in that order (try_candidate): the first is taken whose clip is free and leaves in
+//     stride (leave_in_stride.h), or one of whose escape routes - but those that stop within the standing
+//     gap of another (standing_gap.h) - has a free plan; a free walk passing an agent that waits is
+//     deferred (give_way.h), and taken at the first candidate that does not move, or when none is left;
+//  4. with the right of way (right_of_way.h), before the first candidate that does not move and after the
+//     last, the moving candidates again, past the reservations of agents that then stop another way;
+//  5. the agent's own escape (follow_escape.h), and last the fallback.
 void Choice::evaluate(const CrowdState& s) {
     reset();
     order(s);
@@ -185,15 +192,16 @@ void Choice::evaluate(const CrowdState& s) {
     if (!take_escape(s)) fall_back(s);
 }
 
-// Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride, or one of
-// its escape routes is free too (try_routes). Returns whether it was taken.
+// Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride
+// (leave_in_stride.h: no stop beyond the exit), or one of its escape routes is free too (try_routes).
+// Returns whether it was taken.
 bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c) {
     point().candidates.emplace_back().clip = c.clip;
     Piece mine;
     mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
     if (!queries_.candidate_free(s, k, mine, Hits::Stop)) return false;
     const Agent& a = s.agents[std::size_t(base_.agent)];
-    if (leaves_in_stride(s.options.tuning.leave_in_stride, s.graph, a, c, s.options.goal_radius)) {  // no stop beyond
+    if (leaves_in_stride(s.options.tuning.leave_in_stride, s.graph, a, c, s.options.goal_radius)) {
         plan_ = Plan{};
         take(k, Outcome::Candidate);
         return true;
@@ -205,8 +213,8 @@ bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c)
 }
 
 // Candidate k's escape routes in turn, but those that would stop too close to another (`crowded`, a bit
-// per route: standing_gap.cpp): the first whose plan is free of the others is taken - or deferred, when the
-// clip passes an agent that waits (give_way.cpp). Returns whether it was taken.
+// per route: standing_gap.h): the first whose plan is free of the others is taken - or deferred, when the
+// clip moves and passes an agent that waits (give_way.h). Returns whether it was taken.
 bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded) {
     const auto& routes = s.escapes.routes[std::size_t(clip.clip)];
     const std::vector<int>* refused_route = nullptr;

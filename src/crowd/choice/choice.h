@@ -1,15 +1,14 @@
 // One crowd choice point (paper section 5): its candidates, drawn from the choice point's own random
 // stream and put in order by the policy, placed in the world, and tested against what the other agents
-// reserved. In the avoiding modes a candidate is taken only with a free escape (escape.h): its plan - the
-// clip, the clips that stop the agent, the ground it then holds - must be free; when no candidate's is,
-// the agent follows its own escape, which the others were planned around. Evaluations only read the
-// reserved state, so the choice points of one frame run in parallel.
+// reserved. In the avoiding modes a candidate is taken only with a free escape (plan/escape.h): its plan -
+// the clip, the clips that stop the agent, the ground it then holds - must be free; when no candidate's
+// is, the agent follows its own escape, which the others were planned around. The rules that shape the
+// choice are units of their own (rules/, a header each: their tuning, state and function); evaluate()
+// applies them in order. Evaluations only read the reserved state, so the choice points of one frame run
+// in parallel.
 #pragma once
 #include <array>
 #include <cstdint>
-#include <limits>
-#include <optional>
-#include <utility>
 #include <vector>
 
 #include "collision/batch_grid.h"
@@ -33,7 +32,7 @@ enum class Outcome : std::uint8_t {
     Fallback,    ///< nothing free and no escape left: the least bad candidate
     RightOfWay,  ///< none was free, but the agent had waited long enough and a moving candidate was free once
                  ///< the other agents whose reservations it met took other ways to stop (Reroute), or
-                 ///< free but for the standing gap (no Reroute then): right_of_way.cpp
+                 ///< free but for the standing gap (no Reroute then): rules/right_of_way.h
 };
 
 // Aligned to a cache line: neighbouring choice points are evaluated by different threads.
@@ -96,17 +95,18 @@ private:
     std::vector<int> drawn_;  // candidate clips in the stream's random order
     std::vector<int> order_;  // the same in the policy's order, for the current evaluation
     std::vector<int> next_;   // scratch: the order being made
-    LookAheadState look_ahead_;
     std::vector<SearchStep> intended_;
     std::vector<PlacedCandidate> placed_;  // order_[0 .. placed_.size()) placed
     int random_pick_ = 0;                  // random mode: index of the clip taken
     bool arriving_ = false;                // at its goal: stops as soon as it can
-    GiveWayState give_way_;
     Outcome outcome_ = Outcome::Candidate;
     BoxedClip taken_;
     Plan plan_;
+    ChoiceQueries queries_;  // its queries and its record
+    // The rules' state (rules/).
+    LookAheadState look_ahead_;
+    GiveWayState give_way_;
     RightOfWayState right_of_way_;
-    ChoiceQueries queries_;
 };
 
 }  // namespace mobb::crowd

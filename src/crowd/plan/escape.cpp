@@ -54,7 +54,7 @@ void routes_from(const MotionGraph& g, const std::vector<ClipKind>& kind, const 
 }
 
 // Where route `route` after clip `clip` holds its ground, in the clip's frame: chained as the crowd places
-// it (build_plan in choice.cpp).
+// it (build_plan, crowd_state.h).
 std::array<double, 2> route_end(const MotionGraph& g, int clip, const std::vector<int>& route) {
     Placement p;
     int prev = clip;

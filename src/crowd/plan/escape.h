@@ -17,23 +17,23 @@ struct EscapeTable {
     std::vector<ClipKind> kind;  ///< per clip
     std::vector<char> in_place;  ///< per clip: InPlace or Idle
     /// Per clip: from its start to its exit at CrowdTuning::moving_speed or faster (an agent playing it
-    /// is not waiting). An agent that played none for a while has the right of way (right_of_way.cpp).
+    /// is not waiting). An agent that played none for a while has the right of way (rules/right_of_way.h).
     std::vector<char> moves;
     std::vector<double> footprint;  ///< per clip: max over samples of |p_i - p_0| + r_i
     /// Per clip: successor chains c1..ck, ck idle (k = 1 when a successor already is), the shortest first,
-    /// then one clip longer, at most CrowdTuning::escape_routes of them; none when an idle clip is more
-    /// than CrowdTuning::escape_steps clips away.
+    /// then one clip longer, at most EscapeTuning::routes of them; none when an idle clip is more
+    /// than EscapeTuning::steps clips away.
     std::vector<std::vector<std::vector<int>>> routes;
     /// Per clip, per route: where the route's held ground is, in the clip's own frame (metres: the clip
     /// placed at the origin facing +x), so a choice point places it without chaining the route.
     std::vector<std::vector<std::array<double, 2>>> ends;
     double hold_radius = 0;  ///< hold_of() the largest idle clip: any idle clip fits
     /// How far held ground may come to walls and obstacles: room for any idle clip plus
-    /// CrowdTuning::wall_margin, so an agent that stops can stand there (where its policy stops near
+    /// EscapeTuning::wall_margin, so an agent that stops can stand there (where its policy stops near
     /// walls: CrowdState::hold_clearance).
     double stand_clearance = 0;
     /// How far a start stays from walls and obstacles: room for any clip in place (turning on the spot)
-    /// plus CrowdTuning::wall_margin, so an agent can set off in every direction.
+    /// plus EscapeTuning::wall_margin, so an agent can set off in every direction.
     double turn_clearance = 0;
 
     /// The held ground's radius for idle clip `idle`: its footprint (it loops exactly in place), a
@@ -42,8 +42,8 @@ struct EscapeTable {
 
     static constexpr int kMaxRoutes = 32;  ///< a choice point marks a clip's routes in 32 bits
 
-    /// With CrowdTuning's moving_speed, escape_steps and escape_routes. Throws std::invalid_argument when
-    /// the graph has no idle clip or escape_routes > kMaxRoutes.
+    /// With CrowdTuning's moving_speed and escape (steps, routes, wall_margin). Throws
+    /// std::invalid_argument when the graph has no idle clip or escape.routes > kMaxRoutes.
     static EscapeTable build(const MotionGraph& graph, const CrowdTuning& tuning = {});
 };
 
