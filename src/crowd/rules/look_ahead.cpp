@@ -125,8 +125,8 @@ bool step_free(const FollowTuning& follow, const CrowdState& s, const ChoiceBase
     piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
     const bool following = way && step.frame > base.frame;  // beyond the first clip
     const std::array<double, 2> from{base.place.x, base.place.y};
-    return q.piece_free(
-        s, piece, [&](int, const Piece& other) { return following && walks_on(follow, s, *way, from, other); });
+    return q.piece_free(s, piece,
+                        [&](int, const Piece& other) { return following && walks_on(follow, s, *way, from, other); });
 }
 
 // The candidates of `io_order` by `score`, the lowest first; the order before breaks ties (io.ranked
@@ -134,7 +134,8 @@ bool step_free(const FollowTuning& follow, const CrowdState& s, const ChoiceBase
 void reorder(const std::vector<double>& score, std::vector<int>& io_order, LookAheadState& io) {
     io.ranked.clear();
     for (std::size_t k = 0; k < io_order.size(); ++k) io.ranked.push_back({score[k], int(k)});
-    std::stable_sort(io.ranked.begin(), io.ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(io.ranked.begin(), io.ranked.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     io.scratch = io_order;
     for (std::size_t k = 0; k < io_order.size(); ++k) io_order[k] = io.scratch[std::size_t(io.ranked[k].second)];
 }

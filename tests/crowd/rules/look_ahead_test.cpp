@@ -8,12 +8,12 @@
 #include <fstream>
 #include <limits>
 
-#include "plan/learned_cost.h"
-#include "rules/look_ahead.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/scenario/scenario.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/learned_cost.h"
+#include "rules/look_ahead.h"
 
 namespace mobb::crowd {
 namespace {
