@@ -134,27 +134,25 @@ void add_run_options(CLI::App& cmd, CrowdArgs& a) {
 
 // Each rule can be switched off (include/mobb/crowd/tuning.h), so its effect is one command away.
 void add_rule_switches(CLI::App& cmd, crowd::CrowdTuning& off, std::vector<std::string>& tune) {
-    const auto rule_off = [&](const char* flag, bool crowd::CrowdTuning::*rule, const char* what) {
+    const auto rule_off = [&](const char* flag, bool& rule, const char* what) {
         cmd.add_flag_callback(
-            flag, [&off, rule] { off.*rule = false; }, what);
+            flag, [&rule] { rule = false; }, what);
     };
-    rule_off("--no-look-ahead", &crowd::CrowdTuning::look_ahead,
+    rule_off("--no-look-ahead", off.look_ahead.on,
              "Goal agents try their candidates in the policy's order alone, without searching clip sequences");
-    rule_off("--no-follow", &crowd::CrowdTuning::follow,
+    rule_off("--no-follow", off.follow.on,
              "Goal agents' look-ahead treats the reservations of agents going their way as walls, beyond the "
              "first clip too");
-    rule_off("--no-right-of-way", &crowd::CrowdTuning::right_of_way,
-             "An agent that waited never pushes others' reservations aside");
-    rule_off("--no-give-way", &crowd::CrowdTuning::give_way, "Walkers do not keep clear of agents that wait");
-    rule_off("--no-stand-near-walls", &crowd::CrowdTuning::stand_near_walls,
+    rule_off("--no-right-of-way", off.right_of_way.on, "An agent that waited never pushes others' reservations aside");
+    rule_off("--no-give-way", off.give_way.on, "Walkers do not keep clear of agents that wait");
+    rule_off("--no-stand-near-walls", off.stand_near_walls.on,
              "Held ground keeps room to turn on the spot from walls and obstacles, not only room to stand");
-    rule_off("--no-leave-in-stride", &crowd::CrowdTuning::leave_in_stride,
+    rule_off("--no-leave-in-stride", off.leave_in_stride.on,
              "Agents leaving at an exit reserve a stop beyond it, as any clip's plan does");
-    rule_off("--no-standing-gap", &crowd::CrowdTuning::standing_gap,
-             "Wanderers may stop right beside another's held ground");
+    rule_off("--no-standing-gap", off.standing_gap.on, "Wanderers may stop right beside another's held ground");
     cmd.add_option("--tune", tune,
                    "Set a field of CrowdTuning, NAME=VALUE (repeatable; include/mobb/crowd/tuning.h), e.g. "
-                   "--tune look_ahead_budget=192");
+                   "--tune look_ahead.budget=192 (the flat names of before, look_ahead_budget=192, still work)");
 }
 
 // The usage errors the parser cannot see: options that do not go together, a bad --tune. Prints one line

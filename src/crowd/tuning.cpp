@@ -1,10 +1,12 @@
 // CrowdTuning's fields by name, so that any of them can be set from the command line
-// (`mobb crowd --tune NAME=VALUE`) and a tuning is measured without a rebuild.
+// (`mobb crowd --tune NAME=VALUE`) and a tuning is measured without a rebuild: each by its name as the
+// fields nest (give_way.reach), and by the flat name it had before (give_way_reach), kept for one release.
 #include "mobb/crowd/tuning.h"
 
 #include <charconv>
 #include <stdexcept>
 #include <variant>
+#include <vector>
 
 #include "mobb/io/load.h"
 
@@ -12,46 +14,54 @@ namespace mobb::crowd {
 
 namespace {
 
-using Member = std::variant<bool CrowdTuning::*, int CrowdTuning::*, double CrowdTuning::*>;
+using Target = std::variant<bool*, int*, double*>;
 
 struct Field {
-    const char* name;
-    Member member;
+    const char* name;  ///< as the fields nest: "give_way.reach"
+    const char* flat;  ///< the name of the release before ("give_way_reach"); null when the same
+    Target target;
 };
 
-// clang-format off
 // One line per field of tuning.h, in its order.
-const Field kFields[] = {
-    {"moving_speed", &CrowdTuning::moving_speed},
-    {"escape_steps", &CrowdTuning::escape_steps},
-    {"escape_routes", &CrowdTuning::escape_routes},
-    {"wall_margin", &CrowdTuning::wall_margin},
-    {"stand_near_walls", &CrowdTuning::stand_near_walls},
-    {"leave_in_stride", &CrowdTuning::leave_in_stride},
-    {"right_of_way", &CrowdTuning::right_of_way},
-    {"right_of_way_after", &CrowdTuning::right_of_way_after},
-    {"max_yielding", &CrowdTuning::max_yielding},
-    {"give_way", &CrowdTuning::give_way},
-    {"give_way_after", &CrowdTuning::give_way_after},
-    {"give_way_reach", &CrowdTuning::give_way_reach},
-    {"standing_gap", &CrowdTuning::standing_gap},
-    {"standing_gap_width", &CrowdTuning::standing_gap_width},
-    {"look_ahead", &CrowdTuning::look_ahead},
-    {"look_ahead_budget", &CrowdTuning::look_ahead_budget},
-    {"look_ahead_dead_end", &CrowdTuning::look_ahead_dead_end},
-    {"look_ahead_learns", &CrowdTuning::look_ahead_learns},
-    {"follow", &CrowdTuning::follow},
-    {"follow_angle", &CrowdTuning::follow_angle},
-    {"follow_goal_reach", &CrowdTuning::follow_goal_reach},
-    {"goal_walking", &CrowdTuning::goal_walking},
-    {"goal_turning", &CrowdTuning::goal_turning},
-    {"goal_personal", &CrowdTuning::goal_personal},
-    {"goal_crowding", &CrowdTuning::goal_crowding},
-    {"goal_patience", &CrowdTuning::goal_patience},
-    {"goal_horizon", &CrowdTuning::goal_horizon},
-    {"nav_clearance", &CrowdTuning::nav_clearance},
-};
-// clang-format on
+std::vector<Field> fields_of(CrowdTuning& t) {
+    // clang-format off
+    return {
+        {"moving_speed", nullptr, &t.moving_speed},
+        {"escape.steps", "escape_steps", &t.escape.steps},
+        {"escape.routes", "escape_routes", &t.escape.routes},
+        {"escape.wall_margin", "wall_margin", &t.escape.wall_margin},
+        {"stand_near_walls.on", "stand_near_walls", &t.stand_near_walls.on},
+        {"leave_in_stride.on", "leave_in_stride", &t.leave_in_stride.on},
+        {"right_of_way.on", "right_of_way", &t.right_of_way.on},
+        {"right_of_way.after", "right_of_way_after", &t.right_of_way.after},
+        {"right_of_way.max_yielding", "max_yielding", &t.right_of_way.max_yielding},
+        {"give_way.on", "give_way", &t.give_way.on},
+        {"give_way.after", "give_way_after", &t.give_way.after},
+        {"give_way.reach", "give_way_reach", &t.give_way.reach},
+        {"standing_gap.on", "standing_gap", &t.standing_gap.on},
+        {"standing_gap.width", "standing_gap_width", &t.standing_gap.width},
+        {"look_ahead.on", "look_ahead", &t.look_ahead.on},
+        {"look_ahead.budget", "look_ahead_budget", &t.look_ahead.budget},
+        {"look_ahead.dead_end", "look_ahead_dead_end", &t.look_ahead.dead_end},
+        {"look_ahead.weight", nullptr, &t.look_ahead.weight},
+        {"look_ahead.learns", "look_ahead_learns", &t.look_ahead.learns},
+        {"follow.on", "follow", &t.follow.on},
+        {"follow.angle", "follow_angle", &t.follow.angle},
+        {"follow.goal_reach", "follow_goal_reach", &t.follow.goal_reach},
+        {"goal.walking", "goal_walking", &t.goal.walking},
+        {"goal.turning", "goal_turning", &t.goal.turning},
+        {"goal.personal", "goal_personal", &t.goal.personal},
+        {"goal.crowding", "goal_crowding", &t.goal.crowding},
+        {"goal.patience", "goal_patience", &t.goal.patience},
+        {"goal.horizon", "goal_horizon", &t.goal.horizon},
+        {"goal.nav_clearance", "nav_clearance", &t.goal.nav_clearance},
+        {"goal.neighbourhood", nullptr, &t.goal.neighbourhood},
+        {"goal.neighbours_ahead", nullptr, &t.goal.neighbours_ahead},
+        {"wander.open_ahead", nullptr, &t.wander.open_ahead},
+        {"wander.band", nullptr, &t.wander.band},
+    };
+    // clang-format on
+}
 
 bool parse_bool(const std::string& text) {
     if (text == "true" || text == "on" || text == "1") return true;
@@ -66,35 +76,39 @@ int parse_int(const std::string& text) {
     return v;
 }
 
+// Sets the field `f` names from `value`; `name` as the assignment wrote it, for the error.
+void set_field(const Field& f, const std::string& name, const std::string& value) {
+    if (double* const* d = std::get_if<double*>(&f.target)) {
+        **d = io::parse_number(value, name);  // "NAME: 'VALUE' is not a finite number"
+        return;
+    }
+    try {
+        if (bool* const* b = std::get_if<bool*>(&f.target)) **b = parse_bool(value);
+        if (int* const* i = std::get_if<int*>(&f.target)) **i = parse_int(value);
+    } catch (const std::invalid_argument& e) {
+        std::string what = name;
+        what.append(": '").append(value).append("' ").append(e.what());
+        throw std::invalid_argument(what);
+    }
+}
+
 }  // namespace
 
 void set_tuning(CrowdTuning& tuning, const std::string& assignment) {
     const std::size_t eq = assignment.find('=');
     const std::string name = assignment.substr(0, eq);
-    for (const Field& f : kFields) {
-        if (name != f.name) continue;
+    const std::vector<Field> fields = fields_of(tuning);
+    for (const Field& f : fields) {
+        if (name != f.name && (f.flat == nullptr || name != f.flat)) continue;
         if (eq == std::string::npos) throw std::invalid_argument(name + ": no value (NAME=VALUE)");
-        const std::string value = assignment.substr(eq + 1);
-        if (const auto* d = std::get_if<double CrowdTuning::*>(&f.member)) {
-            tuning.*(*d) = io::parse_number(value, name);  // "NAME: 'VALUE' is not a finite number"
-            return;
-        }
-        try {
-            if (const auto* b = std::get_if<bool CrowdTuning::*>(&f.member)) tuning.*(*b) = parse_bool(value);
-            if (const auto* i = std::get_if<int CrowdTuning::*>(&f.member)) tuning.*(*i) = parse_int(value);
-        } catch (const std::invalid_argument& e) {
-            std::string what = name;
-            what.append(": '").append(value).append("' ").append(e.what());
-            throw std::invalid_argument(what);
-        }
-        return;
+        return set_field(f, name, assignment.substr(eq + 1));
     }
-    std::string fields;
-    for (const Field& f : kFields) {
-        if (!fields.empty()) fields += ", ";
-        fields += f.name;
+    std::string names;
+    for (const Field& f : fields) {
+        if (!names.empty()) names += ", ";
+        names += f.name;
     }
-    throw std::invalid_argument("'" + name + "' is not a field of CrowdTuning (" + fields + ")");
+    throw std::invalid_argument("'" + name + "' is not a field of CrowdTuning (" + names + ")");
 }
 
 }  // namespace mobb::crowd

@@ -41,10 +41,11 @@ FORBIDDEN_SYSTEM = {
     "bench": ("glad/", "GL/", "GLFW/", "imgui", "tiny_gltf"),
 }
 # The crowd's folders, each using only those before it: the numbers, the ground, the motion graph, records,
-# metrics, poses and export, policies, a run's options, broad and narrow phase, the choice point, its rules,
-# the simulation, scenarios.
+# metrics, poses and export, policies, a run's options, broad and narrow phase, plans (what agents reserve,
+# the state a choice point reads, its queries), the rules of the choice point, the choice point, the
+# simulation, scenarios.
 CROWD_ORDER = ["tuning", "world", "graph", "record", "metrics", "motion", "policy", "options", "collision",
-               "choice", "rules", "sim", "scenario"]
+               "plan", "rules", "choice", "sim", "scenario"]
 CROWD_TOP = {"tuning.h": "tuning", "tuning.cpp": "tuning", "options.h": "options", "CMakeLists.txt": None}
 SOURCE = (".h", ".hpp", ".cpp", ".cc")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')

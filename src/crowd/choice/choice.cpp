@@ -2,112 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
-#include "mobb/core/angle.h"
 #include "mobb/core/assert.h"
 #include "mobb/util/random.h"
 
 namespace mobb::crowd {
 
-namespace {
-
-SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x + h.r, h.y + h.r, h.frame, kForever}; }
-
-// What a piece's solid queries cover: its held ground reaches as far as it keeps clear of the walls.
-SpaceTimeBox solid_box(const CrowdState& s, const Piece& p) {
-    const Hold& h = p.hold;
-    return p.kind == Piece::Held ? hold_box({h.x, h.y, std::max(h.r, s.hold_clearance), h.frame}) : p.clip.box;
-}
-
-// A clip's samples against held ground: a sample covering frames [f, f + 1) overlaps the held disk when
-// f + 1 > the hold's first frame (integer frames: the global grid, exact) and the disks overlap. Blocks
-// of samples whose circle stays a millimetre clear of the disk are skipped (the exact test decides).
-bool clip_meets_hold(const MotionGraph& g, const ClipOutline& outline, const BoxedClip& c, const Hold& h,
-                     QueryStats* stats) {
-    const Path& path = g.clips[std::size_t(c.clip)].path;
-    const Rigid2& m = c.m;
-    const Rigid2 still{1, 0, 0, 0};
-    const Sample disk{h.x, h.y, h.r};
-    // The hold's centre in the clip's frame.
-    const double dx = h.x - m.tx, dy = h.y - m.ty, hx = m.c * dx + m.s * dy, hy = -m.s * dx + m.c * dy;
-    const auto n = std::int64_t(path.size()), block = std::int64_t(ClipOutline::kBlock);
-    for (std::int64_t i = std::max<std::int64_t>(0, h.frame - c.frame); i < n;) {
-        const auto& b = outline.blocks[std::size_t(i / block)];
-        const std::int64_t end = std::min(n, (i / block + 1) * block);
-        const double reach = b[2] + h.r + 1e-3;
-        if ((b[0] - hx) * (b[0] - hx) + (b[1] - hy) * (b[1] - hy) >= reach * reach) {
-            i = end;
-            continue;
-        }
-        for (; i < end; ++i) {
-            if (stats) ++stats->samples;
-            if (samples_overlap(m, path.samples[std::size_t(i)], still, disk)) return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
-
-std::array<double, 2> clip_end(const MotionGraph& g, int clip, const Placement& place) {
-    const Sample& s = g.clips[std::size_t(clip)].path.samples.back();
-    const Rigid2 m = Rigid2::of(place);
-    return {m.apply_x(s.x, s.y), m.apply_y(s.x, s.y)};
-}
-
-bool reaches_goal(const std::array<double, 2>& p, const std::array<double, 2>& goal, double radius) {
-    return std::hypot(p[0] - goal[0], p[1] - goal[1]) < radius;
-}
-
-SpaceTimeBox box_of(const Piece& p) { return p.kind == Piece::Held ? hold_box(p.hold) : p.clip.box; }
-
-bool pieces_collide(const CrowdState& s, const Piece& mine, const Piece& other, QueryStats* stats) {
-    if (mine.kind == Piece::Clip && other.kind == Piece::Clip) {
-        const BoxedClip &a = mine.clip, &b = other.clip;
-        return s.narrow(a.clip, a.place, a.m, b.clip, b.place, b.m, stats);
-    }
-    if (mine.kind == Piece::Clip)
-        return clip_meets_hold(s.graph, s.outlines[std::size_t(mine.clip.clip)], mine.clip, other.hold, stats);
-    if (other.kind == Piece::Clip)
-        return clip_meets_hold(s.graph, s.outlines[std::size_t(other.clip.clip)], other.clip, mine.hold, stats);
-    return holds_meet(mine.hold, other.hold);
-}
-
-void query_pieces(const CrowdState& s, const SpaceTimeBox& box, int owner, std::vector<int>& out) {
-    s.broad.query(box, owner, out, false);  // ordered here, by seq
-    if (out.size() < 2) return;
-    const std::vector<Piece>& p = s.pieces;
-    std::sort(out.begin(), out.end(), [&](int a, int b) { return p[std::size_t(a)].seq < p[std::size_t(b)].seq; });
-}
-
-bool meets_solid(const CrowdState& s, const Piece& mine, int k) {
-    const Polygon& solid = s.solids[std::size_t(k)];
-    // Held ground keeps CrowdState::hold_clearance from the walls: room to stand there, or to turn round.
-    if (mine.kind == Piece::Held) return disk_overlaps(solid, mine.hold.x, mine.hold.y, s.hold_clearance);
-    const BoxedClip& c = mine.clip;
-    return path_hits(s.graph.clips[std::size_t(c.clip)].path, c.m, solid);
-}
-
 void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
-    agent_ = agent;
-    frame_ = frame;
+    base_.agent = agent;
+    base_.frame = frame;
     util::Random rng = util::Random::stream(s.options.seed, std::uint64_t(agent), std::uint64_t(frame));
     const Agent& a = s.agents[std::size_t(agent)];
     const MotionGraph& g = s.graph;
     std::vector<int>& order = drawn_;
-    base_ = a.start;
+    base_.place = a.start;
     if (a.clips.empty()) {
         order = g.clips[std::size_t(rng.below(int(g.clips.size())))].successors;
     } else {
         const PlacedClip& last = a.clips.back();
         order = g.clips[std::size_t(last.clip)].successors;
-        base_ = g.next(last.place, last.clip);
+        base_.place = g.next(last.place, last.clip);
     }
     if (order.empty()) throw std::invalid_argument("crowd: a graph clip has no successors");
-    base_.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
-    base_m_ = Rigid2::of(base_);
+    base_.place.t0 = double(frame) * g.dt();  // on the global grid, not accumulated
+    base_.m = Rigid2::of(base_.place);
     for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[std::size_t(rng.below(int(k)))]);
     random_pick_ = rng.below(int(order.size()));
     order_.clear();
@@ -115,24 +34,27 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 }
 
 // The policy's order of the drawn candidates, from the state as it is now (the neighbours may have
-// moved since a first evaluation); placements are kept only while the order is unchanged.
+// moved since a first evaluation), then the look-ahead's (look_ahead.h); placements are kept only while
+// the order is unchanged.
 void Choice::order(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    ChoiceSite site{agent_, base_, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
-    site.arrived = frame_ >= a.start_frame && s.policy.arrived(site);
-    if (s.options.tuning.follow) site.way = s.policy.heading(site);
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    ChoiceSite site{base_.agent, base_.place, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
+    site.arrived = base_.frame >= a.start_frame && s.policy.arrived(site);
+    if (s.options.tuning.follow.on) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
     const double reach = s.policy.neighbourhood();
     if (reach == 0 && !order_.empty()) return;  // re-evaluated: what the order depends on is the same
     if (reach > 0) {
-        const SpaceTimeBox around{base_.x - reach, base_.y - reach,
-                                  base_.x + reach, base_.y + reach,
-                                  frame_,          frame_ + std::int64_t(std::llround(4.0 / s.graph.dt()))};
-        note_query(around);
-        query_pieces(s, around, agent_, near_);
-        for (int id : near_) {
+        const SpaceTimeBox around{
+            base_.place.x - reach,
+            base_.place.y - reach,
+            base_.place.x + reach,
+            base_.place.y + reach,
+            base_.frame,
+            base_.frame + std::int64_t(std::llround(s.options.tuning.goal.neighbours_ahead / s.graph.dt()))};
+        for (int id : queries_.pieces_near(s, around)) {
             const Piece& p = s.pieces[std::size_t(id)];
-            const std::optional<double> facing = leader_facing(s, p.agent);
+            const std::optional<double> facing = leader_facing(s.options.tuning.follow, s, p.agent);
             if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing});
             if (p.kind == Piece::Clip)
                 site.neighbours.push_back(
@@ -141,132 +63,23 @@ void Choice::order(const CrowdState& s) {
     }
     next_ = drawn_;
     s.policy.order(site, next_);
-    searched_ = false;
-    if (const int horizon = s.policy.horizon(site); horizon > 0 && s.options.tuning.look_ahead)
-        look_ahead(s, site, horizon);
+    look_ahead(s.options.tuning.look_ahead, s.options.tuning.follow, s, base_, site, queries_, next_, look_ahead_);
     if (next_ != order_) placed_.clear();
     std::swap(order_, next_);
 }
 
 const PlacedCandidate& Choice::place(const CrowdState& s, int k) {
     MOBB_ASSERT(k >= 0 && std::size_t(k) < order_.size());
-    const Rigid2& m = base_m_;
+    const Rigid2& m = base_.m;
     while (int(placed_.size()) <= k) {
         const int clip = order_[placed_.size()];
         // The random mode ranks candidates leaving the world; the others meet the walls instead.
         const World* world = s.policy.avoids() ? nullptr : &s.options.world;
         placed_.push_back(place_clip(s.outlines[std::size_t(clip)], clip,
-                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_, m, frame_,
-                                     world));
+                                     std::int64_t(s.graph.clips[std::size_t(clip)].path.size()), base_.place, m,
+                                     base_.frame, world));
     }
     return placed_[std::size_t(k)];
-}
-
-BoxedClip frame_clip(const CrowdState& s, int clip, const Placement& p, const Rigid2& m, std::int64_t frame) {
-    const std::int64_t frames = std::int64_t(s.graph.clips[std::size_t(clip)].path.size());
-    return {clip, p, frame, place_clip(s.outlines[std::size_t(clip)], clip, frames, p, m, frame, nullptr).box, m};
-}
-
-void Choice::count_query(const QueryStats& st) {
-    ++point_.queries;
-    point_.tests2d += st.tests2d;
-    point_.tests3d += st.tests3d;
-    point_.samples += st.samples;
-}
-
-void Choice::record_query(const CrowdState& s, int k, const Piece& mine, CandidateQuery q, const QueryStats& st) {
-    Candidate& cand = point_.candidates[std::size_t(k)];
-    ++cand.queries;
-    count_query(st);
-    if (q.hit) ++cand.hits;
-    if (!s.options.record_queries) return;
-    q.mine = mine.index;
-    cand.against.push_back(q);
-}
-
-// The solids whose bounds overlap `box`, by solid index, into near_ (solid_grid.query). Walls and
-// obstacles never change: where one query around the choice point's first box finds none, every box
-// of the evaluation on that ground has none near.
-void Choice::solids_near(const CrowdState& s, const SpaceTimeBox& box) {
-    constexpr double kAround = 6.0;  // metres: most candidates and their plans stay this close
-    constexpr auto kAll = std::numeric_limits<std::int64_t>::max();
-    if (!solids_asked_) {
-        solids_asked_ = true;
-        const SpaceTimeBox around{box.x0 - kAround, box.y0 - kAround, box.x1 + kAround, box.y1 + kAround, -kAll, kAll};
-        s.solid_grid.query(around, -2, near_);
-        solid_free_ = near_.empty() ? around : SpaceTimeBox{0, 0, -1, -1, 0, 0};
-    }
-    const SpaceTimeBox& f = solid_free_;
-    if (f.x0 <= box.x0 && box.x1 <= f.x1 && f.y0 <= box.y0 && box.y1 <= f.y1) return near_.clear();
-    s.solid_grid.query(box, -2, near_);
-}
-
-// The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
-// solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
-// ever yields.
-bool Choice::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits) {
-    solids_near(s, solid_box(s, mine));
-    bool free = true;
-    for (int i : near_) {
-        const bool hit = meets_solid(s, mine, i);
-        CandidateQuery q;
-        q.agent = -1, q.solid = i, q.hit = hit;
-        record_query(s, k, mine, q, {});
-        if (!hit) continue;
-        point_.candidates[std::size_t(k)].meets_solid = true;
-        free = false;
-        if (hits != Hits::Count) return false;
-    }
-    return free;
-}
-
-// The queries of one piece of candidate k's plan: the solids, then every other agent's piece live in
-// the broad phase.
-bool Choice::free_of_others(const CrowdState& s, int k, const Piece& mine, Hits hits) {
-    bool free = free_of_solids(s, k, mine, hits);
-    if (!free && hits != Hits::Count) return false;
-    const SpaceTimeBox box = box_of(mine);
-    note_query(box);
-    query_pieces(s, box, agent_, near_);
-    near_total_ += near_.size();
-    // The piece that refused the last piece tested here first: the candidates of one choice point start
-    // at the same place and mostly meet the same neighbour (same answers, fewer queries before the hit).
-    const auto last = std::find(near_.begin(), near_.end(), last_hit_);
-    if (last != near_.end()) std::rotate(near_.begin(), last, last + 1);
-    auto& against = point_.candidates[std::size_t(k)].against;
-    if (s.options.record_queries && against.capacity() < against.size() + near_.size())
-        against.reserve(std::max(2 * against.capacity(), against.size() + near_.size()));
-    for (int id : near_) {
-        const Piece& other = s.pieces[std::size_t(id)];
-        QueryStats st;
-        const bool hit = pieces_collide(s, mine, other, &st);
-        if (!hit && mine.kind == Piece::Clip && other.kind == Piece::Clip && st.tests2d + st.tests3d <= 1 &&
-            st.samples == 0)
-            ++root_rejected_;
-        CandidateQuery q;
-        q.agent = other.agent, q.choice = other.choice, q.piece = other.index, q.hit = hit;
-        record_query(s, k, mine, q, st);
-        if (s.options.log_queries && mine.kind == Piece::Clip && other.kind == Piece::Clip)
-            log_.push_back({0, k, mine.clip.clip, other.clip.clip, mine.clip.place, other.clip.place, hit});
-        if (!hit) continue;
-        if (hits == Hits::Yield && may_yield(s, other)) {
-            if (std::find(yielding_.begin(), yielding_.end(), other.agent) != yielding_.end()) continue;
-            if (yielding_.size() < std::size_t(s.options.tuning.max_yielding)) {
-                yielding_.push_back(other.agent);
-                continue;
-            }
-        }
-        last_hit_ = id;
-        free = false;
-        if (hits != Hits::Count) return false;
-    }
-    return free;
-}
-
-Plan plan_along(const CrowdState& s, const BoxedClip& c, const std::vector<int>& route) {
-    Plan plan;
-    build_plan(s, c, route, plan, [](const Piece&) { return true; });
-    return plan;
 }
 
 // Whether candidate k's plan along `route` is free of the others (its clip was tested already), tested
@@ -276,7 +89,7 @@ bool Choice::route_free(const CrowdState& s, int k, const BoxedClip& c, const st
                         std::size_t& refused) {
     refused = 0;
     return build_plan(s, c, route, plan, [&](const Piece& piece) {
-        if (free_of_others(s, k, piece, Hits::Stop)) return true;
+        if (queries_.candidate_free(s, k, piece, Hits::Stop)) return true;
         if (piece.kind == Piece::Clip) refused = std::size_t(piece.index);
         return false;
     });
@@ -285,30 +98,27 @@ bool Choice::route_free(const CrowdState& s, int k, const BoxedClip& c, const st
 void Choice::take(int k, Outcome how) {
     MOBB_ASSERT(k >= 0 && std::size_t(k) < placed_.size());  // tried, so placed
     const PlacedCandidate& c = placed_[std::size_t(k)];
-    taken_ = {c.clip, c.place, frame_, c.box, base_m_};
+    taken_ = {c.clip, c.place, base_.frame, c.box, base_.m};
     outcome_ = how;
-    point_.taken = c.clip;
-    intended_.clear();
-    if (!searched_) return;
-    const std::vector<SearchStep> sequence = search_.sequence(ranked_[std::size_t(k)].second);
-    if (!sequence.empty()) intended_.assign(sequence.begin() + 1, sequence.end());
+    point().taken = c.clip;
+    intended_after(look_ahead_, k, intended_);
 }
 
 // Nothing is free and the agent's escape cannot go on: the candidate that stays clear of walls and
 // obstacles with the fewest collisions (its queries run in full), its first route reserved unchecked.
 void Choice::fall_back(const CrowdState& s) {
-    point_.fallback = true;
+    point().fallback = true;
     int best = -1;
     std::pair<int, int> best_key{1 << 30, 1 << 30};
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        if (int(point_.candidates.size()) <= k) point_.candidates.push_back({});
-        point_.candidates[std::size_t(k)] = Candidate{};
-        point_.candidates[std::size_t(k)].clip = c.clip;
+        if (int(point().candidates.size()) <= k) point().candidates.push_back({});
+        point().candidates[std::size_t(k)] = Candidate{};
+        point().candidates[std::size_t(k)].clip = c.clip;
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, Hits::Count);
-        const Candidate& cand = point_.candidates[std::size_t(k)];
+        mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
+        queries_.candidate_free(s, k, mine, Hits::Count);
+        const Candidate& cand = point().candidates[std::size_t(k)];
         const std::pair<int, int> key{cand.meets_solid ? 1 : 0, cand.hits};
         if (key < best_key) best = k, best_key = key;
     }
@@ -321,11 +131,11 @@ void Choice::fall_back(const CrowdState& s) {
 void Choice::evaluate_random(const CrowdState& s) {
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
-        point_.candidates.emplace_back().clip = c.clip;
-        point_.candidates.back().leaves_world = c.leaves_world;
+        point().candidates.emplace_back().clip = c.clip;
+        point().candidates.back().leaves_world = c.leaves_world;
         Piece mine;
-        mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-        free_of_others(s, k, mine, Hits::Count);
+        mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
+        queries_.candidate_free(s, k, mine, Hits::Count);
     }
     take(random_pick_, Outcome::Candidate);
     plan_ = Plan{};
@@ -334,78 +144,77 @@ void Choice::evaluate_random(const CrowdState& s) {
 // Forgets the last choice point's outcome and counters; keeps the candidates' memory, when the record
 // left it.
 void Choice::reset() {
-    std::vector<Candidate> candidates = std::move(point_.candidates);
-    candidates.clear();
-    point_ = ChoicePoint{};
-    point_.candidates = std::move(candidates);
-    point_.agent = agent_;
-    point_.frame = frame_;
-    queried_boxes_.clear();
-    solids_asked_ = false;
-    near_total_ = 0;
-    root_rejected_ = 0;
-    last_hit_ = -1;
-    log_.clear();
-    learned_.clear();
+    queries_.start(base_.agent, base_.frame);
+    look_ahead_.learned.clear();
     intended_.clear();
-    reroutes_.clear();
+    right_of_way_.reroutes.clear();
     outcome_ = Outcome::Candidate;
 }
 
-// The candidates in the policy's order, the first taken whose clip and one of whose escape routes are free
-// (try_candidate). Failing that: the walk deferred to give way (give_way.cpp), the right of way
-// (right_of_way.cpp), the agent's own escape (follow_escape.cpp), and last the fallback.
+// The steps of a choice point, in order (the rules: rules/, a header each):
+//  1. the candidates' order: the policy's, then the look-ahead's (look_ahead.h, past the reservations of
+//     the leaders it follows: follow.h) - order();
+//  2. an agent not started yet, or at its goal for good, follows its escape (follow_escape.h);
+//  3. the candidates in that order (try_candidate): the first is taken whose clip is free and leaves in
+//     stride (leave_in_stride.h), or one of whose escape routes - but those that stop within the standing
+//     gap of another (standing_gap.h) - has a free plan; a free walk passing an agent that waits is
+//     deferred (give_way.h), and taken at the first candidate that does not move, or when none is left;
+//  4. with the right of way (right_of_way.h), before the first candidate that does not move and after the
+//     last, the moving candidates again, past the reservations of agents that then stop another way;
+//  5. the agent's own escape (follow_escape.h), and last the fallback.
 void Choice::evaluate(const CrowdState& s) {
     reset();
     order(s);
-    point_.candidates.reserve(order_.size());
+    point().candidates.reserve(order_.size());
     if (!s.policy.avoids()) return evaluate_random(s);
-    const Agent& a = s.agents[std::size_t(agent_)];
-    if (frame_ < a.start_frame || a.arrived) {
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    if (base_.frame < a.start_frame || a.arrived) {
         if (!take_escape(s)) return fall_back(s);
         if (a.arrived) outcome_ = Outcome::Arrived;
         return;
     }
     // With the right of way, the moving candidates tried so far get a second chance before the agent
     // settles for one that does not move.
-    bool right_of_way = has_right_of_way(s);
-    deferred_ = -1;
+    bool right_of_way = has_right_of_way(s.options.tuning.right_of_way, a, base_.frame, s.graph.dt(), arriving_);
+    give_way_.deferred = -1;
     for (int k = 0; k < int(order_.size()); ++k) {
         const PlacedCandidate& c = place(s, k);
         const bool moves = s.escapes.moves[std::size_t(c.clip)];
-        if (deferred_ >= 0 && !moves) return take_deferred();
+        if (give_way_.deferred >= 0 && !moves) return take_deferred();
         if (right_of_way && !moves) {
-            if (take_right_of_way(s, k)) return;
+            if (try_right_of_way(s, k)) return;
             right_of_way = false;
         }
         if (try_candidate(s, k, c)) return;
     }
-    if (deferred_ >= 0) return take_deferred();
-    if (right_of_way && take_right_of_way(s, int(order_.size()))) return;
+    if (give_way_.deferred >= 0) return take_deferred();
+    if (right_of_way && try_right_of_way(s, int(order_.size()))) return;
     if (!take_escape(s)) fall_back(s);
 }
 
-// Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride, or one of
-// its escape routes is free too (try_routes). Returns whether it was taken.
+// Candidate k, placed as c: taken when its clip is free of the others and it leaves in stride
+// (leave_in_stride.h: no stop beyond the exit), or one of its escape routes is free too (try_routes).
+// Returns whether it was taken.
 bool Choice::try_candidate(const CrowdState& s, int k, const PlacedCandidate& c) {
-    point_.candidates.emplace_back().clip = c.clip;
+    point().candidates.emplace_back().clip = c.clip;
     Piece mine;
-    mine.clip = {c.clip, c.place, frame_, c.box, base_m_};
-    if (!free_of_others(s, k, mine, Hits::Stop)) return false;
-    if (leaves_after(s, c)) {  // leave_in_stride.cpp: no stop beyond the exit
+    mine.clip = {c.clip, c.place, base_.frame, c.box, base_.m};
+    if (!queries_.candidate_free(s, k, mine, Hits::Stop)) return false;
+    const Agent& a = s.agents[std::size_t(base_.agent)];
+    if (leaves_in_stride(s.options.tuning.leave_in_stride, s.graph, a, c, s.options.goal_radius)) {
         plan_ = Plan{};
         take(k, Outcome::Candidate);
         return true;
     }
-    const std::uint32_t crowded = crowded_routes(s, k);
+    const std::uint32_t crowded = crowded_routes(s.options.tuning.standing_gap, s, base_, c.clip, queries_);
     if (try_routes(s, k, mine.clip, crowded)) return true;
-    point_.candidates.back().crowded = crowded != 0 && deferred_ != k;
+    point().candidates.back().crowded = crowded != 0 && give_way_.deferred != k;
     return false;
 }
 
 // Candidate k's escape routes in turn, but those that would stop too close to another (`crowded`, a bit
-// per route: standing_gap.cpp): the first whose plan is free of the others is taken - or deferred, when the
-// clip passes an agent that waits (give_way.cpp). Returns whether it was taken.
+// per route: standing_gap.h): the first whose plan is free of the others is taken - or deferred, when the
+// clip moves and passes an agent that waits (give_way.h). Returns whether it was taken.
 bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::uint32_t crowded) {
     const auto& routes = s.escapes.routes[std::size_t(clip.clip)];
     const std::vector<int>* refused_route = nullptr;
@@ -419,8 +228,9 @@ bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::
         if (crowded >> r & 1) continue;
         refused_route = &route;
         if (!route_free(s, k, clip, route, plan_, refused)) continue;
-        if (s.escapes.moves[std::size_t(clip.clip)] && passes_waiting(s, k)) {
-            if (deferred_ < 0) deferred_ = k, deferred_plan_ = plan_;
+        if (s.escapes.moves[std::size_t(clip.clip)] &&
+            passes_waiting(s.options.tuning.give_way, s, base_, placed_[std::size_t(k)], give_way_.waiters)) {
+            give_way_.defer(k, plan_);
             return false;
         }
         // Arrived when it stands where it is: an idle clip, held on the spot (it loops in place).
@@ -432,26 +242,33 @@ bool Choice::try_routes(const CrowdState& s, int k, const BoxedClip& clip, std::
     return false;
 }
 
-// A piece that is no candidate's (a searched step, a reroute's): free of the solids and of every live
-// piece of the others but the `excluded` ids (and, `following`, those of agents expected to walk on:
-// follow.cpp). Its queries count for the choice point, not for a candidate.
-bool Choice::piece_free(const CrowdState& s, const Piece& piece, const std::vector<int>* excluded, bool following) {
-    solids_near(s, solid_box(s, piece));
-    for (int i : near_) {
-        count_query({});
-        if (meets_solid(s, piece, i)) return false;
-    }
-    const SpaceTimeBox box = box_of(piece);
-    note_query(box);
-    query_pieces(s, box, piece.agent, near_);
-    for (int id : near_) {
-        if (excluded && std::find(excluded->begin(), excluded->end(), id) != excluded->end()) continue;
-        if (following && walks_on(s, s.pieces[std::size_t(id)])) continue;
-        QueryStats st;
-        const bool hit = pieces_collide(s, piece, s.pieces[std::size_t(id)], &st);
-        count_query(st);
-        if (hit) return false;
-    }
+bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
+    return queries_.affected_by(chosen, from, below);
+}
+
+int Choice::last_change(const BatchGrid& chosen, int below) const { return queries_.last_change(chosen, below); }
+
+// The right of way (right_of_way.h): a moving candidate among the first `end` again, past the
+// reservations of agents that then stop another way.
+bool Choice::try_right_of_way(const CrowdState& s, int end) {
+    const CrowdTuning& t = s.options.tuning;
+    const int k = take_right_of_way(t.right_of_way, s, base_, placed_, end, queries_, right_of_way_, plan_);
+    if (k < 0) return false;
+    take(k, Outcome::RightOfWay);
+    return true;
+}
+
+// Giving way (give_way.h): the walk deferred, no later one being free and clear of waiting agents.
+void Choice::take_deferred() {
+    std::swap(plan_, give_way_.plan);
+    take(give_way_.deferred, Outcome::Candidate);
+}
+
+// The agent's own escape (follow_escape.h).
+bool Choice::take_escape(const CrowdState& s) {
+    if (!follow_escape(s, base_, taken_, plan_)) return false;
+    outcome_ = Outcome::Escape;
+    point().taken = taken_.clip;
     return true;
 }
 
@@ -462,37 +279,10 @@ void Choice::boxes(std::vector<SpaceTimeBox>& out) const {
         if (p.hold) out.push_back(hold_box(*p.hold));
     };
     add(plan_);
-    for (const Reroute& r : reroutes_) {
+    for (const Reroute& r : right_of_way_.reroutes) {
         add(r.plan);
         out.insert(out.end(), r.released.begin(), r.released.end());
     }
-}
-
-void Choice::note_query(const SpaceTimeBox& b) {
-    if (queried_boxes_.empty()) queried_all_ = b;
-    queried_all_.enclose(b);
-    queried_boxes_.push_back(b);
-}
-
-bool Choice::affected_by(const BatchGrid& chosen, int from, int below) const {
-    if (queried_boxes_.empty() || from >= below) return false;
-    // Their union first: most choice points are far from every other of their frame.
-    if (!chosen.any_between(queried_all_, from, below)) return false;
-    for (const SpaceTimeBox& b : queried_boxes_)
-        if (chosen.any_between(b, from, below)) return true;
-    return false;
-}
-
-int Choice::last_change(const BatchGrid& chosen, int below) const {
-    if (queried_boxes_.empty()) return -1;
-    const int bound = chosen.last_between(queried_all_, 0, below);  // through their union: often none
-    if (bound < 0) return -1;
-    int last = -1;
-    for (const SpaceTimeBox& b : queried_boxes_) {
-        last = std::max(last, chosen.last_between(b, last + 1, below));
-        if (last == bound) break;
-    }
-    return last;
 }
 
 }  // namespace mobb::crowd

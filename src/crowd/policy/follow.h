@@ -1,4 +1,4 @@
-// Following (CrowdTuning::follow; follow.cpp): whom an agent follows. Shared by the look-ahead, which
+// Following (CrowdTuning::follow; rules/follow.h): whom an agent follows. Shared by the look-ahead, which
 // plans past a leader's reservations, and the goal policy, which counts no crowding for a leader.
 #pragma once
 #include <array>

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 #include <utility>
 
 #include "mobb/crowd/policy/policy.h"
@@ -18,7 +19,13 @@ namespace {
 
 class AvoidPolicy : public Policy {
 public:
-    explicit AvoidPolicy(const PolicyContext& c) : graph_(c.graph), world_(c.world), moving_(c.tuning.moving_speed) {
+    explicit AvoidPolicy(const PolicyContext& c)
+        : graph_(c.graph),
+          world_(c.world),
+          moving_(c.tuning.moving_speed),
+          open_ahead_(c.tuning.wander.open_ahead),
+          band_(c.tuning.wander.band),
+          bands_(bands_of(c.tuning.wander)) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) {
             const GraphClip& clip = graph_.clips[std::size_t(k)];
             kinds_.push_back(kind_of(clip, k));
@@ -29,13 +36,23 @@ public:
     }
 
     Selection kind() const override { return Selection::Avoid; }
+
+    // How many bands of WanderTuning::band fit in its open_ahead; throws std::invalid_argument unless
+    // between 1 and a million.
+    static int bands_of(const WanderTuning& t) {
+        const double bands = t.open_ahead / t.band;
+        if (!(t.band > 0) || !(bands >= 1 && bands <= 1e6))
+            throw std::invalid_argument(
+                "crowd: wander.band must be positive, and wander.open_ahead 1 to a million of it");
+        return int(bands);
+    }
     bool keeps_standing_gap() const override { return true; }
 
     // A stable insertion sort by rank: a few dozen candidates, no allocation.
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
         const Placement& b = site.base;
         const double wall = std::min({b.x - world_.x0, world_.x1 - b.x, b.y - world_.y0, world_.y1 - b.y});
-        if (wall >= kOpenAhead + farthest_ && slower_.size() <= kMaxSlower) return order_in_open(candidates);
+        if (wall >= open_ahead_ + farthest_ && slower_.size() <= kMaxSlower) return order_in_open(candidates);
         const Rigid2 m = Rigid2::of(b);
         struct Ranked {
             int rank, clip;
@@ -61,7 +78,7 @@ private:
         std::size_t walks = 0;
         for (int c : candidates) {
             if (kinds_[std::size_t(c)] != ClipKind::Walk) {
-                ++count[slower_rank_[std::size_t(c)] - kBands - 1];
+                ++count[slower_rank_[std::size_t(c)] - bands_ - 1];
                 continue;
             }
             candidates[walks++] = c;
@@ -70,9 +87,6 @@ private:
             for (int n = count[i]; n > 0; --n) candidates[walks++] = slower_[i];
     }
 
-    static constexpr double kOpenAhead = 8.0;  // metres of ground ahead of a clip's end: "in the open"
-    static constexpr double kBand = 1.0;       // metres: walks toward a wall ranked in bands this wide
-    static constexpr int kBands = int(kOpenAhead / kBand);
     static constexpr std::size_t kMaxSlower = 256;  // order_in_open counts them on the stack
 
     // Clips that do not walk, after every walk: slow ones (starts, stops) that move (moving_) or
@@ -92,30 +106,30 @@ private:
         };
         std::stable_sort(slower.begin(), slower.end(), [&](int a, int b) { return key(a) < key(b); });
         slower_rank_.assign(kinds_.size(), 0);
-        for (std::size_t i = 0; i < slower.size(); ++i) slower_rank_[std::size_t(slower[i])] = kBands + 1 + int(i);
+        for (std::size_t i = 0; i < slower.size(); ++i) slower_rank_[std::size_t(slower[i])] = bands_ + 1 + int(i);
         slower_ = std::move(slower);
     }
 
-    // 0: walks and keeps going into the open; 1 .. kBands: walks toward a wall, the nearer the later;
+    // 0: walks and keeps going into the open; 1 .. bands_: walks toward a wall, the nearer the later;
     // then the slower clips (rank_slower_clips). `wall`: the base's distance to the nearest wall (a clip
-    // ending farther than kOpenAhead from every wall is in the open).
+    // ending farther than open_ahead_ from every wall is in the open).
     int rank(const ChoiceSite& site, const Rigid2& m, int clip, double wall) const {
         const ClipKind kind = kinds_[std::size_t(clip)];
         if (kind == ClipKind::Slow) return slower_rank_[std::size_t(clip)];
         if (kind != ClipKind::Walk) {
             // Turning on the spot near a wall: facing the open first, so that a walk can follow.
-            if (wall - reach_[std::size_t(clip)] >= kOpenAhead) return slower_rank_[std::size_t(clip)];
+            if (wall - reach_[std::size_t(clip)] >= open_ahead_) return slower_rank_[std::size_t(clip)];
             const Placement end = graph_.next(site.base, m, clip);
             const double room = ahead(end, {end.x + std::cos(end.theta), end.y + std::sin(end.theta), 0, 0});
             return slower_rank_[std::size_t(clip)] + int(kinds_.size()) * band(room);
         }
-        if (wall - reach_[std::size_t(clip)] >= kOpenAhead) return 0;
+        if (wall - reach_[std::size_t(clip)] >= open_ahead_) return 0;
         return band(ahead(site.base, graph_.next(site.base, m, clip)));
     }
 
-    // 0 with kOpenAhead metres of room ahead, else 1 .. kBands, the less room the higher.
-    static int band(double room) {
-        return room >= kOpenAhead ? 0 : 1 + std::min(kBands - 1, int((kOpenAhead - room) / kBand));
+    // 0 with open_ahead_ metres of room ahead, else 1 .. bands_, the less room the higher.
+    int band(double room) const {
+        return room >= open_ahead_ ? 0 : 1 + std::min(bands_ - 1, int((open_ahead_ - room) / band_));
     }
 
     // How far the agent could go on in the direction it moved from `from` to `to` before leaving the world.
@@ -134,6 +148,9 @@ private:
     const MotionGraph& graph_;
     const World& world_;
     const double moving_;           // m/s: CrowdTuning::moving_speed
+    const double open_ahead_;       // metres of ground ahead of a clip's end: "in the open" (WanderTuning)
+    const double band_;             // metres: walks toward a wall ranked in bands this wide (WanderTuning)
+    const int bands_;               // of them, from a wall to open_ahead_
     std::vector<ClipKind> kinds_;   // per clip
     std::vector<double> reach_;     // per clip: metres from its start to its exit
     std::vector<int> slower_rank_;  // per clip that does not walk: its rank

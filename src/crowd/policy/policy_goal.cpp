@@ -28,7 +28,7 @@ public:
         : graph_(c.graph),
           tuning_(c.tuning),
           radius_(c.goal_radius),
-          grid_(c.world, c.tuning.nav_clearance, nav_cell(c.world, distinct_goals(c.goals))) {
+          grid_(c.world, c.tuning.goal.nav_clearance, nav_cell(c.world, distinct_goals(c.goals))) {
         for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
         // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
         // stops that much inside the goal radius so that it stays within it to the end.
@@ -56,11 +56,11 @@ public:
         for (std::size_t k = 0; k < scored.size(); ++k) candidates[k] = scored[k].second;
     }
 
-    double neighbourhood() const override { return 6.0; }
+    double neighbourhood() const override { return tuning_.goal.neighbourhood; }
 
-    // A stuck agent (CrowdTuning::goal_patience) and one at its goal order their candidates alone.
+    // A stuck agent (GoalTuning::patience) and one at its goal order their candidates alone.
     int horizon(const ChoiceSite& site) const override {
-        return site.goal && !site.arrived && site.stalled < tuning_.goal_patience ? tuning_.goal_horizon : 0;
+        return site.goal && !site.arrived && site.stalled < tuning_.goal.patience ? tuning_.goal.horizon : 0;
     }
 
     double to_go(const ChoiceSite& site, const Placement& end) const override {
@@ -91,14 +91,14 @@ private:
     // agent could circle its goal for good).
     double seconds(const NavField& field, const Placement& end, const ChoiceSite& site) const {
         const double distance = field.distance(end.x, end.y);
-        const CrowdTuning& k = tuning_;
-        if (distance < stop_radius_) return distance / k.goal_walking;
+        const GoalTuning& k = tuning_.goal;
+        if (distance < stop_radius_) return distance / k.walking;
         const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
-        double t = distance / k.goal_walking + turn / k.goal_turning;
+        double t = distance / k.walking + turn / k.turning;
         for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
             const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
-            if (d2 >= k.goal_personal * k.goal_personal || goes_my_way(site, n)) continue;
-            t += k.goal_crowding * (k.goal_personal - std::sqrt(d2));
+            if (d2 >= k.personal * k.personal || goes_my_way(site, n)) continue;
+            t += k.crowding * (k.personal - std::sqrt(d2));
         }
         return t;
     }
@@ -106,17 +106,17 @@ private:
     // Following (CrowdTuning::follow): a leader is one to follow, not to keep away from.
     bool goes_my_way(const ChoiceSite& site, const Neighbour& n) const {
         return site.way && n.facing &&
-               follows(*site.way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow_angle);
+               follows(*site.way, {site.base.x, site.base.y}, n.at, *n.facing, tuning_.follow.angle);
     }
 
     // Walking on: the estimated time to the goal; standing idle last. A stuck agent
-    // (CrowdTuning::goal_patience) keeps the stream's random order instead, clips that move before those
+    // (GoalTuning::patience) keeps the stream's random order instead, clips that move before those
     // in place, which moves it out of the way of the agents it waits for: two agents meeting head-on in a
     // door each step aside or back rather than turn on the spot in front of the other
     // (bench/results/log.md, "Following").
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.stalled >= tuning_.goal_patience)
+        if (site.stalled >= tuning_.goal.patience)
             return idle + (kinds_[std::size_t(c)] == ClipKind::InPlace ? 1e6 : 0.0);
         const Placement end = graph_.next(site.base, m, c);
         return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);

@@ -1,26 +1,8 @@
-// Following one's own escape (escape.h): when no candidate's plan is free, the agent plays its next
-// stopping clip - the others planned around it - or, at its held ground, one more idle clip inside it.
-#include "choice/choice.h"
+#include "rules/follow_escape.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace mobb::crowd {
-
-// The agent's own escape: its next stopping clip, else one more clip in place on its held ground.
-bool Choice::take_escape(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
-    if (!a.plan.escape.empty()) {
-        taken_ = a.plan.escape.front();
-        plan_.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
-        plan_.hold = a.plan.hold;
-        outcome_ = Outcome::Escape;
-        point_.taken = taken_.clip;
-        return true;
-    }
-    return hold_on(s);
-}
 
 namespace {
 
@@ -35,12 +17,10 @@ bool inside_hold(const CrowdState& s, int c, const Placement& base, const Hold& 
     return true;
 }
 
-}  // namespace
-
 // One more idle clip on the held ground, all of its disks inside it (so free: the others planned around
 // it). Idle clips loop exactly in place, so the next one fits too.
-bool Choice::hold_on(const CrowdState& s) {
-    const Agent& a = s.agents[std::size_t(agent_)];
+bool hold_on(const CrowdState& s, const ChoiceBase& base, BoxedClip& out_clip, Plan& out_plan) {
+    const Agent& a = s.agents[std::size_t(base.agent)];
     if (!a.plan.hold) return false;
     const Hold& h = *a.plan.hold;
     const MotionGraph& g = s.graph;
@@ -55,14 +35,23 @@ bool Choice::hold_on(const CrowdState& s) {
     }
     std::sort(options.begin(), options.end());
     for (int c : options) {
-        if (!inside_hold(s, c, base_, h)) continue;
-        taken_ = frame_clip(s, c, base_, base_m_, frame_);
-        plan_ = Plan{{}, h};
-        outcome_ = Outcome::Escape;
-        point_.taken = c;
+        if (!inside_hold(s, c, base.place, h)) continue;
+        out_clip = frame_clip(s, c, base.place, base.m, base.frame);
+        out_plan = Plan{{}, h};
         return true;
     }
     return false;
+}
+
+}  // namespace
+
+bool follow_escape(const CrowdState& s, const ChoiceBase& base, BoxedClip& out_clip, Plan& out_plan) {
+    const Agent& a = s.agents[std::size_t(base.agent)];
+    if (a.plan.escape.empty()) return hold_on(s, base, out_clip, out_plan);
+    out_clip = a.plan.escape.front();
+    out_plan.escape.assign(a.plan.escape.begin() + 1, a.plan.escape.end());
+    out_plan.hold = a.plan.hold;
+    return true;
 }
 
 }  // namespace mobb::crowd

@@ -1,40 +1,39 @@
-// Giving way (CrowdTuning::give_way): a free moving candidate whose clip passes within give_way_reach of
-// an agent that has not moved for give_way_after seconds (CrowdState::waiting) is taken only when no
-// later moving candidate is free and clear of such agents: walkers keep out of the way of those who
-// wait, when they can, so that the ground they would walk into stays open. It only reorders free
-// candidates: nothing is refused for it.
-#include "choice/choice.h"
+#include "rules/give_way.h"
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 namespace mobb::crowd {
 
-void Choice::take_deferred() {
-    std::swap(plan_, deferred_plan_);
-    take(deferred_, Outcome::Candidate);
-}
-
-// Whether candidate k's clip passes within give_way_reach of an agent that waits (CrowdState::waiting);
-// never with giving way off.
-bool Choice::passes_waiting(const CrowdState& s, int k) {
-    if (!s.options.tuning.give_way) return false;
-    const PlacedCandidate& c = placed_[std::size_t(k)];
+bool passes_waiting(const GiveWayTuning& t, const CrowdState& s, const ChoiceBase& base, const PlacedCandidate& c,
+                    std::vector<int>& scratch) {
+    if (!t.on) return false;
     const SpaceTimeBox& b = c.box;
     s.waiting.query(
         {b.x0, b.y0, b.x1, b.y1, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()},
-        agent_, waiters_);
-    if (waiters_.empty()) return false;
-    const double r2 = s.options.tuning.give_way_reach * s.options.tuning.give_way_reach;
+        base.agent, scratch);
+    if (scratch.empty()) return false;
+    const double r2 = t.reach * t.reach;
     for (const Sample& x : s.graph.clips[std::size_t(c.clip)].path.samples) {
-        const double px = base_m_.apply_x(x.x, x.y), py = base_m_.apply_y(x.x, x.y);
-        for (int w : waiters_) {
+        const double px = base.m.apply_x(x.x, x.y), py = base.m.apply_y(x.x, x.y);
+        for (int w : scratch) {
             const auto& at = s.waiting_at[std::size_t(w)];
             if ((px - at[0]) * (px - at[0]) + (py - at[1]) * (py - at[1]) < r2) return true;
         }
     }
     return false;
+}
+
+bool waits(const GiveWayTuning& t, const Agent& a, std::int64_t end, double dt, bool avoids) {
+    return t.on && avoids && !a.arrived && a.plan.hold && double(end - a.moved_until) * dt >= t.after;
+}
+
+SpaceTimeBox waiting_ground(const GiveWayTuning& t, const Hold& h) {
+    return {h.x - t.reach,
+            h.y - t.reach,
+            h.x + t.reach,
+            h.y + t.reach,
+            std::numeric_limits<std::int64_t>::min(),
+            std::numeric_limits<std::int64_t>::max()};
 }
 
 }  // namespace mobb::crowd

@@ -12,6 +12,8 @@
 #include "mobb/crowd/collision/broad_phase.h"
 #include "mobb/util/random.h"
 #include "mobb/util/worker_pool.h"
+#include "rules/give_way.h"
+#include "rules/stand_near_walls.h"
 #include "sim/simulation.h"
 
 namespace mobb::crowd {
@@ -56,8 +58,7 @@ Simulation::Simulation(const MotionGraph& g, const NarrowPhase& narrow, const Cr
       o_(o),
       escapes_(EscapeTable::build(g, o.tuning)),
       policy_(make_policy(o.select, {g, o.world, escapes_.in_place, goals_of(o), o.goal_radius, o.tuning})),
-      hold_clearance_(o.tuning.stand_near_walls && policy_->stops_near_walls() ? escapes_.stand_clearance
-                                                                               : escapes_.turn_clearance),
+      hold_clearance_(hold_clearance(o.tuning.stand_near_walls, *policy_, escapes_)),
       solids_(policy_->avoids() ? o.world.solids() : std::vector<Polygon>{}),
       solid_grid_(solid_grid(solids_, o)),
       pool_(o.threads),
@@ -300,30 +301,25 @@ void Simulation::reserve(int agent, int choice, const Plan& plan) {
     a.plan = plan;
 }
 
-// Whether the agent will have waited give_way_after by the end of the clip it took (`end`): others' walks keep
-// clear of it from the next frame on, until it moves.
+// Giving way (rules/give_way.h): whether the agent waits from the end of the clip it took (`end`) on:
+// others' walks keep clear of it from the next frame on, until it moves.
 void Simulation::note_waiting(int agent, std::int64_t end) {
     const Agent& a = agents_[std::size_t(agent)];
-    const CrowdTuning& t = o_.tuning;
-    const bool waits = t.give_way && policy_->avoids() && !a.arrived && a.plan.hold &&
-                       double(end - a.moved_until) * g_.dt() >= t.give_way_after;
-    if (!waits && !in_waiting_[std::size_t(agent)]) return;
-    wait_changes_.push_back({agent, waits});
+    const bool waiting = waits(o_.tuning.give_way, a, end, g_.dt(), policy_->avoids());
+    if (!waiting && !in_waiting_[std::size_t(agent)]) return;
+    wait_changes_.push_back({agent, waiting});
 }
 
 void Simulation::apply_waiting() {
-    const double reach = o_.tuning.give_way_reach;
-    for (const auto& [agent, waits] : wait_changes_) {
-        in_waiting_[std::size_t(agent)] = waits;
-        if (!waits) {
+    for (const auto& [agent, waiting] : wait_changes_) {
+        in_waiting_[std::size_t(agent)] = waiting;
+        if (!waiting) {
             waiting_.remove(agent);
             continue;
         }
         const Hold& h = *agents_[std::size_t(agent)].plan.hold;
         waiting_at_[std::size_t(agent)] = {h.x, h.y};
-        waiting_.insert(agent, agent,
-                        {h.x - reach, h.y - reach, h.x + reach, h.y + reach, std::numeric_limits<std::int64_t>::min(),
-                         std::numeric_limits<std::int64_t>::max()});
+        waiting_.insert(agent, agent, waiting_ground(o_.tuning.give_way, h));
     }
     wait_changes_.clear();
 }

@@ -90,16 +90,16 @@ private:
     BatchGrid moved_;  // boxes of the current batch's plans chosen again on re-evaluation, once committed
     std::vector<SpaceTimeBox> boxes_;  // scratch: one choice point's boxes
     std::vector<Agent> agents_;
-    std::vector<Piece> pieces_;                      // by broad-phase id
-    std::int64_t placed_ = 0;                        // pieces placed so far (the next Piece::seq)
-    std::vector<int> unused_;                        // ids out of the broad phase, to reuse
-    std::vector<int> left_;                          // ids released in this frame, unused from the next
-    std::vector<std::vector<int>> ending_;           // per frame: ids of the committed clips ending then
-    std::int64_t expired_until_ = 0;                 // ending_ below it went to unused_
-    std::vector<std::vector<int>> due_;              // per frame: agents at a choice point
-    std::vector<Choice> slots_;                      // one per choice point of a batch, reused
-    BroadPhase waiting_;                             // agents that waited give_way_after or longer: their ground, by id
-    std::vector<std::array<double, 2>> waiting_at_;  // per agent: where it waits
+    std::vector<Piece> pieces_;                       // by broad-phase id
+    std::int64_t placed_ = 0;                         // pieces placed so far (the next Piece::seq)
+    std::vector<int> unused_;                         // ids out of the broad phase, to reuse
+    std::vector<int> left_;                           // ids released in this frame, unused from the next
+    std::vector<std::vector<int>> ending_;            // per frame: ids of the committed clips ending then
+    std::int64_t expired_until_ = 0;                  // ending_ below it went to unused_
+    std::vector<std::vector<int>> due_;               // per frame: agents at a choice point
+    std::vector<Choice> slots_;                       // one per choice point of a batch, reused
+    BroadPhase waiting_;                              // agents that wait (give_way.h): their ground, by id
+    std::vector<std::array<double, 2>> waiting_at_;   // per agent: where it waits
     std::vector<std::pair<int, bool>> wait_changes_;  // this frame's (agent, waits), applied after it
     std::vector<char> in_waiting_;                    // per agent: in waiting_
     CrowdRun out_;

@@ -75,7 +75,7 @@ TEST(EscapeTable, RouteEndsAreWhereTheRoutesHoldGround) {
     EXPECT_GT(routes, 500);
     EXPECT_LT(worst, 1e-9);
     CrowdTuning too_many;
-    too_many.escape_routes = EscapeTable::kMaxRoutes + 1;
+    too_many.escape.routes = EscapeTable::kMaxRoutes + 1;
     EXPECT_THROW(EscapeTable::build(g, too_many), std::invalid_argument);
 }
 

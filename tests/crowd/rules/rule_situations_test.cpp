@@ -23,10 +23,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "choice/escape.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/escape.h"
 
 namespace mobb::crowd {
 namespace {
@@ -74,7 +74,7 @@ CrowdOptions closed_corridor(std::uint64_t seed, bool standing_gap) {
     o.world = {-5, -1.2, 2, 1.2, true, {}};
     o.seconds = 20;
     o.seed = seed;
-    o.tuning.standing_gap = standing_gap;
+    o.tuning.standing_gap.on = standing_gap;
     o.placed = {agent(0, 0, 0, 1000), agent(-3, 0, 0)};
     o.agents = 2;
     return o;
@@ -121,7 +121,7 @@ TEST(RuleSituations, StandingGapKeepsAWandererFromStoppingByOneWhoStands) {
         const CrowdRun off = run(closed_corridor(seed, false));
         const std::array<double, 2> standing = at(on.record, 0, 0);
         // Held disks closer than the gap beyond touching: both radii (the record's) and the gap.
-        const double zone = 2 * on.record.choices.front().hold[2] + CrowdTuning{}.standing_gap_width;
+        const double zone = 2 * on.record.choices.front().hold[2] + CrowdTuning{}.standing_gap.width;
         EXPECT_GT(crowded(on.record, 1), 0) << "seed " << seed << ": candidates refused for the gap";
         EXPECT_EQ(holds_into(on.record, 1, standing, zone), 0) << "seed " << seed;
         EXPECT_EQ(crowded(off.record, 1), 0) << "seed " << seed;
@@ -151,7 +151,7 @@ CrowdOptions boxed_in(std::uint64_t seed, bool give_way) {
     o.world = {-15, -15, 15, 15, true, box_around(0, 0, 1.0, 0.2)};
     o.seconds = 10;
     o.seed = seed;
-    o.tuning.give_way = give_way;
+    o.tuning.give_way.on = give_way;
     o.placed = {agent(0, 0, 0), agent(-5, 2.7, -0.2)};
     o.agents = 2;
     return o;
@@ -187,7 +187,7 @@ std::array<double, 2> waiting_at(const Record& r, int a, std::int64_t frame) {
 }
 
 TEST(RuleSituations, GivingWayTakesAWalkClearOfAnAgentThatWaits) {
-    const double reach = CrowdTuning{}.give_way_reach;
+    const double reach = CrowdTuning{}.give_way.reach;
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
         const CrowdRun on = run(boxed_in(seed, true));
         const CrowdRun off = run(boxed_in(seed, false));
@@ -224,7 +224,7 @@ CrowdOptions niche(std::uint64_t seed, bool right_of_way) {
     o.world = {-12, -1, 12, 2.5, true, {Polygon::rectangle(-12, -1, -1, 0.2), Polygon::rectangle(1, -1, 12, 0.2)}};
     o.seconds = 12;
     o.seed = seed;
-    o.tuning.right_of_way = right_of_way;
+    o.tuning.right_of_way.on = right_of_way;
     o.placed = {agent(0, 0, M_PI / 2)};
     for (int k = 0; k < 5; ++k) o.placed.push_back(agent(-2.5 * k, 1.3, 0));
     o.agents = int(o.placed.size());
@@ -232,7 +232,7 @@ CrowdOptions niche(std::uint64_t seed, bool right_of_way) {
 }
 
 TEST(RuleSituations, RightOfWayReroutesTheOneBlockingAWaitingAgent) {
-    const std::int64_t after = std::llround(CrowdTuning{}.right_of_way_after / graph().dt());
+    const std::int64_t after = std::llround(CrowdTuning{}.right_of_way.after / graph().dt());
     std::int64_t sooner = 0;
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
         const CrowdRun on = run(niche(seed, true));
@@ -267,7 +267,7 @@ CrowdOptions door_column(std::uint64_t seed, bool follow) {
     o.seconds = 60;
     o.seed = seed;
     o.select = Selection::Goal;
-    o.tuning.follow = follow;
+    o.tuning.follow.on = follow;
     for (int k = 0; k < 5; ++k) {
         AgentSpec a = agent(2.0 + 1.5 * k, 0, M_PI);
         a.goals = {{-6, 0}};
@@ -281,7 +281,7 @@ CrowdOptions door_column(std::uint64_t seed, bool follow) {
 // The door column of five with stopping near walls on or off (and following on).
 CrowdOptions door_column_near_walls(std::uint64_t seed, bool stand_near_walls) {
     CrowdOptions o = door_column(seed, true);
-    o.tuning.stand_near_walls = stand_near_walls;
+    o.tuning.stand_near_walls.on = stand_near_walls;
     return o;
 }
 
@@ -351,7 +351,7 @@ CrowdOptions exit_columns(std::uint64_t seed, bool leave_in_stride) {
     o.seconds = 40;
     o.seed = seed;
     o.select = Selection::Goal;
-    o.tuning.leave_in_stride = leave_in_stride;
+    o.tuning.leave_in_stride.on = leave_in_stride;
     for (int k = 0; k < 10; ++k) {
         AgentSpec a = agent(2.0 + 1.5 * (k / 2), k % 2 ? 1.5 : -1.5, M_PI);
         a.goals = {{-3, 0}};

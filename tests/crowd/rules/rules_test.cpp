@@ -7,10 +7,10 @@
 #include <cmath>
 #include <memory>
 
-#include "choice/escape.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/escape.h"
 
 namespace mobb::crowd {
 namespace {
@@ -28,7 +28,7 @@ CrowdOptions ring(std::uint64_t seed, bool look_ahead) {
     o.select = Selection::Goal;
     o.seconds = 40;
     o.seed = seed;
-    o.tuning.look_ahead = look_ahead;
+    o.tuning.look_ahead.on = look_ahead;
     AgentSpec centre;
     centre.start = {0, 0, 0, 0};
     centre.goals = {{8, 0}};
@@ -79,7 +79,7 @@ TEST(Rules, LookAheadLearningSwitchesOff) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         CrowdOptions o = ring(seed, true);
         const CrowdRun with = run(o);
-        o.tuning.look_ahead_learns = false;
+        o.tuning.look_ahead.learns = false;
         const CrowdRun without = run(o);
         EXPECT_TRUE(frame_contacts(without.record).empty()) << "seed " << seed;
         EXPECT_LT(centre_arrival(without.record), without.record.frames) << "seed " << seed;
@@ -103,7 +103,7 @@ TEST(Rules, RightOfWayActsAndSwitchesOff) {
     for (std::uint64_t seed = 1; seed <= 8; ++seed) {
         CrowdOptions o = dense(seed);
         const CrowdRun on = run(o);
-        o.tuning.right_of_way = false;
+        o.tuning.right_of_way.on = false;
         const CrowdRun off = run(o);
         taken += on.summary.right_of_way;
         EXPECT_EQ(off.summary.right_of_way, 0u);
@@ -129,7 +129,7 @@ int passed_over(const Record& r) {
 TEST(Rules, GivingWayReordersAndSwitchesOff) {
     CrowdOptions o = dense(1);
     const CrowdRun on = run(o);
-    o.tuning.give_way = false;
+    o.tuning.give_way.on = false;
     const CrowdRun off = run(o);
     EXPECT_GE(passed_over(on.record), 5) << "free walks passed over for one clear of those who wait";
     EXPECT_EQ(passed_over(off.record), 0) << "off: the first free candidate is taken";
@@ -146,7 +146,7 @@ int crowded(const Record& r) {
 TEST(Rules, StandingGapIsTheWanderersAndSwitchesOff) {
     CrowdOptions o = dense(1);
     const CrowdRun on = run(o);
-    o.tuning.standing_gap = false;
+    o.tuning.standing_gap.on = false;
     const CrowdRun off = run(o);
     EXPECT_GT(crowded(on.record), 5);
     EXPECT_EQ(crowded(off.record), 0);

@@ -573,7 +573,7 @@ TEST(Crowd, WanderersKeepRoomBetweenStandingPlaces) {
             for (std::size_t a = 0; cp.outcome == "candidate" && a < held.size(); ++a) {
                 if (!held[a] || int(a) == cp.agent) continue;
                 const auto& h = *held[a];
-                const double room = cp.hold[2] + h[2] + CrowdTuning{}.standing_gap_width;
+                const double room = cp.hold[2] + h[2] + CrowdTuning{}.standing_gap.width;
                 if (std::hypot(at[1] - h[0], at[2] - h[1]) < room) {
                     ++exempt;
                     continue;

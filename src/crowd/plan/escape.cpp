@@ -1,4 +1,4 @@
-#include "choice/escape.h"
+#include "plan/escape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ void routes_from(const MotionGraph& g, const std::vector<ClipKind>& kind, const 
 }
 
 // Where route `route` after clip `clip` holds its ground, in the clip's frame: chained as the crowd places
-// it (build_plan in choice.cpp).
+// it (build_plan, crowd_state.h).
 std::array<double, 2> route_end(const MotionGraph& g, int clip, const std::vector<int>& route) {
     Placement p;
     int prev = clip;
@@ -68,7 +68,7 @@ std::array<double, 2> route_end(const MotionGraph& g, int clip, const std::vecto
 }  // namespace
 
 EscapeTable EscapeTable::build(const MotionGraph& g, const CrowdTuning& tuning) {
-    const int max_steps = tuning.escape_steps, max_routes = tuning.escape_routes;
+    const int max_steps = tuning.escape.steps, max_routes = tuning.escape.routes;
     if (max_routes > kMaxRoutes) throw std::invalid_argument("crowd: more escape routes per clip than kMaxRoutes");
     EscapeTable t;
     for (int c = 0; c < int(g.clips.size()); ++c) {
@@ -81,7 +81,7 @@ EscapeTable EscapeTable::build(const MotionGraph& g, const CrowdTuning& tuning) 
         if (t.kind.back() == ClipKind::Idle) t.hold_radius = std::max(t.hold_radius, t.hold_of(c));
     }
     for (int c = 0; c < int(g.clips.size()); ++c) {
-        const double room = t.footprint[std::size_t(c)] + tuning.wall_margin;
+        const double room = t.footprint[std::size_t(c)] + tuning.escape.wall_margin;
         if (t.kind[std::size_t(c)] == ClipKind::Idle) t.stand_clearance = std::max(t.stand_clearance, room);
         if (t.in_place[std::size_t(c)]) t.turn_clearance = std::max(t.turn_clearance, room);
     }

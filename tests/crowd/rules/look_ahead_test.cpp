@@ -1,6 +1,7 @@
-// The look-ahead (src/crowd/choice/look_ahead.h) on hand-built situations: a barrier a few metres ahead that
+// The look-ahead (src/crowd/rules/look_ahead.h) on hand-built situations: a barrier a few metres ahead that
 // the straight walks run into in their third clip; its budget; refused first clips; the learned
-// times to go; and a crowd whose agents reach their goals sooner with it than without it.
+// times to go; a crowd whose agents reach their goals sooner with it than without it; and the rule
+// called alone on a state built by hand (rule_scene.h), ordering candidates round one who stands.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,12 +9,14 @@
 #include <fstream>
 #include <limits>
 
-#include "choice/choice.h"
-#include "choice/look_ahead.h"
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/scenario/scenario.h"
 #include "mobb/crowd/sim/crowd.h"
+#include "plan/choice_queries.h"
+#include "plan/learned_cost.h"
+#include "rule_scene.h"
+#include "rules/look_ahead.h"
 
 namespace mobb::crowd {
 namespace {
@@ -127,7 +130,7 @@ TEST(LearnedCost, KeepsTheLargestPerCell) {
 TEST(LookAhead, ACircleOfAgentsReachesItsGoalsSoonerWithIt) {
     const Scenario s = load_scenario(default_scenario_folder() + "/circle_20.json");
     CrowdOptions with = scenario_options(s), without = with;
-    without.tuning.look_ahead = false;
+    without.tuning.look_ahead.on = false;
     const NarrowPhase narrow = NarrowPhase::sweep(graph());
     const CrowdMetrics a = crowd_metrics(run_crowd(graph(), narrow, with).record, graph());
     const CrowdMetrics b = crowd_metrics(run_crowd(graph(), narrow, without).record, graph());
@@ -168,6 +171,101 @@ TEST(LookAhead, TheIntendedClipsFollowTheTakenOneInTheRecord) {
         for (std::size_t i = 0; i < r.choices[k].intended.size(); ++i)
             EXPECT_EQ(back.choices[k].intended[i].clip, r.choices[k].intended[i].clip);
     }
+}
+
+// ---- The rule (look_ahead()) on a state built by hand (rule_scene.h) ----
+
+using rule_test::Scene;
+using rule_test::walks;
+
+// A goal agent at the origin facing its goal 10 m east, one agent standing 3 m ahead on its way, and the
+// candidates of an agent walking (the successors of a walk with many) in the goal policy's order.
+struct GoalAhead {
+    Scene scene{Selection::Goal, {}, {{10, 0}}};
+    const Placement at{0, 0, 0, 0};
+    ChoiceBase base;
+    ChoiceSite site;
+    std::vector<int> policy;
+    Piece standing;
+    ChoiceQueries q;
+    LookAheadState io;
+
+    GoalAhead() {
+        base = {scene.add_agent(at), 0, at, Rigid2::of(at)};
+        scene.agents[std::size_t(base.agent)].goals = {{10, 0}};
+        scene.stand(base.agent);
+        scene.stand(scene.add_agent({3, 0, M_PI, 0}));
+        standing = scene.pieces.back();
+        site = {base.agent, at, std::array<double, 2>{10, 0}, true, 0, false, std::nullopt, {}};
+        for (int walk : walks(scene.g))
+            if (policy.size() < 8) policy = scene.g.clips[std::size_t(walk)].successors;
+        scene.policy->order(site, policy);
+        q.start(base.agent, 0);
+    }
+    // The look-ahead with `t`, a budget that takes every candidate's search to the horizon by default.
+    std::vector<int> search(LookAheadTuning t = {true, 2000}) {
+        std::vector<int> order = policy;
+        look_ahead(t, {}, scene.state(), base, site, q, order, io);
+        return order;
+    }
+};
+
+TEST(RuleUnits, LookAheadOrdersTheCandidatesByTheirBestSequence) {
+    GoalAhead g;
+    const std::vector<int> order = g.search();
+    ASSERT_TRUE(g.io.searched);
+    EXPECT_GT(g.q.point().queries, 0u) << "its steps are tested, and counted for the choice point";
+    std::vector<int> sorted = order, before = g.policy;
+    std::sort(sorted.begin(), sorted.end()), std::sort(before.begin(), before.end());
+    EXPECT_EQ(sorted, before) << "the same candidates";
+    for (std::size_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], g.policy[std::size_t(g.io.ranked[k].second)]);
+    for (std::size_t k = 1; k < order.size(); ++k)
+        EXPECT_LE(g.io.ranked[k - 1].first, g.io.ranked[k].first) << "the best sequence first";
+    ASSERT_FALSE(g.io.learned.empty());
+    EXPECT_EQ(g.io.learned.back()[0], g.at.x) << "the time to go learned where it stands";
+    EXPECT_EQ(g.io.learned.back()[2], g.io.ranked[0].first);
+    // Within the default budget, too, the search keeps to it.
+    g.search({});
+    EXPECT_LE(g.io.search.tested(), LookAheadTuning{}.budget);
+}
+
+// Every sequence found is whole and clear of the one standing, and some walks lead only into it; the
+// first found in the order is what the choice point intends after its first clip.
+TEST(RuleUnits, LookAheadSequencesGoRoundOneStandingInTheWay) {
+    GoalAhead g;
+    const std::vector<int> order = g.search();
+    const CrowdState s = g.scene.state();
+    int whole = 0, first = -1;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::vector<SearchStep> seq = g.io.search.sequence(g.io.ranked[k].second);
+        if (seq.empty()) continue;
+        ++whole;
+        if (first < 0) first = int(k);
+        ASSERT_EQ(int(seq.size()), g.scene.options.tuning.goal.horizon);
+        EXPECT_EQ(seq[0].clip, order[k]);
+        for (const SearchStep& step : seq) {
+            Piece p;
+            p.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
+            EXPECT_FALSE(pieces_collide(s, p, g.standing, nullptr));
+        }
+    }
+    ASSERT_GT(whole, 0);
+    EXPECT_LT(whole, int(order.size())) << "some walks lead only into the one standing";
+    std::vector<SearchStep> intended;
+    intended_after(g.io, first, intended);
+    const std::vector<SearchStep> seq = g.io.search.sequence(g.io.ranked[std::size_t(first)].second);
+    ASSERT_EQ(intended.size(), seq.size() - 1);
+    EXPECT_EQ(intended[0].clip, seq[1].clip);
+}
+
+TEST(RuleUnits, LookAheadOffKeepsThePolicysOrder) {
+    GoalAhead g;
+    g.search();
+    EXPECT_EQ(g.search({false}), g.policy);
+    EXPECT_FALSE(g.io.searched);
+    std::vector<SearchStep> intended;
+    intended_after(g.io, 0, intended);
+    EXPECT_TRUE(intended.empty());
 }
 
 }  // namespace

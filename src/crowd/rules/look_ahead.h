@@ -14,11 +14,14 @@
 #include <cstdint>
 #include <functional>
 #include <queue>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "mobb/core/path.h"
 #include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/tuning.h"
+#include "plan/choice_queries.h"
+#include "plan/crowd_state.h"
 
 namespace mobb::crowd {
 
@@ -35,24 +38,6 @@ struct LookAheadLimits {
     int budget = 96;      ///< steps tested per choice point (each: the broad phase and its exact queries)
     double dead_end = 0;  ///< seconds added to a first clip without a free sequence to the horizon
     double weight = 2;    ///< of the time to go in the order of search (weighted A*; 1: plain best-first)
-};
-
-/// One agent's learned times to go (LookAhead::learned), kept on a grid of kCell metres: each cell the
-/// largest learned, so the search's estimate of a place only rises where the agent found it worse than
-/// it looked - a local minimum it waits in (a wall of standing agents between it and its goal) fills
-/// up until another way scores better.
-class LearnedCost {
-public:
-    static constexpr double kCell = 0.5;  // metres: about an agent's width
-    /// Seconds learned at (x, y); 0 where nothing was.
-    double at(double x, double y) const;
-    void raise(double x, double y, double seconds);
-    /// Forgets everything: what was learned holds for one goal only.
-    void clear() { value_.clear(); }
-
-private:
-    static std::int64_t key(double x, double y);
-    std::unordered_map<std::int64_t, double> value_;
 };
 
 class LookAhead {
@@ -110,5 +95,28 @@ private:
     std::vector<int> expanded_;    // free nodes whose successors were opened
     int tested_ = 0;
 };
+
+/// A choice point's look-ahead (LookAheadTuning): the search, and the order of the candidates it gave.
+struct LookAheadState {
+    LookAhead search;
+    bool searched = false;  ///< the order comes from the search (ranked maps it to the search's candidates)
+    /// Per candidate in the order given: its score, and its place in the order before (the search's k).
+    std::vector<std::pair<double, int>> ranked;
+    std::vector<int> scratch;                    ///< the order before
+    std::vector<std::array<double, 3>> learned;  ///< appended: what the searches learned (LookAhead::learned)
+};
+
+/// Reorders `io_order` - the candidates, all starting at `base`, in the policy's order - by the best
+/// sequence each leads to, the policy's order breaking ties, when the rule is on and the policy searches
+/// (Policy::horizon(site) clips deep). Each step searched is tested with `q` against the walls and the
+/// others' pieces - past the reservations of the leaders the agent follows beyond its first clip, when it
+/// follows (site.way: FollowTuning) - and the policy's estimate of the time to go rises to what the agent
+/// learned (Agent::learned, LookAheadTuning::learns). What this search learned is appended to io.learned.
+void look_ahead(const LookAheadTuning& t, const FollowTuning& follow, const CrowdState& s, const ChoiceBase& base,
+                const ChoiceSite& site, ChoiceQueries& q, std::vector<int>& io_order, LookAheadState& io);
+
+/// The clips the search intends after candidate k of the order it gave (its best sequence less its first
+/// clip), into `out`; none without a search.
+void intended_after(const LookAheadState& s, int k, std::vector<SearchStep>& out);
 
 }  // namespace mobb::crowd

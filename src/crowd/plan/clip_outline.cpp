@@ -1,4 +1,4 @@
-#include "choice/clip_outline.h"
+#include "plan/clip_outline.h"
 
 #include <algorithm>
 #include <cmath>

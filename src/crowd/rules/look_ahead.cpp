@@ -1,9 +1,9 @@
-// The look-ahead (CrowdTuning::look_ahead; look_ahead.h): LearnedCost, the bounded best-first search of
-// clip sequences, and Choice::look_ahead, which reorders a choice point's candidates by the sequences found.
-#include "choice/look_ahead.h"
+// The look-ahead (LookAheadTuning; look_ahead.h): the bounded best-first search of clip sequences, and
+// the rule that reorders a choice point's candidates by the sequences found.
+#include "rules/look_ahead.h"
 
-#include "choice/choice.h"
 #include "mobb/core/assert.h"
+#include "rules/follow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,21 +13,6 @@ namespace mobb::crowd {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-}
-
-std::int64_t LearnedCost::key(double x, double y) {
-    const auto ix = std::int64_t(std::floor(x / kCell)), iy = std::int64_t(std::floor(y / kCell));
-    return ix * 0x100000000LL + (iy & 0xffffffffLL);
-}
-
-double LearnedCost::at(double x, double y) const {
-    const auto it = value_.find(key(x, y));
-    return it == value_.end() ? 0.0 : it->second;
-}
-
-void LearnedCost::raise(double x, double y, double seconds) {
-    double& v = value_[key(x, y)];
-    v = std::max(v, seconds);
 }
 
 void LookAhead::push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth, double elapsed,
@@ -128,35 +113,62 @@ std::vector<SearchStep> LookAhead::sequence(int k) const {
     return out;
 }
 
-// The policy's order (next_) reordered by the best sequence each candidate leads to (look_ahead.h); the
-// policy's order breaks ties.
-void Choice::look_ahead(const CrowdState& s, const ChoiceSite& site, int horizon) {
-    const CrowdTuning& t = s.options.tuning;
-    const LookAheadLimits limits{horizon, t.look_ahead_budget, t.look_ahead_dead_end};
-    way_heading_ = site.way;
-    const auto free = [&](const SearchStep& step) {
-        Piece piece;
-        piece.agent = agent_;
-        piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
-        return piece_free(s, piece, nullptr, way_heading_ && step.frame > frame_);  // beyond the first clip
-    };
-    const LearnedCost& learned = s.agents[std::size_t(agent_)].learned;
+namespace {
+
+// Whether a searched step is free of the walls and of the others' pieces - past the reservations of the
+// leaders the agent follows (follow.h) beyond its first clip, when it wants to go `way` - its queries
+// counted for the choice point.
+bool step_free(const FollowTuning& follow, const CrowdState& s, const ChoiceBase& base, std::optional<double> way,
+               const SearchStep& step, ChoiceQueries& q) {
+    Piece piece;
+    piece.agent = base.agent;
+    piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
+    const bool following = way && step.frame > base.frame;  // beyond the first clip
+    const std::array<double, 2> from{base.place.x, base.place.y};
+    return q.piece_free(s, piece,
+                        [&](int, const Piece& other) { return following && walks_on(follow, s, *way, from, other); });
+}
+
+// The candidates of `io_order` by `score`, the lowest first; the order before breaks ties (io.ranked
+// maps the new order to the old).
+void reorder(const std::vector<double>& score, std::vector<int>& io_order, LookAheadState& io) {
+    io.ranked.clear();
+    for (std::size_t k = 0; k < io_order.size(); ++k) io.ranked.push_back({score[k], int(k)});
+    std::stable_sort(io.ranked.begin(), io.ranked.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    io.scratch = io_order;
+    for (std::size_t k = 0; k < io_order.size(); ++k) io_order[k] = io.scratch[std::size_t(io.ranked[k].second)];
+}
+
+}  // namespace
+
+void look_ahead(const LookAheadTuning& t, const FollowTuning& follow, const CrowdState& s, const ChoiceBase& base,
+                const ChoiceSite& site, ChoiceQueries& q, std::vector<int>& io_order, LookAheadState& io) {
+    io.searched = false;
+    const int horizon = s.policy.horizon(site);
+    if (horizon <= 0 || !t.on) return;
+    const LookAheadLimits limits{horizon, t.budget, t.dead_end, t.weight};
+    const auto free = [&](const SearchStep& step) { return step_free(follow, s, base, site.way, step, q); };
+    const LearnedCost& learned = s.agents[std::size_t(base.agent)].learned;
     const auto to_go = [&](const Placement& end) {
         const double estimate = s.policy.to_go(site, end);
-        return t.look_ahead_learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
+        return t.learns ? std::max(estimate, learned.at(end.x, end.y)) : estimate;
     };
-    const std::vector<double>& score = search_.search(s.graph, next_, base_, frame_, limits, free, to_go);
-    searched_ = true;
+    const std::vector<double>& score = io.search.search(s.graph, io_order, base.place, base.frame, limits, free, to_go);
+    io.searched = true;
     const double best = *std::min_element(score.begin(), score.end());
     if (best < std::numeric_limits<double>::infinity()) {
-        search_.learned(best, learned_);
-        learned_.push_back({base_.x, base_.y, best});
+        io.search.learned(best, io.learned);
+        io.learned.push_back({base.place.x, base.place.y, best});
     }
-    ranked_.clear();
-    for (std::size_t k = 0; k < next_.size(); ++k) ranked_.push_back({score[k], int(k)});
-    std::stable_sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    scratch_ = next_;
-    for (std::size_t k = 0; k < next_.size(); ++k) next_[k] = scratch_[std::size_t(ranked_[k].second)];
+    reorder(score, io_order, io);
+}
+
+void intended_after(const LookAheadState& s, int k, std::vector<SearchStep>& out) {
+    out.clear();
+    if (!s.searched) return;
+    const std::vector<SearchStep> sequence = s.search.sequence(s.ranked[std::size_t(k)].second);
+    if (!sequence.empty()) out.assign(sequence.begin() + 1, sequence.end());
 }
 
 }  // namespace mobb::crowd
