@@ -14,10 +14,10 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "choice/escape.h"
 #include "mobb/core/angle.h"
 #include "mobb/util/json_text.h"
 #include "mobb/util/random.h"
+#include "plan/escape.h"
 #include "scenario/steersuite_importer.h"
 
 namespace mobb::crowd {

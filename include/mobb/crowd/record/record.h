@@ -124,7 +124,7 @@ struct ChoicePoint {
     std::array<double, 3> hold{};        ///< x, y, r (metres)
     std::int64_t hold_frame = 0;         ///< from this frame on
     std::vector<ReroutedPlan> reroutes;  ///< the other agents' plans that gave way ("right of way")
-    /// The clips the look-ahead intends after the one taken (goal agents, src/crowd/choice/look_ahead.h): the
+    /// The clips the look-ahead intends after the one taken (goal agents, src/crowd/rules/look_ahead.h): the
     /// rest of the sequence that ranked the taken clip first, re-planned at the next choice point. Not
     /// reserved: the escape is what the others plan around.
     std::vector<FramedClip> intended;
