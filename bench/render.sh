@@ -5,7 +5,7 @@
 # builds interleaved line by line, ROUNDS times (default 2). Prints fps, draw calls and vertices.
 #   bench/render.sh RECORD.json MOBB_EXE [MOBB_EXE...]
 # RECORD: mobb crowd --graph assets/graphs/cmu_locomotion.json --agents 100 --world 30x40 --seconds 120
-#         --seed 11 --select avoid --record RECORD.json
+#         --seed 11 --select wander --record RECORD.json
 set -euo pipefail
 cd "$(dirname "$0")/.."
 record=$1

@@ -211,7 +211,7 @@ void add_crowd(py::module_& m) {
 
 graph     motion graph JSON (None: assets/graphs/cmu_locomotion.json).
 agents    number of agents (default 100); world (width, height) in metres (default (30, 40));
-seconds   simulated seconds (default 120); select "avoid" (default), "random" or "goal";
+seconds   simulated seconds (default 120); select "wander" (default), "random" or "goal";
 seed      random seed; cell broad-phase grid cell (metres); threads (0: every core; the result is the
           same for any count; the GIL is released while it runs);
 tree      None: the circle sweep; else a tree type ("mobb", "umobb", ...) whose counters fill the summary;

@@ -95,7 +95,7 @@ void measure_motion(const crowd::Record& record, const crowd::MotionGraph& g, in
 // What `mobb crowd` reads from its command line.
 struct CrowdArgs {
     CLI::App* cmd = nullptr;
-    std::string graph, world = "30x40", select = "avoid", record, scenario;
+    std::string graph, world = "30x40", select = "wander", record, scenario;
     crowd::CrowdOptions options;
     crowd::CrowdTuning tuning;  // the rules' switches and numbers (--no-..., --tune)
     std::vector<std::string> tune;
@@ -110,8 +110,9 @@ void add_run_options(CLI::App& cmd, CrowdArgs& a) {
     cmd.add_option("--world", a.world, "World rectangle WxH (metres)")->capture_default_str();
     cmd.add_option("--seconds", o.seconds, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
     cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
-    cmd.add_option("--select", a.select, "Clip choice: avoid (wander), random (the paper's timing) or goal")
-        ->check(CLI::IsMember({"avoid", "random", "goal"}))
+    cmd.add_option("--select", a.select,
+                   "Clip choice: wander, random (the paper's timing) or goal (avoid: wander's old name)")
+        ->check(CLI::IsMember({"wander", "random", "goal", "avoid"}))
         ->capture_default_str();
     cmd.add_option("--cell", o.cell, "Broad-phase grid cell (metres)")
         ->check(CLI::PositiveNumber)

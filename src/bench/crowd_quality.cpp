@@ -224,7 +224,7 @@ CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::fun
     add_motion_target(t);
     t.notes["graph"] = o.graph + " (" + std::to_string(g.clips.size()) + " clips)";
     t.notes["selection"] =
-        "wander: mobb crowd --select avoid (walled world, no wrap); scenarios: mobb crowd --scenario";
+        "wander: mobb crowd --select wander (walled world, no wrap); scenarios: mobb crowd --scenario";
     t.notes["narrow phase"] = "circle sweep (ClipIndex + collide_sweep), " + std::to_string(o.threads) + " thread(s)";
     t.notes["idle"] = "ground speed over a 1 s window below 0.25 m/s; an agent at its goal no longer counts";
     t.notes["cpu"] = cpu_name();
@@ -238,7 +238,7 @@ CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::fun
 
 std::string crowd_quality_markdown(const CrowdQualityTable& t) {
     std::ostringstream out;
-    out << "### Wandering crowds (avoid, walled world)\n\n"
+    out << "### Wandering crowds (wander, walled world)\n\n"
         << "| agents | world (m) | s | seed | choice points | fallbacks % | escapes | contacts | outside | speed / "
            "graph | "
            "idle % | longest idle s | CD us / agent / s |\n"

@@ -85,7 +85,7 @@ CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
     world_for(agents, o.area_per_agent, co.world.x1, co.world.y1);
     co.seconds = o.seconds;
     co.seed = o.seed;
-    co.select = Selection::Avoid;
+    co.select = Selection::Wander;
     return co;
 }
 
@@ -327,7 +327,7 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
               " threads";
     t.notes["graph"] = o.graph;
     t.notes["crowd"] =
-        "mobb crowd --select avoid, seed " + std::to_string(o.seed) + ", world 3:4 growing with the agents";
+        "mobb crowd --select wander, seed " + std::to_string(o.seed) + ", world 3:4 growing with the agents";
     t.notes["CD time"] = "CrowdSummary::cd_seconds (broad + narrow phase wall time inside run_crowd)";
     t.notes["speed-up"] = "1-thread time / " + std::to_string(threads) +
                           "-thread time: CD seconds when measured, else simulation seconds";

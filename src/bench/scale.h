@@ -1,4 +1,4 @@
-// The scale workload: the avoiding crowd (`mobb crowd --select avoid`) at the paper's density for growing
+// The scale workload: the avoiding crowd (`mobb crowd --select wander`) at the paper's density for growing
 // numbers of agents, each size run with 1 thread and with `threads` threads, with its peak memory. Every
 // run streams (CrowdOptions::sink): its digest and contact check are made as it goes and it keeps no
 // record, so memory is the crowd's own (issue 29).

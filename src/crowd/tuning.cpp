@@ -34,7 +34,7 @@ std::vector<Field> fields_of(CrowdTuning& t) {
         {"leave_in_stride.on", "leave_in_stride", &t.leave_in_stride.on},
         {"right_of_way.on", "right_of_way", &t.right_of_way.on},
         {"right_of_way.after", "right_of_way_after", &t.right_of_way.after},
-        {"right_of_way.max_yielding", "max_yielding", &t.right_of_way.max_yielding},
+        {"right_of_way.max_rerouted", "max_yielding", &t.right_of_way.max_rerouted},
         {"give_way.on", "give_way", &t.give_way.on},
         {"give_way.after", "give_way_after", &t.give_way.after},
         {"give_way.reach", "give_way_reach", &t.give_way.reach},

@@ -77,7 +77,7 @@ struct Ui {
     bool playing = false;
     float rate = 8.0f;  ///< trace steps per second while playing
     double play_clock = 0.0;
-    bool follow = true;  ///< move the time cursor to each trace step
+    bool cursor_at_step = true;  ///< move the time cursor to each trace step
     bool scroll_to_step = true;
     PanelsOpen panels;
     /// The panels the user opened or closed (View menu, close button, O), by name: kept over the
@@ -150,7 +150,7 @@ std::vector<std::string> list_clip_files(const std::string& dir);
 /// File > Save scene. The outcome goes to ui.status.
 void save_to_path(State& state, Ui& ui);
 
-/// Moves to trace step k (clamped) and, when following, puts the time cursor on it.
+/// Moves to trace step k (clamped) and, with cursor_at_step, puts the time cursor on it.
 void go_to_step(State& state, Ui& ui, int k);
 /// Advances the trace while playing, and a crowd's time cursor while it plays.
 void update_playback(State& state, Ui& ui, double seconds);

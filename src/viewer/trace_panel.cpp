@@ -1,5 +1,5 @@
 // The Trace panel: step through the query's trace events (buttons, slider, playback, the outcome strip)
-// and list them; the time cursor follows the shown step.
+// and list them; the time cursor moves to the shown step.
 #include <algorithm>
 #include <cstdio>
 
@@ -60,7 +60,7 @@ void trace_panel(State& s, Ui& ui) {
     int k = step;
     if (last >= 0 && ImGui::SliderInt("step", &k, 0, last)) go_to_step(s, ui, k);
     outcome_strip(s, ui);
-    ImGui::Checkbox("cursor follows step", &ui.follow);
+    ImGui::Checkbox("cursor at each step", &ui.cursor_at_step);
     ImGui::Separator();
     event_list(s, ui, step);
     ImGui::End();
@@ -72,7 +72,7 @@ void go_to_step(State& s, Ui& ui, int k) {
     s.scene.step = k;
     ui.scroll_to_step = true;
     ui.reveal_step = true;
-    if (!ui.follow) return;
+    if (!ui.cursor_at_step) return;
     // The cursor goes to the middle of the time both nodes share (or node A's start when none).
     const TraceEvent& e = s.trace[std::size_t(k)];
     const int a = s.scene.query_a, b = s.scene.query_b;

@@ -30,7 +30,7 @@ const Named kNamed[] = {
     {"leave_in_stride.on", "leave_in_stride", [](const CrowdTuning& t) { return t.leave_in_stride.on; }, "false", 0},
     {"right_of_way.on", "right_of_way", [](const CrowdTuning& t) { return t.right_of_way.on; }, "0", 0},
     {"right_of_way.after", "right_of_way_after", [](const CrowdTuning& t) { return t.right_of_way.after; }, "3", 3},
-    {"right_of_way.max_yielding", "max_yielding", [](const CrowdTuning& t) { return t.right_of_way.max_yielding; }, "1",
+    {"right_of_way.max_rerouted", "max_yielding", [](const CrowdTuning& t) { return t.right_of_way.max_rerouted; }, "1",
      1},
     {"give_way.on", "give_way", [](const CrowdTuning& t) { return t.give_way.on; }, "off", 0},
     {"give_way.after", "give_way_after", [](const CrowdTuning& t) { return t.give_way.after; }, "1.5", 1.5},

@@ -41,7 +41,7 @@ inline std::string crowd_record() {
     static const Record record = [] {
         const std::string out = std::string(MOBB_TEST_OUT) + "/crowd_record_" + std::to_string(getpid()) + ".json";
         const std::string cmd = std::string("\"") + MOBB_EXE + "\" crowd --quiet --graph \"" + MOBB_GRAPH +
-                                "\" --agents 12 --world 12x12 --seconds 8 --seed 3 --select avoid --record \"" + out +
+                                "\" --agents 12 --world 12x12 --seconds 8 --seed 3 --select wander --record \"" + out +
                                 "\" > /dev/null";
         return Record{std::system(cmd.c_str()) == 0 ? out : std::string()};
     }();

@@ -25,7 +25,7 @@ struct CrowdOptions {
     World world;           ///< default [0, 30] x [0, 40], walled
     double seconds = 120;  ///< simulated; frames = round(seconds / dt)
     std::uint64_t seed = 1;
-    Selection select = Selection::Avoid;
+    Selection select = Selection::Wander;
     double cell = 4.0;         ///< broad-phase grid cell, metres
     bool log_queries = false;  ///< keep every narrow-phase query (for replays by the benchmarks)
     /// Keep each candidate's queries (Candidate::against) in the record, for the viewer and the record

@@ -38,13 +38,13 @@ struct LeaveInStrideTuning {
 };
 
 /// The right of way (rules/right_of_way.h; Okumura et al.'s PIBT, 2019): an agent that has not moved for
-/// `after` seconds may take a walk whose plan meets only the reservations of at most `max_yielding`
+/// `after` seconds may take a walk whose plan meets only the reservations of at most `max_rerouted`
 /// agents walking a clip, each of which then stops another way. Trades a waiting agent's time against
 /// the others' detours.
 struct RightOfWayTuning {
     bool on = true;
     double after = 2.0;    ///< seconds without a moving clip
-    int max_yielding = 2;  ///< agents whose reservations one taking may move
+    int max_rerouted = 2;  ///< agents whose reservations one taking may move
 };
 
 /// Giving way (rules/give_way.h): a free walk passing within `reach` metres of an agent that has not
@@ -116,7 +116,7 @@ struct GoalTuning {
     double neighbours_ahead = 4.0;  ///< seconds from the choice point: about the searched horizon
 };
 
-/// Wandering (src/crowd/policy/policy_avoid.cpp): walks whose end has `open_ahead` metres of ground ahead
+/// Wandering (src/crowd/policy/policy_wander.cpp): walks whose end has `open_ahead` metres of ground ahead
 /// before the world's edge come first, those with less in bands `band` metres wide, the less room the
 /// later: a bias toward the open that turns agents from the walls a few degrees per clip.
 struct WanderTuning {

@@ -38,7 +38,7 @@ void Choice::prepare(const CrowdState& s, int agent, std::int64_t frame) {
 // the order is unchanged.
 void Choice::order(const CrowdState& s) {
     const Agent& a = s.agents[std::size_t(base_.agent)];
-    ChoiceSite site{base_.agent, base_.place, a.goal(), a.stops_at_goal(), a.stalled, false, std::nullopt, {}};
+    ChoiceSite site{base_.agent, base_.place, a.goal(), a.stops_at_goal(), a.choices_waited, false, std::nullopt, {}};
     site.arrived = base_.frame >= a.start_frame && s.policy.arrived(site);
     if (s.options.tuning.follow.on) site.way = s.policy.heading(site);
     arriving_ = site.arrived;
@@ -154,14 +154,14 @@ void Choice::reset() {
 // The steps of a choice point, in order (the rules: rules/, a header each):
 //  1. the candidates' order: the policy's, then the look-ahead's (look_ahead.h, past the reservations of
 //     the leaders it follows: follow.h) - order();
-//  2. an agent not started yet, or at its goal for good, follows its escape (follow_escape.h);
+//  2. an agent not started yet, or at its goal for good, takes its escape (take_escape.h);
 //  3. the candidates in that order (try_candidate): the first is taken whose clip is free and leaves in
 //     stride (leave_in_stride.h), or one of whose escape routes - but those that stop within the standing
 //     gap of another (standing_gap.h) - has a free plan; a free walk passing an agent that waits is
 //     deferred (give_way.h), and taken at the first candidate that does not move, or when none is left;
 //  4. with the right of way (right_of_way.h), before the first candidate that does not move and after the
 //     last, the moving candidates again, past the reservations of agents that then stop another way;
-//  5. the agent's own escape (follow_escape.h), and last the fallback.
+//  5. the agent's own escape (take_escape.h), and last the fallback.
 void Choice::evaluate(const CrowdState& s) {
     reset();
     order(s);
@@ -264,9 +264,9 @@ void Choice::take_deferred() {
     take(give_way_.deferred, Outcome::Candidate);
 }
 
-// The agent's own escape (follow_escape.h).
+// The agent's own escape (take_escape.h).
 bool Choice::take_escape(const CrowdState& s) {
-    if (!follow_escape(s, base_, taken_, plan_)) return false;
+    if (!crowd::take_escape(s, base_, taken_, plan_)) return false;
     outcome_ = Outcome::Escape;
     point().taken = taken_.clip;
     return true;

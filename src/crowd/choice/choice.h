@@ -2,7 +2,7 @@
 // stream and put in order by the policy, placed in the world, and tested against what the other agents
 // reserved. In the avoiding modes a candidate is taken only with a free escape (plan/escape.h): its plan -
 // the clip, the clips that stop the agent, the ground it then holds - must be free; when no candidate's
-// is, the agent follows its own escape, which the others were planned around. The rules that shape the
+// is, the agent takes its own escape, which the others were planned around. The rules that shape the
 // choice are units of their own (rules/, a header each: their tuning, state and function); evaluate()
 // applies them in order. Evaluations only read the reserved state, so the choice points of one frame run
 // in parallel.
@@ -15,12 +15,12 @@
 #include "plan/choice_queries.h"
 #include "plan/crowd_state.h"
 #include "rules/follow.h"
-#include "rules/follow_escape.h"
 #include "rules/give_way.h"
 #include "rules/leave_in_stride.h"
 #include "rules/look_ahead.h"
 #include "rules/right_of_way.h"
 #include "rules/standing_gap.h"
+#include "rules/take_escape.h"
 
 namespace mobb::crowd {
 

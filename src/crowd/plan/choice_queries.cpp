@@ -81,7 +81,7 @@ void ChoiceQueries::solids_near(const CrowdState& s, const SpaceTimeBox& box) {
 
 // The walls and obstacles near the piece (held ground reaches as far as it keeps clear of them), by
 // solid index; tested first: they stop most plans that fail near a wall, without an agent query. None
-// ever yields.
+// is ever rerouted.
 bool ChoiceQueries::free_of_solids(const CrowdState& s, int k, const Piece& mine, Hits hits) {
     solids_near(s, solid_box(s, mine));
     bool free = true;

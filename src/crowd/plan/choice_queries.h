@@ -17,7 +17,7 @@ namespace mobb::crowd {
 enum class Hits : std::uint8_t { Stop, Count };
 
 /// A test of another agent's piece - its broad-phase id and the piece - that a query goes past or leaves
-/// out (the right of way's reservations that may yield, a follower's leaders): a callable taken by
+/// out (the right of way's reservations that may be rerouted, a follower's leaders): a callable taken by
 /// reference, without a copy or an allocation, so it must outlive the call it is passed to. Empty, it
 /// holds for no piece.
 class PieceFilter {
@@ -44,7 +44,7 @@ public:
     const std::vector<int>& pieces_near(const CrowdState& s, const SpaceTimeBox& box);
     /// Whether piece `mine` of candidate k's plan is free of the walls and obstacles, then of every live
     /// piece of the other agents; each query counts for candidate k (ChoicePoint::candidates[k]). A hit
-    /// on another agent's piece that `passes` holds for (the right of way's reservations that may yield)
+    /// on another agent's piece that `passes` holds for (the right of way's reservations that may be rerouted)
     /// is gone past.
     bool candidate_free(const CrowdState& s, int k, const Piece& mine, Hits hits, PieceFilter passes = {});
     /// Whether a piece that is no candidate's (a searched step, a reroute's) is free of the walls and

@@ -32,9 +32,9 @@ struct Agent {
     Plan plan;                               ///< reserved beyond its last clip
     std::vector<int> reserved;               ///< broad-phase ids of the plan's pieces
     bool arrived = false;                    ///< reached its goal: stays for good
-    int stalled = 0;                         ///< choice points in a row it followed its escape or stayed in place
-    std::int64_t moved_until = 0;  ///< where its last clip that moves (EscapeTable::moves) ended, or its start
-    LearnedCost learned;           ///< what its look-aheads learned of the time to go (learned_cost.h)
+    int choices_waited = 0;          ///< choice points in a row at which it waited: took its escape or stayed in place
+    std::int64_t waiting_since = 0;  ///< frame its last clip that moves (EscapeTable::moves) ended, or its start
+    LearnedCost learned;             ///< what its look-aheads learned of the time to go (learned_cost.h)
 
     /// The goal it heads for now; nothing for an agent that wanders.
     std::optional<std::array<double, 2>> goal() const {

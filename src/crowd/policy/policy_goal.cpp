@@ -60,7 +60,7 @@ public:
 
     // A stuck agent (GoalTuning::patience) and one at its goal order their candidates alone.
     int horizon(const ChoiceSite& site) const override {
-        return site.goal && !site.arrived && site.stalled < tuning_.goal.patience ? tuning_.goal.horizon : 0;
+        return site.goal && !site.arrived && site.choices_waited < tuning_.goal.patience ? tuning_.goal.horizon : 0;
     }
 
     double to_go(const ChoiceSite& site, const Placement& end) const override {
@@ -116,7 +116,7 @@ private:
     // (bench/results/log.md, "Following").
     double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
-        if (site.stalled >= tuning_.goal.patience)
+        if (site.choices_waited >= tuning_.goal.patience)
             return idle + (kinds_[std::size_t(c)] == ClipKind::InPlace ? 1e6 : 0.0);
         const Placement end = graph_.next(site.base, m, c);
         return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);

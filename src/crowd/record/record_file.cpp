@@ -32,9 +32,9 @@ namespace {
 constexpr double kSampleBytes = 71, kClipBytes = 216, kChoiceBytes = 458, kCandidateBytes = 165, kQueryBytes = 45;
 
 // Candidates and queries per choice point, on average, where a run keeps them: random mode tests every
-// candidate and runs all its queries; the avoiding modes stop a candidate at its first hit (avoid's
+// candidate and runs all its queries; the avoiding modes stop a candidate at its first hit (wander's
 // numbers, the larger, stand for goal mode too). Measured as above.
-constexpr double kRandomCandidates = 28.5, kRandomQueries = 24.6, kAvoidCandidates = 4.7, kAvoidQueries = 8.6;
+constexpr double kRandomCandidates = 28.5, kRandomQueries = 24.6, kWanderCandidates = 4.7, kWanderQueries = 8.6;
 
 // Peak memory (bytes) per byte of a JSON record's text. Writing: the run with its whole record, the
 // document (nlohmann::ordered_json: a node and an array per tuple of numbers) and the text; reading: the
@@ -86,8 +86,8 @@ JsonRecordCounts expected_json_record(std::uint64_t agents, std::int64_t frames,
     n.choices = choices;
     if (!candidates) return n;
     const bool random = select == "random";
-    n.candidates = std::uint64_t(double(choices) * (random ? kRandomCandidates : kAvoidCandidates));
-    n.queries = std::uint64_t(double(choices) * (random ? kRandomQueries : kAvoidQueries));
+    n.candidates = std::uint64_t(double(choices) * (random ? kRandomCandidates : kWanderCandidates));
+    n.queries = std::uint64_t(double(choices) * (random ? kRandomQueries : kWanderQueries));
     return n;
 }
 

@@ -361,6 +361,7 @@ Record header_of(const json& j) {
     r.seed = counter(need(j, "seed", ""), "seed");
     r.tree = text(need(j, "tree", ""), "tree");
     r.select = text(need(j, "select", ""), "select");
+    if (r.select == "avoid") r.select = "wander";  // its name before issue 44, read in today's
     if (j.contains("scenario")) r.scenario = text(j["scenario"], "scenario");
     for (const char* key : {"summary", "metrics"})
         if (j.contains(key) && !j[key].is_object()) fail(key, "expected an object");

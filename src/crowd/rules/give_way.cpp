@@ -24,7 +24,7 @@ bool passes_waiting(const GiveWayTuning& t, const CrowdState& s, const ChoiceBas
 }
 
 bool waits(const GiveWayTuning& t, const Agent& a, std::int64_t end, double dt, bool avoids) {
-    return t.on && avoids && !a.arrived && a.plan.hold && double(end - a.moved_until) * dt >= t.after;
+    return t.on && avoids && !a.arrived && a.plan.hold && double(end - a.waiting_since) * dt >= t.after;
 }
 
 SpaceTimeBox waiting_ground(const GiveWayTuning& t, const Hold& h) {

@@ -4,7 +4,7 @@
 
 namespace mobb::crowd {
 
-bool may_yield(const CrowdState& s, std::int64_t frame, const Piece& other) {
+bool may_reroute(const CrowdState& s, std::int64_t frame, const Piece& other) {
     if (other.index == 0 || other.choice < 0) return false;
     const Agent& owner = s.agents[std::size_t(other.agent)];
     if (owner.arrived || owner.clips.empty()) return false;
@@ -16,13 +16,13 @@ bool may_yield(const CrowdState& s, std::int64_t frame, const Piece& other) {
 namespace {
 
 // A hit on another agent's piece that a plan with the right of way goes past: a reservation that may
-// yield, of an owner yielding already or of one more within max_yielding (noted in `yielding`).
-bool yields(const RightOfWayTuning& t, const CrowdState& s, std::int64_t frame, const Piece& other,
-            std::vector<int>& yielding) {
-    if (!may_yield(s, frame, other)) return false;
-    if (std::find(yielding.begin(), yielding.end(), other.agent) != yielding.end()) return true;
-    if (yielding.size() >= std::size_t(t.max_yielding)) return false;
-    yielding.push_back(other.agent);
+// be rerouted, of an owner rerouted already or of one more within max_rerouted (noted in `rerouted`).
+bool reroutable(const RightOfWayTuning& t, const CrowdState& s, std::int64_t frame, const Piece& other,
+                std::vector<int>& rerouted) {
+    if (!may_reroute(s, frame, other)) return false;
+    if (std::find(rerouted.begin(), rerouted.end(), other.agent) != rerouted.end()) return true;
+    if (rerouted.size() >= std::size_t(t.max_rerouted)) return false;
+    rerouted.push_back(other.agent);
     return true;
 }
 
@@ -73,14 +73,14 @@ bool reroute(const CrowdState& s, int owner, ChoiceQueries& q, RightOfWayState& 
     return false;
 }
 
-// Another way to stop for every owner in io.yielding, each free of the new plan (clip c and `plan`), of
+// Another way to stop for every owner in io.rerouted, each free of the new plan (clip c and `plan`), of
 // the reroutes found before it and of everything else but what the taking would release.
-bool reroute_yielding(const CrowdState& s, int agent, const BoxedClip& c, const Plan& plan, ChoiceQueries& q,
-                      RightOfWayState& io) {
+bool reroute_all(const CrowdState& s, int agent, const BoxedClip& c, const Plan& plan, ChoiceQueries& q,
+                 RightOfWayState& io) {
     io.excluded.clear();
     const std::vector<int>& mine = s.agents[std::size_t(agent)].reserved;
     io.excluded.insert(io.excluded.end(), mine.begin(), mine.end());
-    for (int w : io.yielding) {
+    for (int w : io.rerouted) {
         const auto& r = s.agents[std::size_t(w)].reserved;
         io.excluded.insert(io.excluded.end(), r.begin(), r.end());
     }
@@ -99,7 +99,7 @@ bool reroute_yielding(const CrowdState& s, int agent, const BoxedClip& c, const 
         io.extra.push_back(p);
     }
     io.reroutes.clear();
-    for (int w : io.yielding)
+    for (int w : io.rerouted)
         if (!reroute(s, w, q, io)) return false;
     return true;
 }
@@ -107,27 +107,27 @@ bool reroute_yielding(const CrowdState& s, int agent, const BoxedClip& c, const 
 }  // namespace
 
 bool has_right_of_way(const RightOfWayTuning& t, const Agent& a, std::int64_t frame, double dt, bool arriving) {
-    return t.on && !arriving && double(frame - a.moved_until) * dt >= t.after;
+    return t.on && !arriving && double(frame - a.waiting_since) * dt >= t.after;
 }
 
 int take_right_of_way(const RightOfWayTuning& t, const CrowdState& s, const ChoiceBase& base,
                       const std::vector<PlacedCandidate>& placed, int end, ChoiceQueries& q, RightOfWayState& io,
                       Plan& out_plan) {
-    const auto passes = [&](int, const Piece& other) { return yields(t, s, base.frame, other, io.yielding); };
+    const auto passes = [&](int, const Piece& other) { return reroutable(t, s, base.frame, other, io.rerouted); };
     for (int k = 0; k < end; ++k) {
         const PlacedCandidate& c = placed[std::size_t(k)];
         if (!s.escapes.moves[std::size_t(c.clip)]) continue;
         Piece mine;
         mine.clip = {c.clip, c.place, base.frame, c.box, base.m};
-        io.yielding.clear();
+        io.rerouted.clear();
         if (!q.candidate_free(s, k, mine, Hits::Stop, passes)) continue;
-        const std::size_t owners = io.yielding.size();
+        const std::size_t owners = io.rerouted.size();
         for (const std::vector<int>& route : s.escapes.routes[std::size_t(c.clip)]) {
-            io.yielding.resize(owners);
+            io.rerouted.resize(owners);
             const bool free = build_plan(s, mine.clip, route, out_plan, [&](const Piece& piece) {
                 return q.candidate_free(s, k, piece, Hits::Stop, passes);
             });
-            if (free && reroute_yielding(s, base.agent, mine.clip, out_plan, q, io)) return k;
+            if (free && reroute_all(s, base.agent, mine.clip, out_plan, q, io)) return k;
         }
     }
     io.reroutes.clear();

@@ -351,12 +351,12 @@ void Simulation::commit(Choice& c) {
         a.arrived = true;
         policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
     }
-    // Waiting: following its escape, or choosing to stay in place (the random mode has no escapes).
+    // Waiting: taking its escape, or choosing to stay in place (the random mode has no escapes).
     const bool avoids = policy_->avoids();
     const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
-    a.stalled = c.outcome() == Outcome::Escape || stays ? a.stalled + 1 : 0;
+    a.choices_waited = c.outcome() == Outcome::Escape || stays ? a.choices_waited + 1 : 0;
     const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
-    if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.moved_until = end;
+    if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.waiting_since = end;
     note_waiting(c.agent(), end);
     if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
     count(c, cp);

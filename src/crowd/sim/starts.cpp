@@ -74,7 +74,7 @@ void Simulation::place_agents() {
         const auto frame = std::int64_t(std::llround(s.start_time / g_.dt()));
         Agent& a = agents_.emplace_back();
         a.start = p;
-        a.start_frame = a.moved_until = std::max<std::int64_t>(0, frame);
+        a.start_frame = a.waiting_since = std::max<std::int64_t>(0, frame);
         a.goals = s.goals;
         a.at_goal = s.at_goal;
     }

@@ -55,7 +55,7 @@ TEST(Policy, RandomKeepsTheStreamOrder) {
 TEST(Policy, AvoidWalksFirstAndTurnsAwayFromWalls) {
     World w;  // [0, 30] x [0, 40]
     const Fixture& f = fixture();
-    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
+    const auto p = make_policy(Selection::Wander, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: every walking clip before every slow one that moves (at the idle speed or faster),
     // before every clip in place, before the slow ones that only creep.
     const ChoiceSite open{0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, std::nullopt, {}};
@@ -103,7 +103,7 @@ double exit_speed(int clip) {
 TEST(Policy, AvoidSlowsDownAsLittleAsItCanAndTurnsToTheOpen) {
     World w;  // [0, 30] x [0, 40]
     const Fixture& f = fixture();
-    const auto p = make_policy(Selection::Avoid, {f.graph, w, f.in_place, {}, 1.0, {}});
+    const auto p = make_policy(Selection::Wander, {f.graph, w, f.in_place, {}, 1.0, {}});
     // In the open: the slow clips the faster first.
     const std::vector<int> c = ordered(*p, {0, {15, 20, 0.3, 0}, std::nullopt, false, 0, false, std::nullopt, {}});
     std::vector<double> slow;
@@ -189,7 +189,7 @@ TEST(Policy, GoalFindsTheWayAroundAnObstacle) {
 }
 
 TEST(Policy, ParsesTheirNames) {
-    for (Selection s : {Selection::Avoid, Selection::Random, Selection::Goal})
+    for (Selection s : {Selection::Wander, Selection::Random, Selection::Goal})
         EXPECT_EQ(parse_selection(to_string(s)), s);
     EXPECT_THROW(parse_selection("nearest"), std::invalid_argument);
 }

@@ -143,7 +143,7 @@ TEST(RecordFile, TheRunsKeepWhatTheLayoutNeeds) {
 // "outside" as meets_solid - which is then just where a query met a wall.
 TEST(RecordFile, Version2Hdf5ReadsInTodaysNames) {
     const Record r = read_record_file(std::string(MOBB_SOURCE_DIR) + "/fuzz/corpus-record/small.h5").record;
-    ASSERT_EQ(r.select, "avoid");
+    ASSERT_EQ(r.select, "wander");
     int meets = 0;
     for (const ChoicePoint& cp : r.choices)
         for (const Candidate& k : cp.candidates) {
@@ -210,10 +210,10 @@ TEST(RecordFile, AJsonRecordsSizeIsEstimatedFromItsCounts) {
         EXPECT_NEAR(double(json_record_bytes(n)) / text, 1.0, 0.2) << n.samples << " samples";
     }
     // A run's expected counts: every agent at every frame, and its choice points' candidates when kept.
-    const JsonRecordCounts e = expected_json_record(10, 300, 100, "avoid", true);
+    const JsonRecordCounts e = expected_json_record(10, 300, 100, "wander", true);
     EXPECT_EQ(std::tuple(e.samples, e.clips, e.choices), std::tuple(3000u, 110u, 100u));
     EXPECT_GT(expected_json_record(10, 300, 100, "random", true).candidates, e.candidates);
-    EXPECT_EQ(expected_json_record(10, 300, 100, "avoid", false).queries, 0u);
+    EXPECT_EQ(expected_json_record(10, 300, 100, "wander", false).queries, 0u);
 }
 
 // A JSON record is held whole to be written and read: past the limit (MOBB_JSON_RECORD_MB, set small here)

@@ -44,7 +44,7 @@ json room_record(Selection select) {
 }
 
 const json& recorded() {
-    static const json j = room_record(Selection::Avoid);
+    static const json j = room_record(Selection::Wander);
     return j;
 }
 

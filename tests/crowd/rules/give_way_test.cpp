@@ -72,7 +72,7 @@ TEST(RuleUnits, GivingWayCountsAsWaitingOneThatHasNotMovedForAWhile) {
     const double dt = mobb::test::committed_graph().dt();
     Agent a;
     a.plan.hold = Hold{0, 0, 0.4, 0};
-    a.moved_until = 100;
+    a.waiting_since = 100;
     const auto after = std::int64_t(std::ceil(t.after / dt));
     EXPECT_TRUE(waits(t, a, 100 + after, dt, true));
     EXPECT_FALSE(waits(t, a, 100 + after - 1, dt, true)) << "not yet";

@@ -1,5 +1,5 @@
 // The right of way (src/crowd/rules/right_of_way.h) called alone on a state built by hand (rule_scene.h):
-// who has it, which reservations may yield, and a walker's reservation across every walk of one that
+// who has it, which reservations may be rerouted, and a walker's reservation across every walk of one that
 // waits rerouted clear of the walk taken.
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ TEST(RuleUnits, RightOfWayGoesToOneThatHasNotMovedForAWhile) {
     const RightOfWayTuning t;
     const double dt = mobb::test::committed_graph().dt();
     Agent a;
-    a.moved_until = 30;
+    a.waiting_since = 30;
     const auto after = std::int64_t(std::ceil(t.after / dt));
     EXPECT_TRUE(has_right_of_way(t, a, 30 + after, dt, false));
     EXPECT_FALSE(has_right_of_way(t, a, 30 + after - 1, dt, false)) << "not yet";
@@ -58,13 +58,13 @@ TEST(RuleUnits, RightOfWayMovesOnlyTheReservationsOfAgentsWalkingOn) {
     const CrowdState s = x.scene.state();
     const std::vector<int>& reserved = x.scene.agents[std::size_t(x.walker)].reserved;
     const int clip = int(x.scene.pieces.size()) - 1 - int(reserved.size());
-    EXPECT_FALSE(may_yield(s, x.frame, s.pieces[std::size_t(clip)])) << "the clip it plays";
-    for (int id : reserved) EXPECT_TRUE(may_yield(s, x.frame, s.pieces[std::size_t(id)])) << id;
-    EXPECT_FALSE(may_yield(s, x.playing.frame + 1000, s.pieces[std::size_t(reserved[0])])) << "its clip has ended";
-    EXPECT_FALSE(may_yield(s, x.frame, s.pieces[x.scene.agents[std::size_t(x.waiter)].reserved[0]]))
+    EXPECT_FALSE(may_reroute(s, x.frame, s.pieces[std::size_t(clip)])) << "the clip it plays";
+    for (int id : reserved) EXPECT_TRUE(may_reroute(s, x.frame, s.pieces[std::size_t(id)])) << id;
+    EXPECT_FALSE(may_reroute(s, x.playing.frame + 1000, s.pieces[std::size_t(reserved[0])])) << "its clip has ended";
+    EXPECT_FALSE(may_reroute(s, x.frame, s.pieces[x.scene.agents[std::size_t(x.waiter)].reserved[0]]))
         << "ground held from the start";
     x.scene.agents[std::size_t(x.walker)].arrived = true;
-    EXPECT_FALSE(may_yield(s, x.frame, s.pieces[std::size_t(reserved[0])])) << "at its goal for good";
+    EXPECT_FALSE(may_reroute(s, x.frame, s.pieces[std::size_t(reserved[0])])) << "at its goal for good";
 }
 
 // Whether candidate `c` has an escape route whose plan is free (the candidates' test, no right of way).
@@ -121,7 +121,7 @@ TEST(RuleUnits, RightOfWayReroutesAWalkersReservation) {
     RightOfWayState io;
     Plan plan;
     EXPECT_EQ(take_right_of_way({true, 2.0, 0}, s, base, placed, int(placed.size()), q, io, plan), -1)
-        << "none may yield: nothing is taken";
+        << "none may be rerouted: nothing is taken";
     EXPECT_TRUE(io.reroutes.empty());
     const int k = take_right_of_way({}, s, base, placed, int(placed.size()), q, io, plan);
     ASSERT_GE(k, 0);

@@ -35,7 +35,7 @@ struct Scene {
 
     // A world [-20, 20]^2 with walls and `obstacles`, agents choosing by `select` (goals: every goal of the
     // run, for the goal policy's navigation fields).
-    explicit Scene(Selection select = Selection::Avoid, std::vector<Polygon> obstacles = {},
+    explicit Scene(Selection select = Selection::Wander, std::vector<Polygon> obstacles = {},
                    std::vector<std::array<double, 2>> goals = {}) {
         options.world = {-20, -20, 20, 20, true, std::move(obstacles)};
         options.select = select;

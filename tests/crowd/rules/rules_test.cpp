@@ -165,8 +165,8 @@ std::unique_ptr<Policy> policy(Selection kind) {
 
 TEST(Rules, EachPolicySaysWhatIsItsOwn) {
     EXPECT_FALSE(policy(Selection::Random)->avoids());
-    EXPECT_TRUE(policy(Selection::Avoid)->avoids());
-    EXPECT_TRUE(policy(Selection::Avoid)->keeps_standing_gap());
+    EXPECT_TRUE(policy(Selection::Wander)->avoids());
+    EXPECT_TRUE(policy(Selection::Wander)->keeps_standing_gap());
     EXPECT_FALSE(policy(Selection::Random)->keeps_standing_gap());
     // The random policy's crowd reserves nothing: no escapes, no walls.
     CrowdOptions o = dense(1);
@@ -181,7 +181,7 @@ TEST(Rules, EachPolicySaysWhatIsItsOwn) {
 // Stopping near walls (CrowdTuning::stand_near_walls) is the goal agents': wanderers' held ground keeps
 // room to turn from the walls, so one that stops facing a wall can still turn and walk away.
 TEST(Rules, OnlyGoalAgentsStopNearWalls) {
-    EXPECT_FALSE(policy(Selection::Avoid)->stops_near_walls());
+    EXPECT_FALSE(policy(Selection::Wander)->stops_near_walls());
     EXPECT_TRUE(policy(Selection::Goal)->stops_near_walls());
     const EscapeTable table = EscapeTable::build(graph());
     const CrowdOptions o = dense(1);

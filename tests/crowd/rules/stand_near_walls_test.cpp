@@ -16,7 +16,7 @@ using namespace rule_test;  // Scene and the clips it places (rule_scene.h)
 // (room to turn), and a wanderer never: meets_solid with the clearance the rule gives.
 TEST(RuleUnits, StandingNearWallsLetsGoalAgentsStopWithRoomToStand) {
     const std::vector<Polygon> door{Polygon::rectangle(-0.5, -4, 0.5, -0.8), Polygon::rectangle(-0.5, 0.8, 0.5, 4)};
-    Scene goal(Selection::Goal, door, {{5, 0}}), wander(Selection::Avoid, door);
+    Scene goal(Selection::Goal, door, {{5, 0}}), wander(Selection::Wander, door);
     const EscapeTable& e = goal.escapes;
     ASSERT_LT(e.stand_clearance, 0.8);
     ASSERT_GT(e.turn_clearance, 0.8);

@@ -36,7 +36,7 @@ Fixture& fixture() {
 
 const Path& path_of(int clip) { return fixture().graph.clips[std::size_t(clip)].path; }
 
-CrowdOptions wander(int agents, double seconds, std::uint64_t seed, Selection select = Selection::Avoid) {
+CrowdOptions wander(int agents, double seconds, std::uint64_t seed, Selection select = Selection::Wander) {
     CrowdOptions o;
     o.agents = agents;
     o.seconds = seconds;
@@ -178,7 +178,7 @@ TEST(Crowd, EveryNarrowPhaseGivesTheSameCrowd) {
         }
         return s;
     };
-    for (Selection select : {Selection::Avoid, Selection::Random}) {
+    for (Selection select : {Selection::Wander, Selection::Random}) {
         const CrowdOptions o = wander(25, 10, 5, select);
         const Record ref = run(o).record;
         EXPECT_EQ(ref.tree, "sweep");
@@ -339,7 +339,7 @@ TEST(Crowd, RecordRoundTripsThroughAFile) {
 // The choice points of a frame run in parallel and are committed in agent order; any thread count
 // gives the very same record, logged queries (in the same order) and counters.
 TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
-    for (Selection select : {Selection::Avoid, Selection::Random}) {
+    for (Selection select : {Selection::Wander, Selection::Random}) {
         // Dense enough that choice points of one frame often meet (re-evaluations).
         CrowdOptions o = wander(60, 15, 21, select);
         o.log_queries = true;
@@ -452,11 +452,11 @@ TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
             if (cp.outcome != "right of way") continue;
             ++taken;
             EXPECT_TRUE(moves(cp.taken));
-            std::int64_t moved_until = 0;
+            std::int64_t waiting_since = 0;
             for (const PlacedClip& p : r.tracks[std::size_t(cp.agent)].clips)
                 if (p.choice < std::int64_t(n) && moves(p.clip))
-                    moved_until = p.start + std::int64_t(path_of(p.clip).size());
-            EXPECT_GE(double(cp.frame - moved_until) * r.dt, 2.0 - 1e-9) << "choice " << n;
+                    waiting_since = p.start + std::int64_t(path_of(p.clip).size());
+            EXPECT_GE(double(cp.frame - waiting_since) * r.dt, 2.0 - 1e-9) << "choice " << n;
             if (cp.reroutes.empty()) {  // free but for the standing gap, which the right of way passes
                 const auto k = std::find_if(cp.candidates.begin(), cp.candidates.end(),
                                             [&](const Candidate& x) { return x.clip == cp.taken; });
@@ -488,15 +488,15 @@ TEST(Crowd, RightOfWayReroutesTheOthersSafely) {
 std::vector<std::optional<std::array<double, 2>>> waiting_at(const Record& r, std::int64_t frame) {
     std::vector<std::optional<std::array<double, 2>>> out(r.tracks.size());
     for (std::size_t w = 0; w < r.tracks.size(); ++w) {
-        std::int64_t moved_until = 0, end = 0;
+        std::int64_t waiting_since = 0, end = 0;
         const PlacedClip* last = nullptr;
         for (const PlacedClip& p : r.tracks[w].clips) {
             if (p.start >= frame) break;
             last = &p;
             end = p.start + std::int64_t(path_of(p.clip).size());
-            if (moves(p.clip)) moved_until = end;
+            if (moves(p.clip)) waiting_since = end;
         }
-        if (!last || double(end - moved_until) * r.dt < 2.0 - 1e-9) continue;
+        if (!last || double(end - waiting_since) * r.dt < 2.0 - 1e-9) continue;
         const ChoicePoint& own = r.choices[std::size_t(last->choice)];
         if (own.holds) out[w] = std::array<double, 2>{own.hold[0], own.hold[1]};
     }

@@ -17,13 +17,14 @@
 namespace mobb::crowd {
 
 enum class Selection {
-    Avoid,   ///< wander: candidates in random order, moving ones first; the first free plan is taken
+    Wander,  ///< wander: candidates in random order, moving ones first; the first free plan is taken
     Random,  ///< a random successor whatever it collides with; every candidate's queries still run (the
              ///< paper's timing experiment: no escapes, no walls)
     Goal,    ///< candidates by how close they bring the agent to its goal (around obstacles); stop there
 };
 const char* to_string(Selection s);
-/// "avoid" | "random" | "goal"; throws std::invalid_argument naming them.
+/// "wander" | "random" | "goal" (and "avoid", its name until issue 44, for one release); throws
+/// std::invalid_argument naming them.
 Selection parse_selection(const std::string& name);
 
 /// Where another agent near a choice point will be: the centre of a piece it reserved (metres), and the
@@ -40,8 +41,8 @@ struct ChoiceSite {
     Placement base;                             ///< where the next clip starts (t0: its start time)
     std::optional<std::array<double, 2>> goal;  ///< metres: the goal it heads for now
     bool stops = false;                         ///< it stands at that goal for good (its last; it stays)
-    int stalled = 0;                            ///< choice points in a row it could not move on (escapes)
-    bool arrived = false;                       ///< Policy::arrived(): order() puts the ways to stop first
+    int choices_waited = 0;  ///< choice points in a row at which it waited (took its escape or stayed in place)
+    bool arrived = false;    ///< Policy::arrived(): order() puts the ways to stop first
     /// Radians: the way it wants to go (Policy::heading) when it follows others (CrowdTuning::follow).
     std::optional<double> way;
     /// Where the other agents near it will be (Policy::neighbourhood() metres around it): the centres of

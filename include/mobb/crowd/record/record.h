@@ -5,7 +5,7 @@
 //   {
 //     "format": "mobb crowd record", "version": 3,
 //     "graph": FILE, "dt": s, "frames": F, "agents": N, "seed": K, "tree": "sweep" | "mobb" | ...,
-//     "select": "avoid" | "random" | "goal", "scenario": NAME (when one ran),
+//     "select": "wander" | "random" | "goal" ("avoid" before issue 44), "scenario": NAME (when one ran),
 //     "world": [W, H] for [0, W] x [0, H], or [x0, y0, x1, y1]; "walls": bool,
 //     "obstacles": [ [[x, y], ...], ... ],            // polygons
 //     "summary": { see CrowdSummary in crowd.h }, "metrics": { see metrics.h },

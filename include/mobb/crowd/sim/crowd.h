@@ -70,7 +70,7 @@ std::vector<Tree> build_trees(const MotionGraph& graph, const TreeOptions& optio
 /// Avoid and goal: a candidate is taken only when its plan is free - the clip, the clips that would stop
 /// the agent after it and the ground it would then hold (escape.h) - of every other agent's plan, of the
 /// obstacles and of the world's walls; the first such candidate in the policy's order is taken, and when
-/// there is none the agent follows its own escape, which the others planned around. The rules that
+/// there is none the agent takes its own escape, which the others planned around. The rules that
 /// order and pass candidates - the right of way (after Okumura et al.'s PIBT, 2019), giving way, the
 /// standing gap, the look-ahead of goal agents - each have a file of their own in src/crowd and their
 /// numbers and switches in CrowdTuning (tuning.h). So, outside fallbacks (no escape left), no two agents

@@ -1,4 +1,4 @@
-#include "rules/follow_escape.h"
+#include "rules/take_escape.h"
 
 #include <algorithm>
 
@@ -45,7 +45,7 @@ bool hold_on(const CrowdState& s, const ChoiceBase& base, BoxedClip& out_clip, P
 
 }  // namespace
 
-bool follow_escape(const CrowdState& s, const ChoiceBase& base, BoxedClip& out_clip, Plan& out_plan) {
+bool take_escape(const CrowdState& s, const ChoiceBase& base, BoxedClip& out_clip, Plan& out_plan) {
     const Agent& a = s.agents[std::size_t(base.agent)];
     if (a.plan.escape.empty()) return hold_on(s, base, out_clip, out_plan);
     out_clip = a.plan.escape.front();

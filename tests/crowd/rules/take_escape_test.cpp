@@ -1,4 +1,4 @@
-// Following one's escape (src/crowd/rules/follow_escape.h) called alone on a state built by hand
+// Taking one's escape (src/crowd/rules/take_escape.h) called alone on a state built by hand
 // (rule_scene.h): the next clip of the plan reserved, else an idle clip inside the held ground.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "rule_scene.h"
-#include "rules/follow_escape.h"
+#include "rules/take_escape.h"
 
 namespace mobb::crowd {
 namespace {
@@ -34,7 +34,7 @@ TEST(RuleUnits, FollowingTheEscapePlaysTheNextClipOfThePlanReserved) {
     const ChoiceBase base{a, walk.frame + std::int64_t(scene.g.clips[std::size_t(walk.clip)].path.size()), {}, {}};
     BoxedClip clip;
     Plan rest;
-    ASSERT_TRUE(follow_escape(scene.state(), base, clip, rest));
+    ASSERT_TRUE(take_escape(scene.state(), base, clip, rest));
     EXPECT_EQ(clip.clip, plan.escape[0].clip);
     EXPECT_EQ(clip.frame, plan.escape[0].frame);
     ASSERT_EQ(rest.escape.size(), plan.escape.size() - 1);
@@ -57,7 +57,7 @@ TEST(RuleUnits, FollowingTheEscapeStandsOnInsideTheHeldGround) {
     base.t0 = double(frame) * scene.g.dt();
     BoxedClip clip;
     Plan plan;
-    ASSERT_TRUE(follow_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan));
+    ASSERT_TRUE(take_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan));
     // An idle successor of the clip played, every disk inside the held ground, which it keeps.
     const Hold& h = *scene.agents[std::size_t(a)].plan.hold;
     EXPECT_EQ(scene.escapes.kind[std::size_t(clip.clip)], ClipKind::Idle);
@@ -74,9 +74,9 @@ TEST(RuleUnits, FollowingTheEscapeStandsOnInsideTheHeldGround) {
     // Held ground too small for any idle clip, away from its centre: no escape left.
     scene.agents[std::size_t(a)].plan.hold->r = 0.01;
     base.x += 0.05;
-    EXPECT_FALSE(follow_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan));
+    EXPECT_FALSE(take_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan));
     scene.agents[std::size_t(a)].plan.hold.reset();
-    EXPECT_FALSE(follow_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan)) << "no ground held";
+    EXPECT_FALSE(take_escape(scene.state(), {a, frame, base, Rigid2::of(base)}, clip, plan)) << "no ground held";
 }
 
 }  // namespace

@@ -17,9 +17,9 @@ namespace mobb::crowd {
 
 namespace {
 
-class AvoidPolicy : public Policy {
+class WanderPolicy : public Policy {
 public:
-    explicit AvoidPolicy(const PolicyContext& c)
+    explicit WanderPolicy(const PolicyContext& c)
         : graph_(c.graph),
           world_(c.world),
           moving_(c.tuning.moving_speed),
@@ -35,7 +35,7 @@ public:
         rank_slower_clips();
     }
 
-    Selection kind() const override { return Selection::Avoid; }
+    Selection kind() const override { return Selection::Wander; }
 
     // How many bands of WanderTuning::band fit in its open_ahead; throws std::invalid_argument unless
     // between 1 and a million.
@@ -160,6 +160,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Policy> avoid_policy(const PolicyContext& context) { return std::make_unique<AvoidPolicy>(context); }
+std::unique_ptr<Policy> wander_policy(const PolicyContext& context) { return std::make_unique<WanderPolicy>(context); }
 
 }  // namespace mobb::crowd
