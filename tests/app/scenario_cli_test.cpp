@@ -67,14 +67,17 @@ TEST(ScenarioCli, ImportThenCrowdRunsIt) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.out, json + ": scenario swap, 3 agents, 1 obstacle, 16 x 12 m, time limit 4 s\n");
     EXPECT_NE(r.err.find("note: " + xml +
-                         ":24: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.98 m to turn on "
-                         "the spot: moved 0.48 m to (0, -1.48), the nearest place with room\n"),
+                         ":24: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.58 m to stand: "
+                         "moved 0.09 m to (0, -1.09), the nearest place with room\n"),
               std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("note: " + xml + ": speeds of 0 to 1.3 m/s ignored"), std::string::npos) << r.err;
     const crowd::Scenario s = crowd::load_scenario(json);
     ASSERT_EQ(s.agents.size(), 3u);
-    EXPECT_EQ(s.agents[2].start.y, -1.48);
+    EXPECT_EQ(s.agents[2].start.y, -1.09);
+    EXPECT_NE(r.err.find(":24: agent: starts 0.59 m from a wall or an obstacle: room to stand, not to turn round"),
+              std::string::npos)
+        << r.err;
     EXPECT_EQ(s.time_limit, 4);
     const Result run = test::run_mobb("crowd --quiet --graph " + kGraph + " --scenario " + json);
     ASSERT_EQ(run.code, 0) << run.err;

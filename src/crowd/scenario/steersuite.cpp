@@ -26,6 +26,7 @@ AgentRoom AgentRoom::of(const MotionGraph& graph) {
     const EscapeTable escapes = EscapeTable::build(graph);
     AgentRoom room;
     room.wall_clearance = escapes.turn_clearance;
+    room.stand_clearance = escapes.stand_clearance;
     room.hold_radius = escapes.hold_radius;
     double slimmest = INFINITY, speeds = 0;  // the walking clip whose widest disk is the smallest
     int walks = 0;
@@ -261,9 +262,21 @@ double Importer::solid_distance(double x, double y) const {
 }
 
 // The crowd's own test (Simulation::reserve_starts): the held ground's clearance overlaps no solid.
-bool Importer::clear_of_solids(double x, double y) const {
+// The way along the edge of the solid nearest (x, y) - of the two, the one nearer `heading` (radians).
+double Importer::along_nearest_solid(double x, double y, double heading) const {
+    const Polygon* nearest = nullptr;
+    double d = INFINITY;
     for (const Polygon& p : world_solids_)
-        if (disk_overlaps(p, x, y, room_.wall_clearance)) return false;
+        if (const double g = gap(p, x, y); g < d) d = g, nearest = &p;
+    if (!nearest) return heading;
+    const double along = nearest_edge_angle(*nearest, x, y);
+    const double turn = std::remainder(along - heading, 2 * kPi);
+    return std::remainder(std::abs(turn) <= kPi / 2 ? along : along + kPi, 2 * kPi);
+}
+
+bool Importer::clear_of_solids(double x, double y, double clearance) const {
+    for (const Polygon& p : world_solids_)
+        if (disk_overlaps(p, x, y, clearance)) return false;
     return true;
 }
 

@@ -15,7 +15,8 @@ std::optional<std::array<double, 2>> Importer::random_start(const Box& region) {
     if (r.x0 > r.x1 || r.y0 > r.y1) return std::nullopt;
     for (int t = 0; t < kTries; ++t) {
         const double x = util::rounded(rng_.uniform(r.x0, r.x1), 2), y = util::rounded(rng_.uniform(r.y0, r.y1), 2);
-        if (w.inside(x, y) && clear_of_solids(x, y) && starts_.clear(x, y)) return std::array<double, 2>{x, y};
+        if (w.inside(x, y) && clear_of_solids(x, y, room_.wall_clearance) && starts_.clear(x, y))
+            return std::array<double, 2>{x, y};
     }
     return std::nullopt;
 }
@@ -27,7 +28,7 @@ std::array<double, 2> Importer::random_goal() {
     bool found = false;
     for (int t = 0; t < kTries; ++t) {
         const double x = util::rounded(rng_.uniform(w.x0, w.x1), 2), y = util::rounded(rng_.uniform(w.y0, w.y1), 2);
-        if (!clear_of_solids(x, y)) continue;
+        if (!clear_of_solids(x, y, room_.wall_clearance)) continue;
         if (goals_.clear(x, y)) return {x, y};
         if (!found) fallback = {x, y};
         found = true;
@@ -49,11 +50,11 @@ bool Importer::goals_of(const Group& g, std::vector<std::array<double, 2>>& goal
 // Why an agent cannot start at (x, y), as the crowd checks a start; "" when it can.
 std::string Importer::misfit(double x, double y) const {
     if (!s_.world.inside(x, y)) return "starts outside the world";
-    if (!clear_of_solids(x, y)) {
+    if (!clear_of_solids(x, y, room_.stand_clearance)) {
         const double d = solid_distance(x, y);
         return (d > 0 ? "starts " + num(d) + " m from a wall or an obstacle"
                       : std::string("starts inside an obstacle")) +
-               "; mobb's agents need " + num(room_.wall_clearance) + " m to turn on the spot";
+               "; mobb's agents need " + num(room_.stand_clearance) + " m to stand";
     }
     for (std::size_t k = 0; k < kept_starts_.size(); ++k) {
         const double d = std::hypot(kept_starts_[k][0] - x, kept_starts_[k][1] - y);
@@ -69,11 +70,11 @@ std::string Importer::misfit(double x, double y) const {
 std::optional<std::array<double, 2>> Importer::nearest_fit(double x, double y) const {
     std::vector<const Polygon*> near;  // the solids within reach of any point tried
     for (const Polygon& p : world_solids_)
-        if (box_gap(bounds(p), {x, y, x, y}) < kMostMove + room_.wall_clearance) near.push_back(&p);
+        if (box_gap(bounds(p), {x, y, x, y}) < kMostMove + room_.stand_clearance) near.push_back(&p);
     const auto fits = [&](double px, double py) {
         if (!s_.world.inside(px, py) || !starts_.clear(px, py)) return false;
         return std::none_of(near.begin(), near.end(),
-                            [&](const Polygon* p) { return disk_overlaps(*p, px, py, room_.wall_clearance); });
+                            [&](const Polygon* p) { return disk_overlaps(*p, px, py, room_.stand_clearance); });
     };
     constexpr double kStep = 0.01;
     std::optional<std::array<double, 2>> best;
@@ -107,6 +108,17 @@ std::optional<std::array<double, 2>> Importer::given_start(const Group& g) {
     return moved;
 }
 
+// A start with room to stand but not to turn round: the agent faces along the nearest wall or obstacle
+// edge, the way nearer its own heading, and a note says so.
+double Importer::face_along(const Group& g, const std::array<double, 2>& start, double heading) {
+    const double along = util::rounded(along_nearest_solid(start[0], start[1], heading), 9);
+    note(*g.element, "starts " + num(solid_distance(start[0], start[1])) + " m from a wall or an obstacle: room to " +
+                         "stand, not to turn round (" + num(room_.wall_clearance) + " m); faces along it, heading " +
+                         num(degrees(along)) + " degrees (turned " +
+                         num(degrees(std::remainder(along - heading, 2 * kPi))) + ")");
+    return along;
+}
+
 // An agent of the group at `start`: heading as SteerSuite's direction (none: facing its first goal), its
 // goals in turn; with none it stands at its start, and a sequence that ends idle stands at its last.
 AgentSpec Importer::agent_at(const Group& g, const std::array<double, 2>& start,
@@ -119,6 +131,7 @@ AgentSpec Importer::agent_at(const Group& g, const std::array<double, 2>& start,
     else if (g.direction.x != 0 || g.direction.y != 0)
         heading = std::atan2(g.direction.y, g.direction.x);
     drew_ = drew_ || g.direction.random;
+    if (!clear_of_solids(start[0], start[1], room_.wall_clearance)) heading = face_along(g, start, heading);
     AgentSpec a;
     a.start = {start[0], start[1], heading, 0.0};
     a.goals = std::move(goals);

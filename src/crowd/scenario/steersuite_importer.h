@@ -124,7 +124,9 @@ private:
     void file_notes(const std::vector<Group>& groups);
     void time_limit(const std::vector<Group>& groups);
     double solid_distance(double x, double y) const;
-    bool clear_of_solids(double x, double y) const;
+    bool clear_of_solids(double x, double y, double clearance) const;
+    double along_nearest_solid(double x, double y, double heading) const;
+    double face_along(const Group& g, const std::array<double, 2>& start, double heading);
     std::string named(const XMLElement& e) const {
         return "the " + local_name(e) + " at line " + std::to_string(e.GetLineNum());
     }

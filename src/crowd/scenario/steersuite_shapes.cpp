@@ -145,4 +145,20 @@ double gap(const Polygon& a, const Polygon& b) {
 
 double gap(const Polygon& p, double x, double y) { return gap(p, Polygon{{{x, y}}}); }
 
+double nearest_edge_angle(const Polygon& p, double x, double y) {
+    const auto& v = p.vertices;
+    if (v.size() < 2) return std::atan2(v[0][1] - y, v[0][0] - x) + kPi / 2;
+    double best = INFINITY, angle = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const auto& a = v[i];
+        const auto& b = v[(i + 1) % v.size()];
+        const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+        if (len2 == 0) continue;
+        const double u = std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / len2, 0.0, 1.0);
+        const double d = std::hypot(a[0] + u * dx - x, a[1] + u * dy - y);
+        if (d < best) best = d, angle = std::atan2(dy, dx);
+    }
+    return angle;
+}
+
 }  // namespace mobb::crowd::steersuite

@@ -30,6 +30,10 @@ Polygon oriented_rectangle(double x, double y, double lx, double lz, double thet
 /// fewer than two vertices when none of it is inside (or only a point).
 Polygon clipped(const Polygon& p, const World& w);
 
+/// The direction (radians) of the polygon's edge nearest (x, y), from one vertex to the next; for a single
+/// point, the direction square to the line from (x, y) to it.
+double nearest_edge_angle(const Polygon& p, double x, double y);
+
 /// Distance between two polygons (0 when they touch or overlap); from a point to a polygon (0 inside).
 double gap(const Polygon& a, const Polygon& b);
 double gap(const Polygon& p, double x, double y);

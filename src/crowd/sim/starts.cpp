@@ -103,15 +103,16 @@ int Simulation::add_piece(const Piece& piece, bool pending) {
 }
 
 // Every agent's held ground where it starts: the escape of its first choice point. Scenario agents must
-// start apart, clear of the solids (checked here).
+// start apart, their held ground as clear of the solids as any other (CrowdState::hold_clearance: room to
+// stand for goal agents, to turn for wanderers; checked here).
 void Simulation::reserve_starts() {
     for (int a = 0; a < int(agents_.size()); ++a) {
         Agent& agent = agents_[std::size_t(a)];
         const Hold h{agent.start.x, agent.start.y, escapes_.hold_radius, 0};
         for (const Polygon& s : solids_)
-            if (disk_overlaps(s, h.x, h.y, escapes_.turn_clearance))
+            if (disk_overlaps(s, h.x, h.y, hold_clearance_))
                 throw std::invalid_argument("crowd: agent " + std::to_string(a) + " starts within " +
-                                            std::to_string(escapes_.turn_clearance) + " m of a wall or an obstacle");
+                                            std::to_string(hold_clearance_) + " m of a wall or an obstacle");
         for (int b = 0; b < a && !o_.placed.empty(); ++b) {  // random starts are placed apart
             const Placement& q = agents_[std::size_t(b)].start;
             if (std::hypot(q.x - h.x, q.y - h.y) < 2 * h.r)

@@ -262,31 +262,37 @@ TEST(SteerSuite, RegionWithoutRoomKeepsThoseThatFit) {
     std::remove(file.c_str());
 }
 
-// Line numbers: the header takes lines 1-7, so the first item starts on line 8. A start given too near a
-// wall or an obstacle moves to the nearest place (to the centimetre, within 1 m) where it has room.
-TEST(SteerSuite, StartNearAWallMovesToTheNearestRoom) {
+// Line numbers: the header takes lines 1-7, so the first item starts on line 8. A start given with no room
+// to stand near a wall or an obstacle moves to the nearest place (to the centimetre, within 1 m) where it
+// has room; one with room to stand but not to turn round stays, facing along the wall the way nearer its own.
+TEST(SteerSuite, StartNearAWallStandsAndFacesAlongIt) {
     const std::string file = write_case("wall", agent(0, 0, seek(5, 5)) + obstacle(-3, -2, 5, 6) +
-                                                    agent(-1.5, 5.5, seek(5, -5)) + agent(9.5, 0, seek(-5, 0)));
+                                                    agent(-1.5, 5.5, seek(5, -5), xyz(1, 0, 0.2)) +
+                                                    agent(9.2, 0, seek(-5, 0), xyz(1, 0, 0.2)));
     const ImportedScenario s = import(file);
     ASSERT_EQ(s.scenario.agents.size(), 3u);
     EXPECT_EQ(s.scenario.agents[0].start.x, 0.0);
-    const Placement& block = s.scenario.agents[1].start;  // 0.5 m from the block's edge x = -2: 0.98 needed
-    EXPECT_EQ(block.x, -1.02);
+    EXPECT_EQ(s.scenario.agents[0].start.theta, 0.0);     // facing +x, as the file says: room to turn
+    const Placement& block = s.scenario.agents[1].start;  // 0.5 m from the block's edge x = -2: 0.59 needed
+    EXPECT_EQ(block.x, -1.41);
     EXPECT_EQ(block.y, 5.5);
-    const Placement& wall = s.scenario.agents[2].start;  // 0.5 m from the wall x = 10
-    EXPECT_EQ(wall.x, 9.02);
-    EXPECT_EQ(wall.y, 0.0);
-    const auto n = notes_with(s, "to turn on the spot");
-    ASSERT_EQ(n.size(), 2u);
-    EXPECT_EQ(n[0], file +
-                        ":16: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.98 m to turn on "
-                        "the spot: moved 0.48 m to (-1.02, 5.5), the nearest place with room");
-    EXPECT_EQ(n[1], file +
-                        ":23: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.98 m to turn on "
-                        "the spot: moved 0.48 m to (9.02, 0), the nearest place with room");
+    EXPECT_NEAR(degrees(block.theta), 90, 1e-6);         // along the edge, the way nearer its own (11.3 degrees)
+    const Placement& wall = s.scenario.agents[2].start;  // 0.8 m from the wall x = 10: stands, cannot turn
+    EXPECT_EQ(wall.x, 9.2);
+    EXPECT_NEAR(degrees(wall.theta), 90, 1e-6);
+    ASSERT_EQ(notes_with(s, "to stand: moved").size(), 1u);
+    EXPECT_EQ(notes_with(s, "to stand: moved")[0],
+              file +
+                  ":16: agent: starts 0.5 m from a wall or an obstacle; mobb's agents need 0.59 m to stand: moved "
+                  "0.09 m to (-1.41, 5.5), the nearest place with room");
+    const auto along = notes_with(s, "faces along it");
+    ASSERT_EQ(along.size(), 2u);
+    EXPECT_EQ(along[1], file +
+                            ":23: agent: starts 0.8 m from a wall or an obstacle: room to stand, not to turn round "
+                            "(0.98 m); faces along it, heading 90 degrees (turned 78.69)");
     for (const AgentSpec& a : s.scenario.agents)
         for (const Polygon& p : s.scenario.world.solids())
-            EXPECT_FALSE(disk_overlaps(p, a.start.x, a.start.y, kRoom.wall_clearance));
+            EXPECT_FALSE(disk_overlaps(p, a.start.x, a.start.y, kRoom.stand_clearance));
     std::remove(file.c_str());
 }
 
@@ -300,7 +306,7 @@ TEST(SteerSuite, StartInsideAnObstacleOrOutsideTheWorld) {
     ASSERT_EQ(s.scenario.agents.size(), 1u);
     EXPECT_EQ(s.scenario.agents[0].start.x, 5.0);
     EXPECT_EQ(notes_with(s,
-                         ":9: agent: starts inside an obstacle; mobb's agents need 0.98 m to turn on the spot, and no "
+                         ":9: agent: starts inside an obstacle; mobb's agents need 0.59 m to stand, and no "
                          "place within 1 m has room: left out")
                   .size(),
               1u);

@@ -188,5 +188,25 @@ TEST(Goals, ScenariosSayGoalsAndWhatAgentsDoThere) {
               "s.json.at_goal: expected \"stay\" or \"leave\"");
 }
 
+// A goal agent may start with room to stand by a wall (its held ground keeps as much from walls), not only
+// with room to turn round: 0.7 m from the west wall, facing along it, it runs and reaches its goal; 0.5 m
+// from it, where it could not stand, the run is refused in one line.
+TEST(Goals, AStartByAWallNeedsRoomToStandNotToTurn) {
+    AgentSpec by_wall = spec(0.7, 4, {{0.9, 20}});
+    by_wall.start.theta = std::atan2(1.0, 0.0);  // north, along the wall x = 0
+    const CrowdRun r = run_goals({by_wall}, 40);
+    EXPECT_GE(first_within(r.record.tracks[0], {0.9, 20}, 0, 1.0), 0);
+    const CrowdMetrics m = crowd_metrics(r.record, graph());
+    EXPECT_EQ(m.obstacle_contacts, 0u);
+    AgentSpec too_near = by_wall;
+    too_near.start.x = 0.5;
+    try {
+        run_goals({too_near}, 5);
+        FAIL() << "a start 0.5 m from a wall ran";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("agent 0 starts within 0.58"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace mobb::crowd

@@ -18,9 +18,12 @@
 // it, an oriented box its turned rectangle; every shape is clipped to the world.
 //
 // What a mobb agent cannot do is not refused but reported, one line per finding (ImportedScenario::notes),
-// and mapped as closely as mobb allows. A start given in the file within AgentRoom::wall_clearance of a
-// wall or an obstacle, or within 2 x AgentRoom::hold_radius of an agent kept before it, moves to the
-// nearest place within 1 m (the crowd's goal radius) where it fits, else the agent is left out. Goals:
+// and mapped as closely as mobb allows. A start given in the file within AgentRoom::stand_clearance of a
+// wall or an obstacle (no room to stand), or within 2 x AgentRoom::hold_radius of an agent kept before it,
+// moves to the nearest place within 1 m (the crowd's goal radius) where it fits, else the agent is left
+// out. One with room to stand but not to turn round (within AgentRoom::wall_clearance) is kept, facing
+// along the nearest wall or obstacle edge - the way of the two nearest its own - so that it walks along
+// a passage rather than into its side. Random starts keep room to turn. Goals:
 // seekStaticTargets become the agent's "goals", reached in turn, as does the targetLocation of a
 // seekAxisAlignedBoxRegion; a sequence that ends idle stands at its last goal (at_goal stay); goals with
 // no counterpart (flee, dynamic targets, flows) are dropped, and an agent left with none stands at its
@@ -49,11 +52,14 @@ public:
 
 /// The room mobb's agents need, from a motion graph (metres, metres per second). The defaults are those
 /// of the committed graph (assets/graphs/cmu_locomotion.json) rounded up to the centimetre (the speed
-/// rounded): 0.9786, 0.4825, 0.9545 m, 1.3805 m/s.
+/// rounded): 0.9786, 0.5807, 0.4825, 0.9545 m, 1.3805 m/s.
 struct AgentRoom {
     /// A start this far from every wall and obstacle: room to turn round on the spot
-    /// (EscapeTable::turn_clearance; `mobb crowd` refuses a scenario whose agent starts closer).
+    /// (EscapeTable::turn_clearance). Random starts keep it; a start given nearer faces along the wall.
     double wall_clearance = 0.98;
+    /// A start this far from every wall and obstacle: room to stand (EscapeTable::stand_clearance; `mobb
+    /// crowd` refuses a goal agent that starts closer, as its held ground keeps as much from walls).
+    double stand_clearance = 0.59;
     /// The ground an agent stands on when it stops (EscapeTable::hold_radius): two starts are at least
     /// twice this apart.
     double hold_radius = 0.49;
