@@ -203,7 +203,8 @@ struct RenderArgs {
     std::string out, crowd, disk_colour, box_colour;
     std::vector<std::string> inputs, picks, panels;
     int width = 0, height = 0, step = -1, bench_frames = 10, agent = 0, choice = -1, candidate = -1, query = -1;
-    double time = -1, window = -1;
+    double time = -1, window = -1, time_scale = 0;
+    std::vector<double> region;  ///< x0 y0 x1 y1, metres
     bool ui = false, help = false, bench = false, top = false, no_msaa = false, bodies = false;
 };
 
@@ -230,6 +231,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--colour-boxes", a.box_colour,
                    "Boxes shown and coloured by level (default), tightness or tests (by the query), with a colour bar");
     cmd.add_flag("--top", a.top, "With --crowd: the top view (the panels' \"top\", the T key)");
+    cmd.add_option("--region", a.region,
+                   "With --crowd: X0 Y0 X1 Y1, the part of the world (metres) the camera frames over the time window")
+        ->expected(4);
+    cmd.add_option("--time-scale", a.time_scale, "Metres the up axis draws per second (default: the scene's)")
+        ->check(CLI::PositiveNumber);
     cmd.add_option("--out", a.out, "PNG file to write");
     cmd.add_option("--width", a.width, "Image width (default: the scene's; 1280 with --bench)")
         ->check(CLI::Range(16, 8192));
@@ -266,6 +272,10 @@ bool check_render_usage(const RenderArgs& a) {
         std::cerr << "render: --time, --top, --choice, --candidate and --query go with --crowd\n";
         return false;
     }
+    if (!a.region.empty() && (a.crowd.empty() || a.region[0] >= a.region[2] || a.region[1] >= a.region[3])) {
+        std::cerr << "render: --region X0 Y0 X1 Y1 goes with --crowd, with X0 < X1 and Y0 < Y1\n";
+        return false;
+    }
     return true;
 }
 
@@ -276,6 +286,7 @@ void apply_render_args(State& s, const RenderArgs& a) {
     if (a.window >= 0) s.scene.window = a.window;
     if (a.no_msaa) s.scene.multisample = false;
     if (a.bodies) s.scene.layers.bodies = true;
+    if (a.time_scale > 0) s.scene.time_scale = a.time_scale;
 }
 
 // `render --crowd RECORD`: the record at the time cursor.
@@ -284,10 +295,9 @@ void render_crowd(const RenderArgs& a, std::ostream& out) {
     State s = crowd_state(a.crowd, aspect(w, h), a.agent, a.time, a.window);
     open_crowd_query(s, a.choice, a.candidate, a.query, a.time >= 0);
     apply_render_args(s, a);
-    if (a.top) {
-        s.camera.top();
-        viewer::frame_all(s, aspect(w, h));
-    }
+    if (a.top) s.camera.top();
+    if (a.top || a.time_scale > 0) viewer::frame_all(s, aspect(w, h));
+    if (!a.region.empty()) viewer::frame_region(s, a.region[0], a.region[1], a.region[2], a.region[3], aspect(w, h));
     if (a.bench) {
         print_bench(out, "crowd", viewer::bench_headless(s, w, h, a.bench_frames), w, h);
         return;

@@ -6,6 +6,7 @@
 
 #include "crowd_view.h"
 #include "grid_layer.h"
+#include "mobb/core/assert.h"
 #include "random_walk.h"
 #include "renderer.h"
 #include "space.h"
@@ -161,6 +162,19 @@ void frame_all(State& s, float aspect) {
     constexpr float kLabelRoom = 1.08f;
     s.camera.frame(points, aspect);
     s.camera.distance *= kLabelRoom;
+}
+
+void frame_region(State& s, double x0, double y0, double x1, double y1, float aspect) {
+    MOBB_ASSERT(x0 < x1 && y0 < y1);
+    double t0 = s.scene.cursor - s.scene.window, t1 = s.scene.cursor + s.scene.window;
+    if (s.scene.window <= 0) {
+        const render::Bounds b = render::scene_bounds(unposed_frame(s));
+        t0 = b.empty ? 0 : b.lo.z, t1 = b.empty ? 1 : b.hi.z;
+    }
+    std::vector<glm::vec3> points;
+    for (int k = 0; k < 8; ++k)
+        points.push_back(render::to_gl((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? t1 : t0, s.scene.time_scale));
+    s.camera.frame(points, aspect);
 }
 
 void sync_scene(State& s) {

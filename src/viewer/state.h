@@ -61,6 +61,9 @@ int add_clip_file(State& state, const std::string& file);
 void rebuild_trees(State& state);  ///< after tree options change; also re-runs the query
 void run_query(State& state);      ///< after placements or the query's clips change
 void frame_all(State& state, float aspect);
+/// Keeps yaw and pitch and frames the world rectangle [x0, x1] x [y0, y1] (metres) over the time window
+/// round the cursor (all time when the window is 0): a door and its queue rather than the whole world.
+void frame_region(State& state, double x0, double y0, double x1, double y1, float aspect);
 void sync_scene(State& state);  ///< copies placements and camera back into state.scene (to save)
 
 /// The step actually shown: scene.step clamped to the trace (-1 when none).

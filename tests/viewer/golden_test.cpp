@@ -13,6 +13,7 @@
 #include "crowd_view.h"
 #include "headless.h"
 #include "image_diff.h"
+#include "mobb/crowd/record/record_file.h"
 #include "panels.h"
 #include "render_test_util.h"
 #include "scene.h"
@@ -475,6 +476,39 @@ TEST(Golden, CrowdScenario) {
     s.camera.top();
     viewer::frame_all(s, 640.0f / 480.0f);
     check_image("crowd_scenario_contact", viewer::render_headless(s, {640, 480, false}));
+}
+
+/// The agents of evacuation_exit before the evacuation's door (x 0 to 8 m, |y| < 5 m) at time t: how many,
+/// and how many of them stand (their root moved under 0.1 m in the second before).
+std::pair<int, int> queue_at(const crowd::Record& r, double t) {
+    const auto k = std::size_t(t / r.dt), before = std::size_t(1.0 / r.dt);
+    int there = 0, standing = 0;
+    for (const auto& track : r.tracks) {
+        if (k >= track.samples.size()) continue;
+        const auto &now = track.samples[k], &then = track.samples[k - before];
+        if (now[1] < 0.5 || now[1] > 8 || std::abs(now[2]) > 5) continue;
+        ++there;
+        standing += std::hypot(now[1] - then[1], now[2] - then[2]) < 0.1;
+    }
+    return {there, standing};
+}
+
+/// A queue at a door in space-time (evacuation_exit, 30 agents through a 2.4 m door at x = 0): the camera
+/// on the door and 8 m before it, six seconds either side of 18 s; agents waiting stand as upright disk
+/// stacks behind those walking through, whose stacks lean toward the door (docs/crowd.md's picture).
+TEST(Golden, CrowdQueueAtDoor) {
+    const std::string record = scenario_record("evacuation_exit");
+    ASSERT_FALSE(record.empty()) << "mobb crowd --scenario failed";
+    State s = viewer::load_crowd_state(record, 640.0f / 480.0f);
+    s.scene.layers.skeletons = false;  // no mocap needed
+    const auto [there, standing] = queue_at(crowd::read_record_file(record).record, 18.0);
+    EXPECT_GE(there, 10) << "a crowd before the door";
+    EXPECT_GE(standing, 2) << "some of it waiting";
+    s.scene.cursor = 18.0;
+    s.scene.window = 6.0;
+    s.scene.time_scale = 0.3;
+    viewer::frame_region(s, -4, -5, 8, 5, 640.0f / 480.0f);
+    check_image("crowd_queue", viewer::render_headless(s, {640, 480, false}));
 }
 
 /// Goal sequences seen from above (waypoints: each agent's two waypoints drawn small, its last goal
