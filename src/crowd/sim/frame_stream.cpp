@@ -59,8 +59,15 @@ void FrameStream::emit(std::int64_t count) {
     util::WorkerPool& pool = pool_ ? *pool_ : one;
     const std::size_t n = tracks_.size();
     place(count, pool);
+    // Frames are checked in parallel, each by one worker; the contacts are counted and measured in frame
+    // order, so the outcome is the same for any number of threads.
+    scratch_.resize(std::size_t(pool.size()));
+    found_.resize(std::size_t(count));
+    pool.for_each(std::size_t(count), [&](std::size_t k, int worker) {
+        find_contacts(next_ + std::int64_t(k), &disks_[k * n], scratch_[std::size_t(worker)], found_[k]);
+    });
     for (std::int64_t k = 0; k < count; ++k)
-        check(next_ + k, &disks_[std::size_t(k) * n], &fallback_[std::size_t(k) * n]);
+        count_contacts(next_ + k, &disks_[std::size_t(k) * n], &fallback_[std::size_t(k) * n], found_[std::size_t(k)]);
     metrics_.frames(next_, count, disks_.data(), pool);
     seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
     // The sink's blocks are the record's, whatever the group: the file's time counts as the record's.
@@ -106,29 +113,35 @@ void FrameStream::place(std::int64_t count, util::WorkerPool& pool) {
     });
 }
 
-// The frame-by-frame contact check of one frame (as frame_contacts does it on a whole record), and the
-// frame's metrics.
-void FrameStream::check(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback) {
-    in_run_.clear();
+// The frame-by-frame contact check of one frame (as frame_contacts does it on a whole record): its
+// contacts, by agent pair.
+void FrameStream::find_contacts(std::int64_t frame, const std::array<double, 4>* disks, CheckScratch& scratch,
+                                std::vector<Contact>& out) {
+    std::vector<FrameGrid::Disk>& in_run = scratch.in_run;
+    in_run.clear();
+    out.clear();
     double rmax = 0;  // contacts are closer than 2 rmax
     for (std::size_t a = 0; a < tracks_.size(); ++a) {
         if (std::isnan(disks[a][0])) continue;
-        in_run_.push_back({disks[a][1], disks[a][2], disks[a][3], int(a)});
+        in_run.push_back({disks[a][1], disks[a][2], disks[a][3], int(a)});
         rmax = std::max(rmax, disks[a][3]);
     }
-    found_.clear();
-    if (in_run_.size() >= 2) {
-        grid_.build(in_run_.data(), in_run_.size(), 2 * rmax);
-        grid_.overlaps([&](int a, int b) { found_.push_back({frame, std::min(a, b), std::max(a, b), false}); });
-        std::sort(found_.begin(), found_.end(),
-                  [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-    }
-    for (Contact& c : found_) {
+    if (in_run.size() < 2) return;
+    scratch.grid.build(in_run.data(), in_run.size(), 2 * rmax);
+    scratch.grid.overlaps([&](int a, int b) { out.push_back({frame, std::min(a, b), std::max(a, b), false}); });
+    std::sort(out.begin(), out.end(),
+              [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+}
+
+// A frame's contacts counted (excused where a fallback clip plays) and its metrics, in frame order.
+void FrameStream::count_contacts(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback,
+                                 std::vector<Contact>& found) {
+    for (Contact& c : found) {
         c.excused = fallback[c.a] || fallback[c.b];
         ++contacts_;
         excused_ += c.excused;
     }
-    metrics_.contacts(frame, disks, found_.data(), found_.size());
+    metrics_.contacts(frame, disks, found.data(), found.size());
 }
 
 }  // namespace mobb::crowd

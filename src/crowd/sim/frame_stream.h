@@ -63,7 +63,15 @@ private:
     };
     void emit(std::int64_t count);
     void place(std::int64_t count, util::WorkerPool& pool);
-    void check(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback);
+    /// A worker's scratch for the contact check of one frame.
+    struct CheckScratch {
+        std::vector<FrameGrid::Disk> in_run;  // the frame's disks in the run
+        FrameGrid grid;
+    };
+    void find_contacts(std::int64_t frame, const std::array<double, 4>* disks, CheckScratch& scratch,
+                       std::vector<Contact>& out);
+    void count_contacts(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback,
+                        std::vector<Contact>& found);
 
     const MotionGraph& g_;
     const Record& header_;
@@ -76,9 +84,8 @@ private:
     const std::int64_t group_;                  // frames emitted at a time: whole blocks
     std::vector<std::array<double, 4>> disks_;  // a group, frame-major
     std::vector<char> fallback_;                // per disk: a fallback clip plays then
-    std::vector<FrameGrid::Disk> in_run_;       // scratch: one frame's disks in the run
-    std::vector<Contact> found_;                // scratch: one frame's contacts
-    FrameGrid grid_;
+    std::vector<CheckScratch> scratch_;         // per worker
+    std::vector<std::vector<Contact>> found_;   // per frame of the group: its contacts
     std::uint64_t contacts_ = 0, excused_ = 0;
     double seconds_ = 0;
 };
