@@ -40,7 +40,7 @@ public:
                 sway = std::max(sway, std::hypot(x.x - samples.front().x, x.y - samples.front().y));
         }
         stop_radius_ = radius_ - sway;
-        for (const auto& g : c.goals) fields_.emplace(g, NavField(grid_, g));
+        for (const auto& g : c.goals) fields_.try_emplace(g, grid_, g);  // one field per distinct goal, built once
     }
 
     Selection kind() const override { return Selection::Goal; }
