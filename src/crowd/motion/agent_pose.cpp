@@ -257,6 +257,8 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
     k = std::min(k, last);
     if (!free_pose(agent, k, all_, out, raw_out)) return false;
     unlocked = out;
+    posed_agent_ = agent_clip_at(record_, sources_->graph(), agent, k, posed_) ? agent : -1;
+    posed_frame_ = k;
     if (feet) {
         *feet = {};
         for (int f = 0; f < 2; ++f)
@@ -291,7 +293,8 @@ bool CrowdPoser::free_pose(int agent, std::int64_t k, const std::vector<int>& jo
                 if (j > 0) out[std::size_t(j)] += w * ((a_[std::size_t(j)] - a_[0]) - (b_[std::size_t(j)] - b_[0]));
         }
     }
-    hold_inside(joints, envelope(agent, k), out);
+    disk_ = envelope(agent, k);
+    hold_inside(joints, disk_, out);
     return true;
 }
 

@@ -11,10 +11,6 @@ namespace mobb::crowd {
 
 namespace {
 
-// A contact continued across this many clips at most (an agent standing for minutes plays idle clips
-// back to back with both feet down); one longer takes its start from there.
-constexpr int kMaxHops = 256;
-
 glm::dvec3 planted_point(const glm::dvec3& ankle, const glm::dvec3& toe, Plant plant) {
     return plant == Plant::Toe ? toe : ankle;
 }
@@ -54,7 +50,12 @@ void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out
 
 Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
     AgentClipAt at;
-    if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) return Plant::Free;
+    if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
+        at = posed_;  // in the clip of the frame being posed: no search
+        at.sample -= int(posed_frame_ - k);
+    } else if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) {
+        return Plant::Free;
+    }
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
     return std::size_t(at.sample) < t.plant.size() ? t.plant[std::size_t(at.sample)] : Plant::Free;
@@ -103,12 +104,23 @@ glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q)
     return out;
 }
 
-const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, int foot, const FootFree* free) {
+const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, int foot, Plant plant,
+                                                   const FootFree* free) {
+    if (holds_.empty()) holds_.resize(record_.tracks.size());
+    Hold& h = holds_[std::size_t(agent)][std::size_t(foot)];
+    // Frame k - 1 was held: frame k is in the same contact, one step on (a window may have moved since).
+    if (!window_ && h.start >= 0 && h.frame == k) return &h;
+    if (!window_ && h.start >= 0 && h.frame == k - 1) {
+        FootFree q;
+        if (!free && !foot_free(agent, k, foot, q)) return nullptr;
+        hold_step(h, free ? *free : q, plant, false);
+        h.frame = k;
+        return &h;
+    }
     // The contact's runs of equal plant, from frame k back to its start (latest first), across clips.
     const MotionGraph& g = sources_->graph();
     segments_.clear();
-    std::int64_t cur = k;
-    for (int hop = 0; hop < kMaxHops && cur >= 0; ++hop) {
+    for (std::int64_t cur = k; cur >= 0;) {
         AgentClipAt at;
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
@@ -125,10 +137,9 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
     }
     if (segments_.empty()) return nullptr;
     // Followed frame by frame from the start, or on from where this agent's hold was left.
-    if (holds_.empty()) holds_.resize(record_.tracks.size());
-    Hold& h = holds_[std::size_t(agent)][std::size_t(foot)];
     const std::int64_t start = segments_.back().begin;
-    if (h.start != start || h.frame > k || h.frame < start) h = {start, start - 1};
+    // A window of samples (use_samples) may have moved since: its disks bound the hold, so start over.
+    if (window_ || h.start != start || h.frame > k || h.frame < start) h = {start, start - 1};
     std::size_t seg = segments_.size() - 1;
     for (std::int64_t m = h.frame + 1; m <= k; ++m) {
         while (seg > 0 && segments_[seg - 1].begin <= m) --seg;
@@ -145,8 +156,8 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
 
 bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,
                               double& dragged) {
-    if (plant_at(agent, k, foot) != Plant::Free) {
-        const Hold* h = contact_target(agent, k, foot, &free);
+    if (const Plant plant = plant_at(agent, k, foot); plant != Plant::Free) {
+        const Hold* h = contact_target(agent, k, foot, plant, &free);
         if (!h) return false;
         target = h->target;
         dragged = h->dragged;
@@ -155,8 +166,9 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
     // Released: the correction at the contact's last frame, decaying (smoothstep) over the release.
     const int release = int(std::lround(lock_.release / record_.dt));
     for (int d = 1; d <= release; ++d) {
-        if (plant_at(agent, k - d, foot) == Plant::Free) continue;
-        const Hold* h = contact_target(agent, k - d, foot, nullptr);
+        const Plant then = plant_at(agent, k - d, foot);
+        if (then == Plant::Free) continue;
+        const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
         if (!h) return false;
         const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
         target = within_reach(free.ankle + w * (h->target - h->ankle), free);
@@ -169,7 +181,7 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
     std::array<glm::dvec3, 2> targets{};
     std::array<bool, 2> held{};
     std::array<double, 2> dragged{};
-    const double disk = envelope(agent, k);
+    const double disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
     for (int f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[std::size_t(f)];
         if (!leg.complete()) continue;

@@ -194,7 +194,7 @@ private:
     // Foot locking (foot_lock.cpp).
     Plant plant_at(int agent, std::int64_t k, int foot);
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
-    const Hold* contact_target(int agent, std::int64_t k, int foot, const FootFree* free);
+    const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const;
     glm::dvec3 within_reach(const glm::dvec3& target, const FootFree& q) const;
     bool ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target, double& dragged);
@@ -210,6 +210,10 @@ private:
     std::vector<int> all_, leg_joints_;       // every rig joint; both legs' joints (root first)
     std::array<std::vector<int>, 2> foot_;    // per foot: root, hip, knee, ankle, toe
     std::vector<std::array<Hold, 2>> holds_;  // per agent and foot
+    double disk_ = 0;                         // e(k) of the last free_pose (with blending)
+    AgentClipAt posed_;                       // the clip of the frame pose() poses (agent -1: none)
+    int posed_agent_ = -1;
+    std::int64_t posed_frame_ = 0;
     std::vector<glm::dvec3> a_, b_, c_, d_, e_, u_;
     struct Segment {
         std::int64_t begin;
