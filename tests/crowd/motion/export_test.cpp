@@ -196,6 +196,28 @@ TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
     EXPECT_GT(free_moved, 0.02);   // metres: without the lock the ankle slides through the transition
 }
 
+// A hold is followed frame by frame and kept per agent and foot; posing the frames backwards (every frame
+// starting its hold over) gives the same poses as posing them in order, to the bit.
+TEST(FootLock, PosesDoNotDependOnTheOrderFramesArePosedIn) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser forward = poser(), backward = poser();
+    std::vector<glm::dvec3> a, b;
+    const std::int64_t frames = std::min<std::int64_t>(record().frames, 300);
+    std::vector<std::vector<glm::dvec3>> ahead;
+    for (int agent : {0, 5}) {
+        ahead.clear();
+        for (std::int64_t k = 0; k < frames; ++k) {
+            ASSERT_TRUE(forward.pose(agent, k, a));
+            ahead.push_back(a);
+        }
+        for (std::int64_t k = frames - 1; k >= 0; --k) {
+            ASSERT_TRUE(backward.pose(agent, k, b));
+            for (std::size_t j = 0; j < b.size(); ++j)
+                ASSERT_EQ(b[j], ahead[std::size_t(k)][j]) << "agent " << agent << " frame " << k << " joint " << j;
+        }
+    }
+}
+
 TEST(AgentPose, TimesBetweenFramesInterpolate) {
     MOBB_REQUIRE_MOCAP();
     CrowdPoser p = poser();
