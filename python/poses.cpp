@@ -25,7 +25,7 @@ struct Posed {
 };
 
 std::unique_ptr<Posed> open(const std::string& file, const std::optional<std::string>& graph, double blend,
-                            const std::string& joints) {
+                            const std::string& joints, bool lock_feet = true) {
     if (!(blend >= 0 && blend <= 10)) throw std::invalid_argument("blend: expected seconds in [0, 10]");
     auto out = std::make_unique<Posed>();
     out->record = crowd::load_record(file);
@@ -33,9 +33,11 @@ std::unique_ptr<Posed> open(const std::string& file, const std::optional<std::st
         std::make_shared<crowd::MotionGraph>(crowd::load_graph(graph ? *graph : crowd::record_graph_file(out->record)));
     crowd::PoseBlend b;
     b.window = blend;
+    crowd::FootLock lock;
+    lock.on = lock_feet;
     try {
         out->poser = std::make_unique<crowd::CrowdPoser>(out->record, std::make_shared<crowd::PoseSources>(g),
-                                                         rig_joints(joints), b);
+                                                         rig_joints(joints), b, lock);
     } catch (const crowd::GraphError& e) {
         throw std::invalid_argument(file + ": " + e.what());
     }
@@ -44,8 +46,9 @@ std::unique_ptr<Posed> open(const std::string& file, const std::optional<std::st
 
 py::array_t<double> crowd_poses(const std::string& file, const std::optional<std::vector<int>>& agents_arg,
                                 const std::optional<std::vector<double>>& times_arg,
-                                const std::optional<std::string>& graph, double blend, const std::string& joints) {
-    const auto posed = open(file, graph, blend, joints);
+                                const std::optional<std::string>& graph, double blend, const std::string& joints,
+                                bool lock_feet) {
+    const auto posed = open(file, graph, blend, joints, lock_feet);
     const crowd::Record& r = posed->record;
     std::vector<int> agents;
     if (agents_arg) {
@@ -90,15 +93,17 @@ py::array_t<double> crowd_poses(const std::string& file, const std::optional<std
 }  // namespace
 
 void add_poses(py::module_& m) {
-    m.def(
-        "crowd_poses", &crowd_poses, py::arg("record"), py::arg("agents") = py::none(), py::arg("times") = py::none(),
-        py::kw_only(), py::arg("graph") = py::none(), py::arg("blend") = 0.25, py::arg("joints") = "all",
-        R"doc(Joint positions of a crowd record's agents, blended at clip starts as the viewer and `mobb export-crowd`.
+    m.def("crowd_poses", &crowd_poses, py::arg("record"), py::arg("agents") = py::none(), py::arg("times") = py::none(),
+          py::kw_only(), py::arg("graph") = py::none(), py::arg("blend") = 0.25, py::arg("joints") = "all",
+          py::arg("lock_feet") = true,
+          R"doc(Joint positions of a crowd record's agents, blended at clip starts and with planted feet locked, as the
+viewer and `mobb export-crowd`.
 
 record  a crowd record file (mobb crowd --record, or mobb.crowd(record=...)).
 agents  agent indices (None: all); times: seconds, 0 <= t <= frames * dt (None: every frame k * dt).
 graph   the motion graph (None: the one the record names); blend: seconds over which a clip start eases
-        out of the previous clip (0: the raw clips); joints: "all" (every joint all sources share) or "major".
+        out of the previous clip (0: the raw clips); joints: "all" (every joint all sources share) or "major";
+        lock_feet: hold planted feet where they came down (False: as the blended clips put them).
 Returns a (agents, times, joints, 3) float64 array of ground coordinates (x, y, h) in metres, h above the
 floor; joint 0 is the root's ground point, on the record's track. Joint names: crowd_joints.)doc");
     m.def(

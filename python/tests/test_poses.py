@@ -61,3 +61,20 @@ def test_bvh_export_reads_back_as_the_track(record, tmp_path, mobb_exe):
     clip = mobb.load(str(tmp_path / "agent_2.bvh"))
     poses = mobb.crowd_poses(str(record), [2])
     np.testing.assert_allclose(clip.path[:, 1:3], poses[0, :, 0, :2], atol=1e-3)
+
+
+def test_export_and_python_give_the_same_locked_feet(record, tmp_path, mobb_exe):
+    code, out, err = run_cli(mobb_exe, "export-crowd", str(record), "--format", "bvh", "--out", str(tmp_path),
+                             "--agents", "1:2", "--joints", "major")
+    assert code == 0, err
+    names, _ = mobb.crowd_joints(str(record), joints="major")
+    clip = mobb.load(str(tmp_path / "agent_1.bvh"))
+    locked = mobb.crowd_poses(str(record), [1], joints="major")
+    free = mobb.crowd_poses(str(record), [1], joints="major", lock_feet=False)
+    feet = [names.index(n) for n in names if n.endswith("_Foot") or n.endswith("_ToeBase")]
+    assert np.abs(locked[0, :, feet] - free[0, :, feet]).max() > 0.005  # metres: locking moved the feet
+    # BVH is Y up: a joint's x is mobb's x, its height the file's y.
+    loaded = clip.info["joint_names"]
+    written = clip.joints[:, [loaded.index(names[j]) for j in feet]]
+    np.testing.assert_allclose(written[:, :, 0], locked[0][:, feet, 0], atol=1e-5)
+    np.testing.assert_allclose(written[:, :, 1], locked[0][:, feet, 2], atol=1e-5)

@@ -31,7 +31,7 @@ void parse_range(const std::string& text, const std::string& option, std::option
 struct ExportArgs {
     std::string record, out, format, graph, agents, time, joints = "all";
     double fps = 0, blend = 0.25;
-    bool body = false, no_world = false, jumps = false;
+    bool body = false, no_world = false, jumps = false, free_feet = false;
 };
 
 void run_export(const ExportArgs& a, std::ostream& out) {
@@ -61,11 +61,13 @@ void run_export(const ExportArgs& a, std::ostream& out) {
     const auto t_start = std::chrono::steady_clock::now();
     crowd::PoseBlend blend;
     blend.window = a.blend;
+    crowd::FootLock lock;
+    lock.on = !a.free_feet;
     auto sources = std::make_shared<crowd::PoseSources>(graph);
     std::unique_ptr<crowd::CrowdPoser> poser;
     try {
         poser = std::make_unique<crowd::CrowdPoser>(
-            record, sources, a.joints == "major" ? crowd::RigJoints::Major : crowd::RigJoints::All, blend);
+            record, sources, a.joints == "major" ? crowd::RigJoints::Major : crowd::RigJoints::All, blend, lock);
     } catch (const crowd::GraphError& e) {
         throw InputError(a.record + ": " + e.what());
     } catch (const std::out_of_range& e) {
@@ -126,6 +128,8 @@ void add_export_commands(CLI::App& app, int& exit_code) {
     cmd->add_option("--blend", a->blend, "Seconds over which a clip start eases out of the previous clip (0: none)")
         ->check(CLI::Range(0.0, 10.0))
         ->capture_default_str();
+    cmd->add_flag("--free-feet", a->free_feet,
+                  "Leave planted feet where the blended clips put them (default: locked where they came down)");
     cmd->add_flag("--body", a->body, "glTF: a skinned capsule per bone, so agents render as people");
     cmd->add_flag("--no-world", a->no_world, "glTF: leave out walls, obstacles and goals");
     cmd->add_flag("--jumps", a->jumps, "Also print the p99 joint jump at clip starts and within clips");

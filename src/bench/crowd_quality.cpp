@@ -152,6 +152,57 @@ void add_scenario_target(CrowdQualityTable& t) {
     add_goal_quality_targets(t);
 }
 
+// The worst of `value` over every run measured, and the run.
+template <typename F>
+std::pair<double, std::string> worst_run(const CrowdQualityTable& t, F value) {
+    std::pair<double, std::string> worst{-1e300, ""};
+    const auto see = [&](const std::optional<crowd::CrowdMotion>& m, const std::string& run) {
+        if (!m || !m->blended.feet) return;
+        const double v = value(*m);
+        if (v > worst.first) worst = {v, run};
+    };
+    for (const WanderRow& r : t.wander)
+        see(r.motion, "wander " + std::to_string(r.agents) + " seed " + std::to_string(r.seed));
+    for (const ScenarioRow& r : t.scenarios) see(r.motion, r.name + " seed " + std::to_string(r.seed));
+    return worst;
+}
+
+// Issue 47's feet targets: GMD's skating share of the poses shown at most the raw clips' for every kind of
+// clip; planted feet (found contacts) sliding at most 1 cm per frame (p99) and the IK's residual p99 at
+// most 1 cm; every run measured, the worst kind of the worst run.
+void add_feet_targets(CrowdQualityTable& t) {
+    const auto over_kinds = [](const crowd::CrowdMotion& m, auto value) {
+        double worst = -1e300;
+        for (std::size_t k = 0; k < m.blended.sliding.size(); ++k)
+            if (m.blended.sliding[k].contact > 0) worst = std::max(worst, value(m, k));
+        return worst;
+    };
+    const auto skate = worst_run(t, [&](const crowd::CrowdMotion& m) {
+        return over_kinds(m, [](const crowd::CrowdMotion& x, std::size_t k) {
+            return 100 * (x.blended.sliding[k].skate_share - x.raw.sliding[k].skate_share);
+        });
+    });
+    const auto slide = worst_run(t, [&](const crowd::CrowdMotion& m) {
+        return over_kinds(m,
+                          [](const crowd::CrowdMotion& x, std::size_t k) { return 100 * x.blended.hold[k].slide.p99; });
+    });
+    const auto residual = worst_run(t, [&](const crowd::CrowdMotion& m) {
+        return over_kinds(
+            m, [](const crowd::CrowdMotion& x, std::size_t k) { return 100 * x.blended.hold[k].residual.p99; });
+    });
+    const std::pair<const char*, std::pair<double, std::string>> rows[] = {
+        {"feet: skating share (GMD) of the poses shown minus the raw clips', percentage points, every kind of clip",
+         skate},
+        {"feet: p99 slide of a planted foot per frame (found contacts), cm, every kind of clip", slide},
+        {"feet: p99 IK residual (ankle to its target), cm, every kind of clip", residual}};
+    const double goals[] = {0.0, 1.0, 1.0};
+    for (std::size_t i = 0; i < 3; ++i) {
+        Target x = at_most(rows[i].first, goals[i], rows[i].second.first, "worst: " + rows[i].second.second);
+        x.known = !rows[i].second.second.empty();
+        t.targets.push_back(x);
+    }
+}
+
 // Issue 30's pops target: blended, the p99 joint jump at clip starts at most 1.2x the p99 within clips,
 // on every run measured (the 100-agent wander and every scenario among them).
 void add_motion_target(CrowdQualityTable& t) {
@@ -170,29 +221,43 @@ void add_motion_target(CrowdQualityTable& t) {
                        1.2, worst, "worst: " + where, true);
     m.known = !where.empty();
     t.targets.push_back(m);
+    add_feet_targets(t);
 }
 
 std::string spread_cell(const crowd::Spread& s) { return fixed(s.median, 3) + " / " + fixed(s.p99, 3); }
 
 void motion_rows(std::ostream& out, const std::string& run, std::uint64_t seed, const crowd::CrowdMotion& m) {
-    for (const crowd::MotionMetrics* x : {&m.raw, &m.blended}) {
-        out << "| " << run << " | " << seed << " | " << (x->blend > 0 ? fixed(x->blend, 2) : "off") << " | "
-            << x->jump_start.count << " | " << spread_cell(x->jump_start) << " | " << spread_cell(x->jump_within)
-            << " | " << fixed(x->jump_ratio(), 2) << " |";
+    const std::pair<const crowd::MotionMetrics*, const char*> rows[] = {
+        {&m.raw, "raw"}, {&m.unlocked, "free"}, {&m.blended, m.blended.locked ? "locked" : "free"}};
+    for (const auto& [x, feet] : rows) {
+        if (x == &m.unlocked && !m.blended.locked) continue;  // the same poses as the row after
+        out << "| " << run << " | " << seed << " | " << (x->blend > 0 ? fixed(x->blend, 2) : "off") << " | " << feet
+            << " | " << x->jump_start.count << " | " << spread_cell(x->jump_start) << " | "
+            << spread_cell(x->jump_within) << " | " << fixed(x->jump_ratio(), 2) << " | " << fixed(x->knee_start.p99, 3)
+            << " / " << fixed(x->knee_within.p99, 3) << " |";
         for (const crowd::FootSliding& f : x->sliding)
             out << " " << (f.contact ? spread_cell(f.speed) + ", " + fixed(100 * f.skate_share, 1) : "-") << " |";
-        out << "\n";
+        std::string slide, residual;
+        for (std::size_t k = 0; k < x->hold.size(); ++k) {
+            const std::string sep = k ? " / " : "";
+            slide += sep + (x->hold[k].slide.count ? fixed(100 * x->hold[k].slide.p99, 2) : "-");
+            residual += sep + (x->hold[k].residual.count ? fixed(100 * x->hold[k].residual.p99, 2) : "-");
+        }
+        out << " " << slide << " | " << residual << " |\n";
     }
 }
 
 void motion_markdown(const CrowdQualityTable& t, std::ostream& out) {
-    out << "\n### Motion (poses: joint jumps and foot sliding, blending off and on)\n\n"
-        << "Joint jump: per agent and frame the largest move of a joint relative to the root (m); foot sliding: a "
-           "toe's horizontal speed while in contact (m/s) and the share of contact steps skating (%), by the kind "
-           "of clip played.\n\n"
-        << "| run | seed | blend s | clip starts | jump at starts median / p99 | within clips median / p99 | p99 "
-           "ratio | walk: sliding median / p99, skating % | slow | in place | idle |\n"
-        << "|---|---:|---:|---:|---|---|---:|---|---|---|---|\n";
+    out << "\n### Motion (poses: joint jumps and foot sliding; raw clips, blended, blended with feet locked)\n\n"
+        << "Joint jump: per agent and frame the largest move of a joint relative to the root (m); knee: the largest "
+           "change of a knee's angle per frame (rad, p99 at clip starts / within clips); foot sliding: a toe's "
+           "horizontal speed while in contact by GMD's rule (m/s) and the share of contact steps skating (%), by the "
+           "kind of clip played; planted: the planted point's move per frame during the contacts found in the "
+           "mocap (p99, cm) and the IK's residual (p99, cm), walk / slow / in place / idle.\n\n"
+        << "| run | seed | blend s | feet | clip starts | jump at starts median / p99 | within clips median / p99 | "
+           "p99 ratio | knee p99 | walk: sliding median / p99, skating % | slow | in place | idle | planted slide "
+           "p99 cm | IK residual p99 cm |\n"
+        << "|---|---:|---:|---|---:|---|---|---:|---|---|---|---|---|---|---|\n";
     for (const WanderRow& r : t.wander)
         if (r.motion) motion_rows(out, "wander " + std::to_string(r.agents), r.seed, *r.motion);
     for (const ScenarioRow& r : t.scenarios)
@@ -230,7 +295,8 @@ CrowdQualityTable run_crowd_quality(const CrowdQualityOptions& o, const std::fun
     t.notes["cpu"] = cpu_name();
     t.notes["motion"] = motion_note.empty()
                             ? "every agent's pose (all joints) at every frame of runs of at most " +
-                                  std::to_string(o.motion_agents) + " agents, blended (0.25 s) and the raw clips; " +
+                                  std::to_string(o.motion_agents) +
+                                  " agents: the raw clips, blended (0.25 s), blended with feet locked; " +
                                   "foot contact: toe below 0.05 m, skating above 0.5 m/s (GMD, ICCV 2023)"
                             : motion_note;
     return t;

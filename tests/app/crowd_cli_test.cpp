@@ -98,10 +98,13 @@ TEST(CrowdCli, MotionMetricsNeedTheMocap) {
     if (!io::data_dir().empty()) {
         const Result r = run("crowd --quiet --graph " + kGraph + args);
         ASSERT_EQ(r.code, 0) << r.err;
-        EXPECT_NE(r.out.find("blended 0.25 s: joint jump median / p99"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("blended 0.25 s, feet locked: joint jump median / p99"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("planted feet (found contacts)"), std::string::npos) << r.out;
         const nlohmann::json m = nlohmann::json::parse(test::slurp(rec))["metrics"]["motion"];
         EXPECT_EQ(m["foot_contact"]["height"].get<double>(), 0.05);
         EXPECT_GT(m["raw"]["jump_start"]["p99"].get<double>(), m["blended"]["jump_start"]["p99"].get<double>());
+        EXPECT_TRUE(m["blended"]["feet_locked"].get<bool>());
+        EXPECT_TRUE(m["unlocked"]["foot_contacts"].contains("walk"));
     }
     std::remove(rec.c_str());
     std::remove(graph.c_str());

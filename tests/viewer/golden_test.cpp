@@ -341,7 +341,9 @@ TEST(Golden, CrowdBlendUnderWay) {
     ASSERT_FALSE(viewer::agent_skeletons(*s.crowd, 0.0, {}).empty()) << viewer::skeleton_problem(*s.crowd);
     crowd::PoseBlend off;
     off.window = 0;
-    auto raw = std::make_shared<crowd::CrowdPoser>(s.crowd->record(), s.crowd->poses, crowd::RigJoints::All, off);
+    crowd::FootLock free;
+    free.on = false;
+    auto raw = std::make_shared<crowd::CrowdPoser>(s.crowd->record(), s.crowd->poses, crowd::RigJoints::All, off, free);
     raw->use_samples(&s.crowd->window);
     const BlendMoment m = largest_blend(*s.crowd->poser, *raw);
     ASSERT_GE(m.agent, 0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -13,6 +14,35 @@
 namespace mobb::crowd {
 
 namespace {
+
+bool ends_with(const std::string& name, const std::string& suffix) {
+    return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The first joint whose name ends with `suffix`, -1 when none.
+int joint_named(const std::vector<std::string>& names, const std::string& suffix) {
+    for (std::size_t j = 0; j < names.size(); ++j)
+        if (ends_with(names[j], suffix)) return int(j);
+    return -1;
+}
+
+// The take's foot contacts from its heels (ankles) and toes, heights above its lowest joint.
+std::array<FootTrack, 2> source_contacts(const io::Clip& clip, double floor) {
+    const io::Skeleton& sk = clip.animation.skeleton;
+    std::array<std::vector<glm::dvec3>, 2> heel, toe;
+    for (std::size_t f = 0; f < 2; ++f) {
+        const std::string side = f ? "R_" : "L_";
+        const int h = joint_named(sk.names, side + "Foot"), t = joint_named(sk.names, side + "ToeBase");
+        if (h < 0 || t < 0) return {};
+        for (int i = 0; i < clip.animation.frames(); ++i) {
+            const glm::dvec3 ph = io::to_ground(clip.animation.at(i, h), clip.up);
+            const glm::dvec3 pt = io::to_ground(clip.animation.at(i, t), clip.up);
+            heel[f].push_back({ph.x, ph.y, ph.z - floor});
+            toe[f].push_back({pt.x, pt.y, pt.z - floor});
+        }
+    }
+    return detect_contacts(heel, toe, clip.animation.dt);
+}
 
 std::unique_ptr<PoseSource> make_source(const MotionGraph& g, int source) {
     auto out = std::make_unique<PoseSource>();
@@ -27,6 +57,7 @@ std::unique_ptr<PoseSource> make_source(const MotionGraph& g, int source) {
         double lowest = 1e300;
         for (const glm::dvec3& p : clip->animation.positions) lowest = std::min(lowest, io::to_ground(p, clip->up).z);
         out->floor = clip->animation.positions.empty() ? 0.0 : lowest;
+        out->feet = source_contacts(*clip, out->floor);
         out->clip = std::move(clip);
     } catch (const std::exception& e) {
         out->error = e.what();
@@ -95,8 +126,16 @@ const PoseSource& PoseSources::get(int source) {
     if (!slot) {
         slot = make_source(*graph_, source);
         if (!slot->error.empty() && error_.empty()) error_ = slot->error;
+        contacts_.resize(graph_->clips.size());
+        for (std::size_t c = 0; c < graph_->clips.size(); ++c)
+            if (graph_->clips[c].source == source) contacts_[c] = clip_contacts(slot->feet, graph_->clips[c]);
     }
     return *slot;
+}
+
+const std::vector<ContactSpan>& PoseSources::contacts(int clip) {
+    get(graph_->clips.at(std::size_t(clip)).source);
+    return contacts_[std::size_t(clip)];
 }
 
 int PoseSources::loaded() const {
@@ -143,26 +182,62 @@ Rig crowd_rig(PoseSources& sources, RigJoints joints) {
     return rig;
 }
 
-CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints, PoseBlend blend)
-    : record_(record), sources_(std::move(sources)), blend_(blend) {
+std::array<RigLeg, 2> rig_legs(const Rig& rig) {
+    std::array<RigLeg, 2> legs;
+    for (std::size_t f = 0; f < 2; ++f) {
+        RigLeg& leg = legs[f];
+        const std::string side = f ? "R_" : "L_";
+        leg.hip = joint_named(rig.names, side + "Thigh");
+        leg.knee = joint_named(rig.names, side + "Calf");
+        leg.ankle = joint_named(rig.names, side + "Foot");
+        leg.toe = joint_named(rig.names, side + "ToeBase");
+        if (!leg.complete()) continue;
+        // A joint hangs from the nearest of ankle, knee and hip above it (parents come before children).
+        std::vector<int> segment(std::size_t(rig.size()), 0);
+        for (int j = 1; j < rig.size(); ++j) {
+            const int p = rig.parents[std::size_t(j)];
+            segment[std::size_t(j)] = p == leg.ankle  ? 3
+                                      : p == leg.knee ? 2
+                                      : p == leg.hip  ? 1
+                                                      : segment[std::size_t(p)];
+            if (j == leg.knee || j == leg.ankle) continue;
+            if (segment[std::size_t(j)] > 0) leg.hanging.push_back({j, segment[std::size_t(j)]});
+        }
+    }
+    return legs;
+}
+
+CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints, PoseBlend blend,
+                       FootLock lock)
+    : record_(record), sources_(std::move(sources)), blend_(blend), lock_(lock) {
     const MotionGraph& g = sources_->graph();
     if (std::abs(record.dt - g.dt()) > 1e-9)
         throw GraphError("record dt " + std::to_string(record.dt) + " s differs from its graph's " +
                          std::to_string(g.dt()) + " s");
     check_graph_clips(record, g.clips.size());
     rig_ = crowd_rig(*sources_, joints);
+    legs_ = rig_legs(rig_);
+    for (int j = 0; j < rig_.size(); ++j) all_.push_back(j);
+    leg_joints_ = {0};
+    for (std::size_t f = 0; f < 2; ++f) {
+        const RigLeg& leg = legs_[f];
+        if (!leg.complete()) continue;
+        foot_[f] = {0, leg.hip, leg.knee, leg.ankle, leg.toe};
+        for (int j : {leg.knee, leg.ankle}) leg_joints_.push_back(j);
+        for (const auto& h : leg.hanging) leg_joints_.push_back(h.first);
+    }
 }
 
-bool CrowdPoser::raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out) {
+bool CrowdPoser::raw(const AgentClipAt& at, int sample, const std::vector<int>& joints, std::vector<glm::dvec3>& out) {
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const PoseSource& src = loaded(*sources_, gc.source);
     if (sample < 0 || sample >= src.clip->animation.frames()) return false;
     const Rigid2 m = Rigid2::of(source_to_world(src, gc, at.placed->place));
-    const std::vector<int>& joints = rig_.source_joints[std::size_t(gc.source)];
-    out.resize(joints.size());
-    for (std::size_t j = 0; j < joints.size(); ++j) {
-        const glm::dvec3 p = io::to_ground(src.clip->animation.at(sample, joints[j]), src.clip->up);
-        out[j] = {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y), p.z - src.floor};
+    const std::vector<int>& source_joints = rig_.source_joints[std::size_t(gc.source)];
+    out.resize(source_joints.size());
+    for (int j : joints) {
+        const glm::dvec3 p = io::to_ground(src.clip->animation.at(sample, source_joints[std::size_t(j)]), src.clip->up);
+        out[std::size_t(j)] = {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y), p.z - src.floor};
     }
     out[0].z = 0.0;  // the path's point: sources root their skeletons at the hips or at the floor
     return true;
@@ -171,16 +246,37 @@ bool CrowdPoser::raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>&
 bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out) { return pose(agent, k, out, c_); }
 
 bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw_out) {
-    const MotionGraph& g = sources_->graph();
+    return pose(agent, k, out, raw_out, u_, nullptr);
+}
+
+bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw_out,
+                      std::vector<glm::dvec3>& unlocked, FeetAt* feet) {
     if (agent < 0 || std::size_t(agent) >= record_.tracks.size() || k < 0 || k >= record_.frames) return false;
-    const std::int64_t last = last_frame(record_, g, agent);
+    const std::int64_t last = last_frame(record_, sources_->graph(), agent);
     if (last < 0) return false;
     k = std::min(k, last);
+    if (!free_pose(agent, k, all_, out, raw_out)) return false;
+    unlocked = out;
+    posed_agent_ = agent_clip_at(record_, sources_->graph(), agent, k, posed_) ? agent : -1;
+    posed_frame_ = k;
+    if (feet) {
+        *feet = {};
+        for (int f = 0; f < 2; ++f)
+            if (legs_[std::size_t(f)].complete()) feet->plant[std::size_t(f)] = plant_at(agent, k, f);
+    }
+    if (lock_.on) lock_feet(agent, k, out, feet);
+    return true;
+}
+
+bool CrowdPoser::free_pose(int agent, std::int64_t k, const std::vector<int>& joints, std::vector<glm::dvec3>& out,
+                           std::vector<glm::dvec3>& raw_out) {
+    const MotionGraph& g = sources_->graph();
     AgentClipAt at;
-    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, raw_out)) return false;
-    out = raw_out;
-    const AgentTrack& track = record_.tracks[std::size_t(agent)];
+    if (!agent_clip_at(record_, g, agent, k, at) || !raw(at, at.sample, joints, raw_out)) return false;
+    out.resize(raw_out.size());
+    for (int j : joints) out[std::size_t(j)] = raw_out[std::size_t(j)];
     if (!(blend_.window > 0)) return true;
+    const AgentTrack& track = record_.tracks[std::size_t(agent)];
     const double window = blend_.window / record_.dt;  // frames
     const double i = double(k - at.placed->start);
     if (at.index > 0 && i < window) {
@@ -189,17 +285,20 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const AgentClipAt from{&prev, at.index - 1, gp.exit};
         // Only clips played back to back blend (the previous one ran to its exit).
-        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, a_) && raw(at, gc.first, b_)) {
+        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, joints, a_) &&
+            raw(at, gc.first, joints, b_)) {
             const double s = i / window, w = 1.0 - s * s * (3.0 - 2.0 * s);
             // Offsets in the ground relative to the root, heights as they are (the root is on the floor).
-            for (std::size_t j = 1; j < out.size(); ++j) out[j] += w * ((a_[j] - a_[0]) - (b_[j] - b_[0]));
+            for (int j : joints)
+                if (j > 0) out[std::size_t(j)] += w * ((a_[std::size_t(j)] - a_[0]) - (b_[std::size_t(j)] - b_[0]));
         }
     }
-    keep_inside(agent, k, out);
+    disk_ = envelope(agent, k);
+    hold_inside(joints, disk_, out);
     return true;
 }
 
-void CrowdPoser::keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const {
+double CrowdPoser::envelope(int agent, std::int64_t k) const {
     // The agent's disks: frames first .. last of the record's track, or of the window.
     const AgentTrack& track = record_.tracks[std::size_t(agent)];
     std::int64_t first = 0, last = std::int64_t(track.samples.size()) - 1;
@@ -214,7 +313,7 @@ void CrowdPoser::keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>&
                        : track.samples[std::size_t(m)][3];
     };
     k = std::min(k, last);
-    if (k < first) return;
+    if (k < first) return std::numeric_limits<double>::infinity();
     // The envelope e(k) = min over k' in [k, k + look-ahead] of r(k') + pull_speed (k' - k) dt is at most
     // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
     // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
@@ -223,11 +322,17 @@ void CrowdPoser::keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>&
     double e = radius(k);
     for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m)
         e = std::min(e, radius(m) + blend_.pull_speed * double(m - k) * record_.dt);
-    for (std::size_t j = 1; j < out.size(); ++j) {
-        const double dx = out[j].x - out[0].x, dy = out[j].y - out[0].y, d2 = dx * dx + dy * dy;
+    return e;
+}
+
+void CrowdPoser::hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const {
+    for (int j : joints) {
+        if (j == 0) continue;
+        glm::dvec3& q = out[std::size_t(j)];
+        const double dx = q.x - out[0].x, dy = q.y - out[0].y, d2 = dx * dx + dy * dy;
         if (d2 <= e * e) continue;
         const double f = e / std::sqrt(d2);
-        out[j] = {out[0].x + dx * f, out[0].y + dy * f, out[j].z};
+        q = {out[0].x + dx * f, out[0].y + dy * f, q.z};
     }
 }
 

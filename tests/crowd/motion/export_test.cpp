@@ -43,8 +43,10 @@ const Record& record() {
     return r;
 }
 
-CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All) {
-    return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend);
+CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true) {
+    FootLock lock;
+    lock.on = lock_feet;
+    return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend, lock);
 }
 
 TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
@@ -91,7 +93,7 @@ TEST(AgentPose, BlendingRemovesThePopsAtClipStarts) {
     for (int a = 0; a < int(record().tracks.size()); ++a) agents.push_back(a);
     PoseBlend off;
     off.window = 0;
-    CrowdPoser raw = poser(off), blended = poser();
+    CrowdPoser raw = poser(off, RigJoints::All, false), blended = poser();
     const CrowdMotion both = motion_metrics(blended, agents, 0, record().frames, 2);
     const MotionMetrics before = motion_metrics(raw, agents, 0, record().frames).blended, after = both.blended;
     // One posing gives the raw clips' metrics too, as a poser without blending does.
@@ -141,6 +143,79 @@ TEST(MotionMetrics, WalkingFeetArePlantedInContact) {
     EXPECT_EQ(j["motion"]["joints"].get<int>(), p.rig().size());
     EXPECT_EQ(j["motion"]["raw"]["jump_start"]["count"].get<std::size_t>(), m.raw.jump_start.count);
     EXPECT_TRUE(j["motion"]["blended"]["foot_sliding"].contains("walk"));
+}
+
+// A foot planted across a clip start stays where its heel came down, in the world, through the transition,
+// where the blended clips alone move it; it moves only where the hold says it was dragged (the leg could not
+// reach, or the disk), and most holds are never dragged.
+TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser locked = poser(), free = poser({}, RigJoints::All, false);
+    std::vector<glm::dvec3> pose, raw, unlocked, free_pose;
+    FeetAt feet;
+    int held = 0, reached = 0;
+    double free_moved = 0;
+    for (int a = 0; a < int(record().tracks.size()); ++a)
+        for (std::size_t c = 1; c < record().tracks[std::size_t(a)].clips.size(); ++c) {
+            const std::int64_t start = record().tracks[std::size_t(a)].clips[c].start;
+            for (int f = 0; f < 2; ++f) {
+                const std::size_t ankle = std::size_t(locked.legs()[std::size_t(f)].ankle);
+                // The heel's run around the clip start: frames [k0, k1].
+                const auto heel = [&](std::int64_t k) {
+                    return locked.pose(a, k, pose, raw, unlocked, &feet) && feet.plant[std::size_t(f)] == Plant::Heel;
+                };
+                if (!heel(start - 1) || !heel(start)) continue;
+                std::int64_t k0 = start - 1, k1 = start;
+                while (heel(k0 - 1)) --k0;
+                while (heel(k1 + 1)) ++k1;
+                ASSERT_TRUE(locked.pose(a, k0, pose, raw, unlocked, &feet));
+                glm::dvec3 last = pose[ankle];
+                const glm::dvec3 first = pose[ankle];
+                const glm::dvec3 free_first = unlocked[ankle];
+                double slack = feet.residual[std::size_t(f)];
+                bool exact = true;
+                for (std::int64_t k = k0 + 1; k <= k1; ++k) {
+                    ASSERT_TRUE(locked.pose(a, k, pose, raw, unlocked, &feet) && free.pose(a, k, free_pose));
+                    EXPECT_TRUE(feet.held[std::size_t(f)]);
+                    slack += feet.residual[std::size_t(f)] + feet.dragged[std::size_t(f)];
+                    EXPECT_LE(glm::length(pose[ankle] - last), slack + 1e-9) << "agent " << a << " frame " << k;
+                    slack = feet.residual[std::size_t(f)];
+                    last = pose[ankle];
+                    exact = exact && feet.residual[std::size_t(f)] < 1e-9 && feet.dragged[std::size_t(f)] == 0;
+                    // The free poser gives the unlocked pose.
+                    EXPECT_LT(glm::length(free_pose[ankle] - unlocked[ankle]), 1e-12);
+                    free_moved = std::max(
+                        free_moved, std::hypot(unlocked[ankle].x - free_first.x, unlocked[ankle].y - free_first.y));
+                }
+                ++held;
+                reached += exact && glm::length(pose[ankle] - first) < 1e-9;
+            }
+        }
+    EXPECT_GT(held, 20);
+    EXPECT_GT(reached, held / 2);  // most holds are exact: the foot does not move at all
+    EXPECT_GT(free_moved, 0.02);   // metres: without the lock the ankle slides through the transition
+}
+
+// A hold is followed frame by frame and kept per agent and foot; posing the frames backwards (every frame
+// starting its hold over) gives the same poses as posing them in order, to the bit.
+TEST(FootLock, PosesDoNotDependOnTheOrderFramesArePosedIn) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser forward = poser(), backward = poser();
+    std::vector<glm::dvec3> a, b;
+    const std::int64_t frames = std::min<std::int64_t>(record().frames, 300);
+    std::vector<std::vector<glm::dvec3>> ahead;
+    for (int agent : {0, 5}) {
+        ahead.clear();
+        for (std::int64_t k = 0; k < frames; ++k) {
+            ASSERT_TRUE(forward.pose(agent, k, a));
+            ahead.push_back(a);
+        }
+        for (std::int64_t k = frames - 1; k >= 0; --k) {
+            ASSERT_TRUE(backward.pose(agent, k, b));
+            for (std::size_t j = 0; j < b.size(); ++j)
+                ASSERT_EQ(b[j], ahead[std::size_t(k)][j]) << "agent " << agent << " frame " << k << " joint " << j;
+        }
+    }
 }
 
 TEST(AgentPose, TimesBetweenFramesInterpolate) {
@@ -211,8 +286,8 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
     EXPECT_EQ(times.count, 301u);
     EXPECT_NEAR(times.minValues[0], 3.0, 1e-6);
     EXPECT_NEAR(times.maxValues[0], 13.0, 1e-5);
-    double root_error = 0, joint_error = 0;
-    std::vector<glm::dvec3> pose;
+    double root_error = 0, joint_error = 0, lock_moved = 0;
+    std::vector<glm::dvec3> pose, raw, unlocked;
     for (int k = 0; k < 5; ++k) {
         const int agent = 2 + k;
         EXPECT_EQ(m.nodes[std::size_t(m.skins[std::size_t(k)].joints[0])].name,
@@ -223,14 +298,17 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
             const auto& s = record().tracks[std::size_t(agent)].samples[std::size_t(frame)];
             // glTF is Y up: the ground point (x, y) is (x, -z).
             root_error = std::max(root_error, std::hypot(joints[0].x - s[1], -joints[0].z - s[2]));
-            ASSERT_TRUE(p.pose(agent, frame, pose));
-            for (std::size_t j = 0; j < pose.size(); ++j)
+            ASSERT_TRUE(p.pose(agent, frame, pose, raw, unlocked, nullptr));
+            for (std::size_t j = 0; j < pose.size(); ++j) {
                 joint_error =
                     std::max(joint_error, glm::length(joints[j] - glm::dvec3(pose[j].x, pose[j].z, -pose[j].y)));
+                lock_moved = std::max(lock_moved, glm::length(pose[j] - unlocked[j]));
+            }
         }
     }
     EXPECT_LT(root_error, 1e-3);
     EXPECT_LT(joint_error, 1e-3);
+    EXPECT_GT(lock_moved, 0.01);  // metres: the file has the locked feet, not the free ones
 }
 
 TEST(ExportCrowd, BvhComesBackAsTheAgentsTrack) {

@@ -5,14 +5,17 @@
 // `first` to the origin, heading to +x, then the clip's placement). At a clip start the pose eases from
 // where the previous clip left it (blending, below). Units: metres, seconds, radians.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "mobb/crowd/graph/motion_graph.h"
+#include "mobb/crowd/motion/foot_contact.h"
 #include "mobb/crowd/record/record.h"
 #include "mobb/crowd/record/record_file.h"
 
@@ -23,11 +26,13 @@ namespace mobb::crowd {
 std::string record_graph_file(const Record& record);
 
 /// One graph source as the poses need it: the animation, per sample the root and heading the graph used
-/// to localise clips (pose_track), and the lowest joint height over the take (the skeleton's feet).
+/// to localise clips (pose_track), the lowest joint height over the take (the skeleton's feet), and its
+/// foot contacts (detect_contacts; empty tracks when the skeleton has no `L_Foot` / `L_ToeBase` ...).
 struct PoseSource {
     std::shared_ptr<const io::Clip> clip;  ///< null when it could not be loaded (see error)
     std::vector<double> root_x, root_y, heading;
     double floor = 0.0;
+    std::array<FootTrack, 2> feet;  ///< left, right
     std::string error;
 };
 
@@ -46,11 +51,13 @@ struct AgentClipAt {
 bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_t k, AgentClipAt& out);
 
 /// Every source of one graph, each loaded on first use and kept (a failure too, with its reason, so a
-/// missing file is not retried every frame). Not thread-safe.
+/// missing file is not retried every frame), with its foot contacts found once, on loading. Not thread-safe.
 class PoseSources {
 public:
     explicit PoseSources(std::shared_ptr<const MotionGraph> graph) : graph_(std::move(graph)) {}
     const PoseSource& get(int source);
+    /// The foot contacts of graph clip `clip` (clip_contacts; loads its source; empty when it cannot be).
+    const std::vector<ContactSpan>& contacts(int clip);
     /// The first load failure met so far ("" when none).
     const std::string& error() const { return error_; }
     int loaded() const;
@@ -59,6 +66,7 @@ public:
 private:
     std::shared_ptr<const MotionGraph> graph_;
     std::vector<std::unique_ptr<PoseSource>> sources_;
+    std::vector<std::vector<ContactSpan>> contacts_;  ///< per clip, filled as its source loads
     std::string error_;
 };
 
@@ -94,12 +102,42 @@ struct PoseBlend {
     double look_ahead = 0.5;  ///< seconds
 };
 
+/// A leg of the rig (rig joint indices, -1 where the rig lacks it): hip (`Thigh`), knee (`Calf`), ankle
+/// (`Foot`), toe (`ToeBase`), and the rig's other joints that hang from it with the segment they follow
+/// (1: thigh, 2: shin, 3: foot).
+struct RigLeg {
+    int hip = -1, knee = -1, ankle = -1, toe = -1;
+    std::vector<std::pair<int, int>> hanging;
+    bool complete() const { return hip >= 0 && knee >= 0 && ankle >= 0 && toe >= 0; }
+};
+/// The left (0) and right (1) legs of `rig`.
+std::array<RigLeg, 2> rig_legs(const Rig& rig);
+
+/// What foot locking did at one frame, per foot (left, right).
+struct FeetAt {
+    std::array<Plant, 2> plant{};      ///< the foot's contact at the frame (Free: none)
+    std::array<bool, 2> held{};        ///< the ankle had a target (in contact, or releasing after one)
+    std::array<double, 2> residual{};  ///< metres from the ankle to its target after the IK (and the disk)
+    /// Metres the planted point was dragged at this frame, where the leg could not reach it or it left the
+    /// disk (FootLock::reach); 0 while the hold holds.
+    std::array<double, 2> dragged{};
+};
+
 /// Poses of a record's agents. Throws like crowd_rig on construction; GraphError when the record's dt is
 /// not the graph's (frames would not be samples). Not thread-safe (sources load on first use).
+///
+/// Foot locking (`lock`, on by default; foot_contact.h, Kovar et al. 2002): while a foot is in contact
+/// (its source's contacts, continued across back-to-back clips) its planted point - the ankle while the
+/// heel is down, the toe while only the toe is - stays where it was in the world when the contact began
+/// (where the planted point changes, the new one's place follows from the old one's); the ankle's target
+/// is that point plus the pose's own ankle offset from it, and two_joint_ik bends the leg to reach it
+/// (the rig's joints below the hip follow their segments). After a contact the correction decays over
+/// FootLock::release. The root and every other joint are not touched; the leg is held inside the disk
+/// like blended joints (where that moves the ankle off its target, it shows as the residual).
 class CrowdPoser {
 public:
     CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints = RigJoints::All,
-               PoseBlend blend = {});
+               PoseBlend blend = {}, FootLock lock = {});
     const Rig& rig() const { return rig_; }
     const Record& record() const { return record_; }
     /// The agents' disks from `window` (frames there; kept by the caller, null: the record's tracks) for
@@ -108,6 +146,8 @@ public:
     void use_samples(const SampleWindow* window) { window_ = window; }
     PoseSources& sources() const { return *sources_; }
     const PoseBlend& blend() const { return blend_; }
+    const FootLock& lock() const { return lock_; }
+    const std::array<RigLeg, 2>& legs() const { return legs_; }
     /// Joint positions of agent `agent` at global frame k: world ground coordinates (x, y, h), metres, h
     /// above the source's lowest joint (so feet stand on h = 0); out[0] is the root's ground point: the
     /// clip's path point (x, y) on the record's track, h = 0 (sources root their skeletons at the hips or
@@ -118,21 +158,68 @@ public:
     /// Both at once (one posing for the two): `out` as pose() gives it, `raw` the same frame unblended
     /// (as a poser with window 0 gives it).
     bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw);
+    /// All three at once, and what the locking did (`feet`, may be null): `unlocked` is `out` before foot
+    /// locking (as a poser with FootLock::on false gives it).
+    bool pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, std::vector<glm::dvec3>& raw,
+              std::vector<glm::dvec3>& unlocked, FeetAt* feet);
     /// At time t (seconds, 0 <= t <= frames * dt): linear between the poses of the frames around t, so a
     /// frame's own time gives that frame's pose.
     bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
 
 private:
-    /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor).
-    bool raw(const AgentClipAt& at, int sample, std::vector<glm::dvec3>& out);
-    void keep_inside(int agent, std::int64_t k, std::vector<glm::dvec3>& out) const;
+    struct FootFree {
+        glm::dvec3 hip{0.0}, knee{0.0}, ankle{0.0}, toe{0.0};
+        glm::dvec3 root{0.0};
+        double disk = 0;  ///< e(k): every joint's ground distance from the root at most this
+    };
+    /// A hold followed frame by frame from its contact's start (contact_target): the planted point, the
+    /// ankle's target and free position at `frame`. Kept per agent and foot, so consecutive frames (the
+    /// export, the metrics, playback) go on from the last one instead of starting over; the same numbers
+    /// either way.
+    struct Hold {
+        std::int64_t start = -1, frame = -1;
+        Plant plant = Plant::Free;
+        glm::dvec3 point{0.0}, target{0.0}, ankle{0.0};
+        double dragged = 0;  ///< metres, at `frame`
+    };
+    /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor), for rig
+    /// joints `joints` (joint 0 among them; the others of `out` are left as they are).
+    bool raw(const AgentClipAt& at, int sample, const std::vector<int>& joints, std::vector<glm::dvec3>& out);
+    /// The pose before foot locking (blended, held inside the disk), for `joints` only.
+    bool free_pose(int agent, std::int64_t k, const std::vector<int>& joints, std::vector<glm::dvec3>& out,
+                   std::vector<glm::dvec3>& raw_out);
+    /// e(k) (see PoseBlend), or infinity where the agent has no disk at frame k.
+    double envelope(int agent, std::int64_t k) const;
+    void hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const;
+    // Foot locking (foot_lock.cpp).
+    Plant plant_at(int agent, std::int64_t k, int foot);
+    bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
+    const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
+    void hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const;
+    glm::dvec3 within_reach(const glm::dvec3& target, const FootFree& q) const;
+    bool ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target, double& dragged);
+    void lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet);
 
     const Record& record_;
     const SampleWindow* window_ = nullptr;
     std::shared_ptr<PoseSources> sources_;
     Rig rig_;
     PoseBlend blend_;
-    std::vector<glm::dvec3> a_, b_, c_;
+    FootLock lock_;
+    std::array<RigLeg, 2> legs_;
+    std::vector<int> all_, leg_joints_;       // every rig joint; both legs' joints (root first)
+    std::array<std::vector<int>, 2> foot_;    // per foot: root, hip, knee, ankle, toe
+    std::vector<std::array<Hold, 2>> holds_;  // per agent and foot
+    double disk_ = 0;                         // e(k) of the last free_pose (with blending)
+    AgentClipAt posed_;                       // the clip of the frame pose() poses (agent -1: none)
+    int posed_agent_ = -1;
+    std::int64_t posed_frame_ = 0;
+    std::vector<glm::dvec3> a_, b_, c_, d_, e_, u_;
+    struct Segment {
+        std::int64_t begin;
+        Plant plant;
+    };
+    std::vector<Segment> segments_;
 };
 
 }  // namespace mobb::crowd

@@ -40,34 +40,50 @@ struct FootSliding {
     double skate_share = 0;   ///< contact steps faster than FootContact::kSkateSpeed / contact steps
 };
 
+/// Planted feet while agents play clips of one kind, by the contacts found in the motion capture
+/// (foot_contact.h), not by GMD's rule: how the planted point (the ankle while the heel is down, the toe
+/// while only the toe is) moves between consecutive frames of one contact, and how far the locked leg's
+/// ankle ends from its target.
+struct FootHold {
+    Spread slide;     ///< metres per frame, horizontal; per foot and frame step inside a contact
+    Spread residual;  ///< metres, ankle to target; per foot and frame with a target (locked poses only)
+};
+
 /// Pops and foot sliding of a crowd's poses. Joint jump: per agent and frame k >= 1 the largest move of a
 /// joint relative to the root between frames k - 1 and k (metres), split into frames where a clip starts
 /// and frames within clips (frames after an agent's clips end - it left - are not counted).
 struct MotionMetrics {
-    int joints = 0;    ///< per pose, root included
-    double blend = 0;  ///< the blending window (PoseBlend::window), seconds; 0: the raw clips
+    int joints = 0;       ///< per pose, root included
+    double blend = 0;     ///< the blending window (PoseBlend::window), seconds; 0: the raw clips
+    bool locked = false;  ///< feet locked (FootLock::on)
     Spread jump_start, jump_within;
     std::array<FootSliding, 4> sliding;  ///< by ClipKind (Walk, Slow, InPlace, Idle)
-    bool feet = false;                   ///< the rig has both toe joints (else sliding is empty)
+    std::array<FootHold, 4> hold;        ///< by ClipKind
+    /// Knee pops: per agent and frame the largest change of a knee's angle (between thigh and shin) from
+    /// frame k - 1 to k, radians, at clip starts and within clips as the joint jump.
+    Spread knee_start, knee_within;
+    bool feet = false;  ///< the rig has both legs (else sliding, hold and knees are empty)
     double jump_ratio() const { return jump_within.p99 > 0 ? jump_start.p99 / jump_within.p99 : 0.0; }
+    double knee_ratio() const { return knee_within.p99 > 0 ? knee_start.p99 / knee_within.p99 : 0.0; }
 };
 
-/// A crowd's motion with blending (the poses everything shows) and without (the raw clips).
+/// A crowd's motion as everything shows it (`blended`: blending and, when the poser locks feet, foot
+/// locking), blended without foot locking, and the raw clips.
 struct CrowdMotion {
-    MotionMetrics blended, raw;
+    MotionMetrics blended, unlocked, raw;
     double seconds = 0;  ///< wall time to measure them (sources loading included by crowd_motion)
 };
 
-/// Both, of `agents` over global frames [frame_begin, frame_end), in one posing: `blended` with the
-/// poser's blending, `raw` the same frames unblended. `threads` workers each pose their own agents (the
+/// All three, of `agents` over global frames [frame_begin, frame_end), in one posing: `blended` with the
+/// poser's blending and locking, `unlocked` without the locking, `raw` the same frames unblended. `threads` workers each pose their own agents (the
 /// sources are loaded once, by the poser's construction).
 CrowdMotion motion_metrics(CrowdPoser& poser, const std::vector<int>& agents, std::int64_t frame_begin,
                            std::int64_t frame_end, int threads = 1);
 
-/// Every agent and frame of `record`, all joints, blending window `blend` (seconds). Throws like
-/// CrowdPoser (io::LoadError without the motion capture, GraphError).
+/// Every agent and frame of `record`, all joints, blending window `blend` (seconds), feet locked or not.
+/// Throws like CrowdPoser (io::LoadError without the motion capture, GraphError).
 CrowdMotion crowd_motion(const Record& record, std::shared_ptr<const MotionGraph> graph,
-                         double blend = PoseBlend{}.window, int threads = 1);
+                         double blend = PoseBlend{}.window, int threads = 1, bool lock_feet = FootLock{}.on);
 
 /// As a JSON object (the record's metrics "motion") and as `mobb crowd` prints it.
 std::string motion_json(const CrowdMotion& m);

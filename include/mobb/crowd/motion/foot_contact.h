@@ -1,0 +1,97 @@
+// Foot contacts of the motion capture, found once per graph source, and the leg's two-joint IK that holds a
+// planted foot where it came down (foot locking, agent_pose.h). Reference: L. Kovar, J. Schreiner and M.
+// Gleicher, "Footskate Cleanup for Motion Capture Editing" (SCA 2002): footplants found in the motion, the
+// planted point held in the world, the leg bent analytically to reach it, the adjustment blended out after
+// the plant. Units: metres, seconds, radians.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mobb/crowd/graph/motion_graph.h"
+
+namespace mobb::crowd {
+
+/// How a foot stands at one sample. A foot's heel is its ankle joint (`Foot`), its toe the `ToeBase` joint.
+enum class Plant : std::uint8_t {
+    Free,  ///< neither down: the foot swings
+    Heel,  ///< the heel is down (the toe may be too): the ankle is the planted point
+    Toe,   ///< only the toe is down (heel off, or standing on the toes): the toe is the planted point
+};
+
+/// When a heel or toe is down (detect_contacts): close to its ground level and slow, with hysteresis - it
+/// comes down below height_on moving slower than speed_on and lifts above height_off or faster than
+/// speed_off, so a joint hovering at one threshold does not flicker. A joint's ground level is a low
+/// quantile of its height over the take (the ankle stands some 8 cm above the floor, the toe 2 to 4 cm).
+/// This is Kovar et al.'s criterion (a footplant is a foot near the ground and nearly still); the numbers
+/// are chosen on the CMU walks, where a planted heel or toe stays within 1 cm of its ground level moving at
+/// 0.02 to 0.12 m/s, and swings at more than 1 m/s: lifting at 0.2 m/s ends a contact as the heel or toe
+/// starts to leave, before the leg behind is stretched (on the 12-agent test crowd, lifting at 0.6 m/s and 5
+/// cm let the held foot be dragged 4.9 cm per frame at p99 during walk contacts, 0.2 m/s and 3 cm 0.7 cm).
+struct ContactRule {
+    double height_on = 0.02;        ///< metres above the joint's ground level to come down
+    double height_off = 0.03;       ///< metres above it to lift
+    double speed_on = 0.1;          ///< metres per second (horizontal) to come down
+    double speed_off = 0.2;         ///< metres per second to lift
+    double ground_quantile = 0.05;  ///< the joint's ground level: this quantile of its height over the take
+    double merge_gap = 0.2;         ///< seconds: a foot's contacts closer than this are one (a lock does not
+                                    ///< restart while the previous one still releases, FootLock::release)
+    double min_contact = 0.1;       ///< seconds: shorter contacts are dropped (a toe brushing the floor)
+};
+
+/// One foot over a source's samples: its plant per sample, and per sample the first sample of the run of
+/// equal plants it is in (so the start of a contact is found without walking it).
+struct FootTrack {
+    std::vector<Plant> plant;
+    std::vector<int> run_begin;
+};
+
+/// A contact as a clip has it: samples [first, last] of its source (inside the clip's [first, exit)),
+/// foot 0 left, 1 right. A contact that goes on past the clip ends at the clip's end.
+struct ContactSpan {
+    int foot = 0;
+    int first = 0, last = 0;
+};
+
+/// Contacts of one source: per foot (left, right) the track, from per sample heel (ankle) and toe positions
+/// (x, y, h: ground coordinates, h up, metres) at spacing dt seconds. Every input vector has one entry per
+/// sample.
+std::array<FootTrack, 2> detect_contacts(const std::array<std::vector<glm::dvec3>, 2>& heel,
+                                         const std::array<std::vector<glm::dvec3>, 2>& toe, double dt,
+                                         const ContactRule& rule = {});
+
+/// The contacts of graph clip `clip` (samples [first, exit) of its source), in order of first sample, left
+/// foot first where two start together.
+std::vector<ContactSpan> clip_contacts(const std::array<FootTrack, 2>& feet, const GraphClip& clip);
+
+/// Foot locking (agent_pose.h): whether it is on; how far a held leg may stretch - the hip-to-ankle distance
+/// at most `reach` of the leg's length (thigh + shin), or the free pose's own where that is more: a foot
+/// held beyond is dragged along towards the hip (the root path is never changed, so where two clips
+/// disagree on where a planted foot stands, it slides by what the leg cannot absorb); and how a lock lets
+/// go at a contact's end - the ankle's offset from where the free pose has it decays to zero over
+/// `release` seconds (smoothstep), as blending's offsets do.
+struct FootLock {
+    bool on = true;
+    double reach = 0.98;    ///< of the leg's length: a walker's knee at heel strike is nearly straight
+    double release = 0.15;  ///< seconds; Kovar et al. blend the adjustment out over a few frames
+};
+
+/// The leg after the two-joint IK: the new knee and ankle, and how far the ankle ends from the target
+/// (metres; 0 where the target is reachable).
+struct LegSolve {
+    glm::dvec3 knee{0.0}, ankle{0.0};
+    double residual = 0;
+};
+
+/// Analytic two-joint IK: the hip stays, the thigh (hip to knee) and shin (knee to ankle) keep the lengths
+/// they have in the pose, and the ankle goes to `target`. The knee bends in the plane through hip and
+/// target that holds the pose's knee (its pole: the knee's offset from the hip-ankle line); a straight leg
+/// has no pole, and bends towards `forward` (the foot's direction) instead. A target farther than the leg
+/// reaches gets the leg straight towards it (residual: the shortfall); one nearer than |thigh - shin| the
+/// leg folded towards it.
+LegSolve two_joint_ik(const glm::dvec3& hip, const glm::dvec3& knee, const glm::dvec3& ankle, const glm::dvec3& target,
+                      const glm::dvec3& forward);
+
+}  // namespace mobb::crowd

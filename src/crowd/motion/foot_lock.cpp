@@ -1,0 +1,210 @@
+// Foot locking in CrowdPoser (agent_pose.h): a planted foot held where its contact began, the leg bent to
+// reach it (two_joint_ik), the hold let go over FootLock::release after the contact.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "mobb/crowd/motion/agent_pose.h"
+
+namespace mobb::crowd {
+
+namespace {
+
+glm::dvec3 planted_point(const glm::dvec3& ankle, const glm::dvec3& toe, Plant plant) {
+    return plant == Plant::Toe ? toe : ankle;
+}
+
+// v turned by the smallest rotation that takes unit vector a to unit vector b (Rodrigues).
+glm::dvec3 turned(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& v) {
+    const glm::dvec3 axis = glm::cross(a, b);
+    const double s = glm::length(axis), c = glm::dot(a, b);
+    if (s < 1e-12) return v;
+    const glm::dvec3 k = axis / s;
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+}
+
+glm::dvec3 unit(const glm::dvec3& v) {
+    const double l = glm::length(v);
+    return l > 1e-12 ? v / l : glm::dvec3(0.0);
+}
+
+// The leg of `out` moved to the IK's knee and ankle: joints hanging from the thigh and shin turn with them,
+// those of the foot move with the ankle (the foot keeps its orientation in the pose).
+void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out) {
+    const glm::dvec3 hip = out[std::size_t(leg.hip)], knee = out[std::size_t(leg.knee)],
+                     ankle = out[std::size_t(leg.ankle)];
+    const glm::dvec3 thigh_a = unit(knee - hip), thigh_b = unit(s.knee - hip);
+    const glm::dvec3 shin_a = unit(ankle - knee), shin_b = unit(s.ankle - s.knee);
+    for (const auto& [j, segment] : leg.hanging) {
+        glm::dvec3& q = out[std::size_t(j)];
+        if (segment == 1) q = hip + turned(thigh_a, thigh_b, q - hip);
+        if (segment == 2) q = s.knee + turned(shin_a, shin_b, q - knee);
+        if (segment == 3) q += s.ankle - ankle;
+    }
+    out[std::size_t(leg.knee)] = s.knee;
+    out[std::size_t(leg.ankle)] = s.ankle;
+}
+
+}  // namespace
+
+Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
+    AgentClipAt at;
+    if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
+        at = posed_;  // in the clip of the frame being posed: no search
+        at.sample -= int(posed_frame_ - k);
+    } else if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) {
+        return Plant::Free;
+    }
+    const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
+    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+    return std::size_t(at.sample) < t.plant.size() ? t.plant[std::size_t(at.sample)] : Plant::Free;
+}
+
+bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
+    if (!free_pose(agent, k, foot_[std::size_t(foot)], d_, e_)) return false;
+    const RigLeg& leg = legs_[std::size_t(foot)];
+    out = {d_[std::size_t(leg.hip)],
+           d_[std::size_t(leg.knee)],
+           d_[std::size_t(leg.ankle)],
+           d_[std::size_t(leg.toe)],
+           d_[0],
+           envelope(agent, k)};
+    return true;
+}
+
+void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const {
+    // The first planted point stays where it came down; a next one where the hold puts it then.
+    if (first)
+        h.point = planted_point(q.ankle, q.toe, plant);
+    else if (plant != h.plant)
+        h.point += planted_point(q.ankle, q.toe, plant) - planted_point(q.ankle, q.toe, h.plant);
+    h.plant = plant;
+    h.ankle = q.ankle;
+    h.target = h.point + (q.ankle - planted_point(q.ankle, q.toe, plant));
+    // Beyond the leg's reach (or the disk) the planted point is dragged along.
+    const glm::dvec3 held = within_reach(h.target, q);
+    h.dragged = glm::length(held - h.target);
+    h.point += held - h.target;
+    h.target = held;
+}
+
+glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q) const {
+    // The leg stretched at most to lock_.reach of its length (or the free pose's own stretch), towards the
+    // hip; then on the ground inside the disk the collision answers used, towards the root.
+    const double leg = glm::length(q.knee - q.hip) + glm::length(q.ankle - q.knee);
+    const double limit = std::min(leg, std::max(glm::length(q.ankle - q.hip), lock_.reach * leg));
+    const double d = glm::length(target - q.hip);
+    glm::dvec3 out = d > limit ? q.hip + (target - q.hip) * (limit / d) : target;
+    const double dx = out.x - q.root.x, dy = out.y - q.root.y, ground = std::hypot(dx, dy);
+    if (ground > q.disk) {
+        const double f = q.disk * (1 - 1e-12) / ground;
+        out = {q.root.x + dx * f, q.root.y + dy * f, out.z};
+    }
+    return out;
+}
+
+const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, int foot, Plant plant,
+                                                   const FootFree* free) {
+    if (holds_.empty()) holds_.resize(record_.tracks.size());
+    Hold& h = holds_[std::size_t(agent)][std::size_t(foot)];
+    // Frame k - 1 was held: frame k is in the same contact, one step on (a window may have moved since).
+    if (!window_ && h.start >= 0 && h.frame == k) return &h;
+    if (!window_ && h.start >= 0 && h.frame == k - 1) {
+        FootFree q;
+        if (!free && !foot_free(agent, k, foot, q)) return nullptr;
+        hold_step(h, free ? *free : q, plant, false);
+        h.frame = k;
+        return &h;
+    }
+    // The contact's runs of equal plant, from frame k back to its start (latest first), across clips.
+    const MotionGraph& g = sources_->graph();
+    segments_.clear();
+    for (std::int64_t cur = k; cur >= 0;) {
+        AgentClipAt at;
+        if (!agent_clip_at(record_, g, agent, cur, at)) break;
+        const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
+        const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+        if (std::size_t(at.sample) >= t.plant.size()) break;
+        const Plant p = t.plant[std::size_t(at.sample)];
+        if (p == Plant::Free) break;
+        const std::int64_t begin = cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
+        if (!segments_.empty() && segments_.back().plant == p)
+            segments_.back().begin = begin;
+        else
+            segments_.push_back({begin, p});
+        cur = begin - 1;
+    }
+    if (segments_.empty()) return nullptr;
+    // Followed frame by frame from the start, or on from where this agent's hold was left.
+    const std::int64_t start = segments_.back().begin;
+    // A window of samples (use_samples) may have moved since: its disks bound the hold, so start over.
+    if (window_ || h.start != start || h.frame > k || h.frame < start) h = {start, start - 1};
+    std::size_t seg = segments_.size() - 1;
+    for (std::int64_t m = h.frame + 1; m <= k; ++m) {
+        while (seg > 0 && segments_[seg - 1].begin <= m) --seg;
+        FootFree q;
+        if (m == k && free)
+            q = *free;
+        else if (!foot_free(agent, m, foot, q))
+            return nullptr;
+        hold_step(h, q, segments_[seg].plant, m == start);
+        h.frame = m;
+    }
+    return &h;
+}
+
+bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,
+                              double& dragged) {
+    if (const Plant plant = plant_at(agent, k, foot); plant != Plant::Free) {
+        const Hold* h = contact_target(agent, k, foot, plant, &free);
+        if (!h) return false;
+        target = h->target;
+        dragged = h->dragged;
+        return true;
+    }
+    // Released: the correction at the contact's last frame, decaying (smoothstep) over the release.
+    const int release = int(std::lround(lock_.release / record_.dt));
+    for (int d = 1; d <= release; ++d) {
+        const Plant then = plant_at(agent, k - d, foot);
+        if (then == Plant::Free) continue;
+        const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
+        if (!h) return false;
+        const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
+        target = within_reach(free.ankle + w * (h->target - h->ankle), free);
+        return true;
+    }
+    return false;
+}
+
+void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet) {
+    std::array<glm::dvec3, 2> targets{};
+    std::array<bool, 2> held{};
+    std::array<double, 2> dragged{};
+    const double disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
+    for (int f = 0; f < 2; ++f) {
+        const RigLeg& leg = legs_[std::size_t(f)];
+        if (!leg.complete()) continue;
+        const FootFree free{out[std::size_t(leg.hip)],
+                            out[std::size_t(leg.knee)],
+                            out[std::size_t(leg.ankle)],
+                            out[std::size_t(leg.toe)],
+                            out[0],
+                            disk};
+        held[std::size_t(f)] = ankle_target(agent, k, f, free, targets[std::size_t(f)], dragged[std::size_t(f)]);
+        if (!held[std::size_t(f)]) continue;
+        const LegSolve s = two_joint_ik(out[std::size_t(leg.hip)], out[std::size_t(leg.knee)], free.ankle,
+                                        targets[std::size_t(f)], free.toe - free.ankle);
+        bend_leg(leg, s, out);
+    }
+    if (!held[0] && !held[1]) return;
+    hold_inside(leg_joints_, disk, out);
+    if (!feet) return;
+    for (std::size_t f = 0; f < 2; ++f) {
+        feet->held[f] = held[f];
+        feet->dragged[f] = dragged[f];
+        if (held[f]) feet->residual[f] = glm::length(out[std::size_t(legs_[f].ankle)] - targets[f]);
+    }
+}
+
+}  // namespace mobb::crowd
