@@ -84,7 +84,8 @@ void thread_table(std::ostream& out, const ScaleTable& t) {
     for (const ScaleRow& r : t.rows) {
         const std::string size = std::to_string(r.agents) + " x " + fixed(t.seconds, 0);
         thread_line(out, t, r, size + ": simulation s", [](const ThreadRuns& c) { return fixed(c.sim_seconds, 3); });
-        thread_line(out, t, r, "speed-up over " + first, [](const ThreadRuns& c) { return fixed(c.speedup, 2); });
+        thread_line(out, t, r, "speed-up over " + first,
+                    [](const ThreadRuns& c) { return c.speedup > 0 ? fixed(c.speedup, 2) : "-"; });
         thread_line(out, t, r, "frame step (CD) s", [](const ThreadRuns& c) { return fixed(c.cd_seconds, 3); });
         thread_line(out, t, r, "serial share of the frame step",
                     [](const ThreadRuns& c) { return share_cell(c.serial_share); });

@@ -145,12 +145,12 @@ std::vector<ThreadRuns> thread_columns(const Runs& runs, const std::vector<int>&
         c.wall_seconds = util::median(runs.wall[k]);
         c.peak_bytes = runs.peak[k];
         c.digest = runs.digests[k].front();
-        if (!out.empty()) {
+        if (k == 0) {
+            c.speedup = 1;
+        } else if (!runs.sim[0].empty()) {  // the first count ran (not a parallel_only_from size)
             const ThreadRuns& first = out.front();
             c.speedup = c.sim_seconds > 0 ? first.sim_seconds / c.sim_seconds : 0.0;
             c.serial_share = serial_share(first.threads, first.cd_seconds, c.threads, c.cd_seconds);
-        } else {
-            c.speedup = 1;
         }
         out.push_back(c);
     }

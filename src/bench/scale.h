@@ -42,7 +42,7 @@ struct ThreadRuns {
     double cd_seconds = 0;         ///< CrowdSummary::cd_seconds: the frame step (choice points and commits)
     double wall_seconds = 0;       ///< the whole run (placing the agents, simulating, the streamed contact check)
     std::int64_t peak_bytes = -1;  ///< peak resident memory of the runs (largest; -1: unknown, peak_memory.h)
-    double speedup = 0;            ///< the first thread count's sim_seconds / this one's
+    double speedup = 0;            ///< the first thread count's sim_seconds / this one's (0: not run)
     /// Serial share of the frame step implied by its times (Karp and Flatt's experimentally determined
     /// serial fraction, serial_share() below); none for the first count or an equal one.
     std::optional<double> serial_share;

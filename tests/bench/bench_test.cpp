@@ -264,6 +264,29 @@ TEST(Bench, ScaleQuickShape) {
     EXPECT_NE(scale_markdown(t).find("| agents |"), std::string::npos);
 }
 
+// Sizes from parallel_only_from run the last thread count only: their other columns are empty.
+TEST(Bench, ScaleLargeSizesRunTheLastCountOnly) {
+    ScaleOptions o;
+    o.graph = kGraph;
+    o.agents = {8, 16};
+    o.seconds = 2;
+    o.threads = {1, 2, 3};
+    o.repeats = 1;
+    o.parallel_only_from = 16;
+    const ScaleTable t = run_scale(o);
+    ASSERT_EQ(t.rows.size(), 2u);
+    ASSERT_EQ(t.rows[0].by_threads.size(), 3u);
+    EXPECT_EQ(t.rows[0].by_threads[2].threads, 3);
+    EXPECT_TRUE(t.rows[0].by_threads[2].serial_share.has_value() || t.rows[0].by_threads[2].cd_seconds <= 0);
+    ASSERT_EQ(t.rows[1].by_threads.size(), 1u);
+    EXPECT_EQ(t.rows[1].by_threads[0].threads, 3);
+    EXPECT_EQ(t.rows[1].by_threads[0].speedup, 0);
+    EXPECT_FALSE(t.rows[1].one_thread);
+    const std::string md = scale_markdown(t);
+    EXPECT_NE(md.find("| 16 x 2: simulation s | - | - | "), std::string::npos) << md;
+    EXPECT_NE(md.find("| speed-up over 1 thread | - | - | - |"), std::string::npos) << md;
+}
+
 // Amdahl's law run backwards: times made from a known serial share give it back, from any reference.
 TEST(Bench, SerialShareInvertsAmdahl) {
     const auto time = [](double s, int p) { return 10.0 * (s + (1 - s) / p); };
