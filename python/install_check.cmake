@@ -8,7 +8,7 @@ if(NOT rc EQUAL 0)
 endif()
 set(site ${WORK_DIR}/prefix/${SITE_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${site} ${PYTHON} -c
-                "import mobb, os, sys; sys.exit(0 if os.path.dirname(mobb.__file__) == sys.argv[1] else 1)" ${site}
+                "import mobb, mobb_dask, os, sys; sys.exit(0 if os.path.dirname(mobb.__file__) == os.path.dirname(mobb_dask.__file__) == sys.argv[1] else 1)" ${site}
                 WORKING_DIRECTORY ${WORK_DIR}  # not the build tree's python/, which holds a module too
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -11,6 +12,7 @@
 #include "mobb/core/brute.h"
 #include "mobb/core/clearance.h"
 #include "mobb/core/clip_index.h"
+#include "mobb/core/fit.h"
 #include "mobb/core/query.h"
 #include "mobb/core/sweep.h"
 #include "mobb/core/tree.h"
@@ -170,6 +172,29 @@ py::dict clearance_of(const py::handle& a, const py::handle& pa, const py::handl
     return d;
 }
 
+// A Tree or ClipIndex pickles as what builds it - its path (rows t, x, y, r), dt and, for a tree, its
+// options - and unpickles by building it again: the same path and options give the same tree, so a
+// copy answers every query as the original does. Dask ships them to its workers so (mobb_dask.py).
+const char* fit_name(AxisFit fit) { return fit == AxisFit::Pca ? "pca" : "chord"; }
+
+py::tuple tree_state(const Tree& t) {
+    return py::make_tuple(path_array(t.path()), t.path().dt, to_string(t.options().type), t.options().n_min,
+                          fit_name(t.options().fit));
+}
+
+Tree tree_of_state(const py::tuple& s) {
+    if (s.size() != 5) throw std::invalid_argument("mobb.Tree: bad pickled state");
+    return Tree::build(path_from(s[0], s[1], "path"),
+                       parse_tree_options(s[2].cast<std::string>(), s[3].cast<int>(), s[4].cast<std::string>()));
+}
+
+py::tuple index_state(const ClipIndex& c) { return py::make_tuple(path_array(c.path()), c.path().dt); }
+
+ClipIndex index_of_state(const py::tuple& s) {
+    if (s.size() != 2) throw std::invalid_argument("mobb.ClipIndex: bad pickled state");
+    return ClipIndex::build(path_from(s[0], s[1], "path"));
+}
+
 }  // namespace
 
 void add_query(py::module_& m) {
@@ -182,13 +207,15 @@ Tree(path, type="mobb", n_min=10, fit="chord", dt=None)
   type   "mobb", "umobb", "hybrid1", "hybrid2", "mobb1" or "umobb1" (the command line's --tree).
   n_min  most samples in a leaf (>= 1).
   fit    MOBB axis fit: "chord" (the paper's) or "pca".
-Raises ValueError for an empty or invalid path or a bad option.)doc")
+Raises ValueError for an empty or invalid path or a bad option. Pickles as its path and options (a copy
+is built again from them), so Dask and multiprocessing can ship it.)doc")
         .def(py::init([](const py::object& path, const std::string& type, int n_min, const std::string& fit,
                          const py::object& dt) {
                  return Tree::build(path_from(path, dt, "path"), parse_tree_options(type, n_min, fit));
              }),
              py::arg("path"), py::arg("type") = "mobb", py::arg("n_min") = 10, py::arg("fit") = "chord",
              py::arg("dt") = py::none())
+        .def(py::pickle(&tree_state, &tree_of_state))
         .def_property_readonly("type", [](const Tree& t) { return to_string(t.options().type); })
         .def_property_readonly("n_min", [](const Tree& t) { return t.options().n_min; })
         .def_property_readonly(
@@ -204,11 +231,12 @@ Raises ValueError for an empty or invalid path or a bad option.)doc")
     py::class_<ClipIndex>(m, "ClipIndex", R"doc(A clip prepared for the circle sweep, the library's fastest exact query.
 
 ClipIndex(path, dt=None): path as for mobb.Tree. Raises ValueError for an empty or invalid path, more
-than 2^21 samples or coordinates beyond 1e9 m.)doc")
+than 2^21 samples or coordinates beyond 1e9 m. Pickles as its path (built again), as a Tree does.)doc")
         .def(py::init([](const py::object& path, const py::object& dt) {
                  return ClipIndex::build(path_from(path, dt, "path"));
              }),
              py::arg("path"), py::arg("dt") = py::none())
+        .def(py::pickle(&index_state, &index_of_state))
         .def_property_readonly("levels", &ClipIndex::levels, "levels of the circle hierarchy")
         .def_property_readonly(
             "path", [](const ClipIndex& c) { return path_array(c.path()); },

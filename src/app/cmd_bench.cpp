@@ -162,7 +162,7 @@ void add_synth(CLI::App& bench, int& exit_code, int seconds, int tests) {
 
 void add_scale(CLI::App& bench, int& exit_code) {
     auto* cmd = bench.add_subcommand(
-        "scale", "The avoiding crowd at the paper's density for growing agent counts, 1 and all threads");
+        "scale", "The avoiding crowd at the paper's density for growing agent counts and thread counts");
     auto o = std::make_shared<bench::ScaleOptions>();
     auto outputs = std::make_shared<TableOutputs>();
     auto quick = std::make_shared<bool>(false);
@@ -174,7 +174,10 @@ void add_scale(CLI::App& bench, int& exit_code) {
     cmd->add_option("--area", o->area_per_agent, "Square metres per agent")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Threads of the parallel runs (0: all hardware threads)")
+    cmd->add_option("--threads", o->threads,
+                    "Thread counts of every size's runs, the first the speed-ups' reference (e.g. 1,2,4,8,16; "
+                    "0: all hardware threads; one count N other than 1 means 1,N)")
+        ->delimiter(',')
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     cmd->add_option("--repeats", o->repeats, "Runs per size and thread count (medians)")
@@ -197,6 +200,7 @@ void add_scale(CLI::App& bench, int& exit_code) {
             if (opt.graph.empty()) opt.graph = crowd::default_graph_file();
             for (int n : opt.agents)
                 if (n < 1) throw InputError("--agents: every size must be at least 1");
+            if (opt.threads.size() == 1 && opt.threads.front() != 1) opt.threads.insert(opt.threads.begin(), 1);
             if (*quick) {
                 opt.agents = {10, 40};
                 opt.seconds = std::min(opt.seconds, 5.0);

@@ -1,5 +1,7 @@
 // Text, JSON and charts of the benchmark tables (report.h).
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -55,6 +57,56 @@ std::string one_thread_cell(const ScaleRow& r, double v, int decimals) {
 }
 
 std::string megabytes(std::int64_t bytes) { return bytes < 0 ? "-" : fixed(double(bytes) / 1e6, 0); }
+
+std::string threads_label(int n) { return std::to_string(n) + (n == 1 ? " thread" : " threads"); }
+
+// One line of the thread table: a cell per thread count, "-" for those a size did not run (a size
+// from ScaleOptions::parallel_only_from runs the last count only).
+void thread_line(std::ostream& out, const ScaleTable& t, const ScaleRow& r, const std::string& label,
+                 const std::function<std::string(const ThreadRuns&)>& cell) {
+    out << "| " << label;
+    const std::size_t skip = t.threads.size() - std::min(t.threads.size(), r.by_threads.size());
+    for (std::size_t k = 0; k < t.threads.size(); ++k) out << " | " << (k < skip ? "-" : cell(r.by_threads[k - skip]));
+    out << " |\n";
+}
+
+std::string share_cell(const std::optional<double>& s) { return s ? fixed(100.0 * *s, 1) + " %" : "-"; }
+
+// Issue 46's table: a block of lines per crowd size, a column per thread count.
+void thread_table(std::ostream& out, const ScaleTable& t) {
+    if (t.rows.empty() || t.threads.empty()) return;
+    const std::string first = threads_label(t.threads.front());
+    out << "#### Thread counts\n\n| agents x simulated s";
+    for (int n : t.threads) out << " | " << threads_label(n);
+    out << " |\n|---";
+    for (std::size_t k = 0; k < t.threads.size(); ++k) out << "|---:";
+    out << "|\n";
+    for (const ScaleRow& r : t.rows) {
+        const std::string size = std::to_string(r.agents) + " x " + fixed(t.seconds, 0);
+        thread_line(out, t, r, size + ": simulation s", [](const ThreadRuns& c) { return fixed(c.sim_seconds, 3); });
+        thread_line(out, t, r, "speed-up over " + first,
+                    [](const ThreadRuns& c) { return c.speedup > 0 ? fixed(c.speedup, 2) : "-"; });
+        thread_line(out, t, r, "frame step (CD) s", [](const ThreadRuns& c) { return fixed(c.cd_seconds, 3); });
+        thread_line(out, t, r, "serial share of the frame step",
+                    [](const ThreadRuns& c) { return share_cell(c.serial_share); });
+        thread_line(out, t, r, "peak MB", [](const ThreadRuns& c) { return megabytes(c.peak_bytes); });
+    }
+    out << "\n";
+}
+
+nlohmann::ordered_json thread_runs_json(const ScaleRow& r) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const ThreadRuns& c : r.by_threads)
+        out.push_back({{"threads", c.threads},
+                       {"sim_seconds", rounded(c.sim_seconds, 6)},
+                       {"cd_seconds", rounded(c.cd_seconds, 6)},
+                       {"wall_seconds", rounded(c.wall_seconds, 3)},
+                       {"peak_bytes", c.peak_bytes},
+                       {"speedup", rounded(c.speedup, 3)},
+                       {"serial_share", c.serial_share ? nlohmann::ordered_json(rounded(*c.serial_share, 4)) : nullptr},
+                       {"digest", c.digest}});
+    return out;
+}
 
 }  // namespace
 
@@ -115,12 +167,14 @@ void write_table_png(const BenchTable& t, const std::string& file) {
 
 std::string scale_markdown(const ScaleTable& t) {
     std::ostringstream out;
-    const int threads = t.rows.empty() ? 0 : t.rows.front().threads;
+    const std::string one = threads_label(t.threads.empty() ? 1 : t.threads.front());
+    const std::string n = threads_label(t.rows.empty() ? 0 : t.rows.front().threads);
     out << "### " << t.title << "\n\n"
-        << "| agents | world (m) | choice points | queries | CD s (1 thread) | CD us / agent / sim s | x N="
-        << (t.rows.empty() ? 0 : t.rows.front().agents) << " | CD us / query | sim s (1 thread) | sim s (" << threads
-        << " threads) | speed-up | identical | fallbacks | contacts outside fallbacks | peak MB (1 thread) | peak MB ("
-        << threads << " threads) | wall s (" << threads << " threads) |\n"
+        << "| agents | world (m) | choice points | queries | CD s (" << one
+        << ") | CD us / agent / sim s | x N=" << (t.rows.empty() ? 0 : t.rows.front().agents)
+        << " | CD us / query | sim s (" << one << ") | sim s (" << n
+        << ") | speed-up | identical | fallbacks | contacts outside fallbacks | peak MB (" << one << ") | peak MB ("
+        << n << ") | wall s (" << n << ") |\n"
         << "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
     for (const ScaleRow& r : t.rows)
         out << "| " << r.agents << " | " << fixed(r.width, 1) << " x " << fixed(r.height, 1) << " | " << r.choice_points
@@ -132,6 +186,7 @@ std::string scale_markdown(const ScaleTable& t) {
             << (r.one_thread ? megabytes(r.peak_bytes_1) : "-") << " | " << megabytes(r.peak_bytes_n) << " | "
             << fixed(r.wall_seconds_n, 1) << " |\n";
     out << "\n";
+    thread_table(out, t);
     targets_markdown(out, t.targets);
     for (const auto& [k, v] : t.notes) out << "- " << k << ": " << v << "\n";
     return out.str();
@@ -143,6 +198,7 @@ std::string scale_json(const ScaleTable& t) {
     j["title"] = t.title;
     j["targets"] = targets_json(t.targets);
     j["notes"] = notes_json(t.notes);
+    j["threads"] = t.threads;
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const ScaleRow& r : t.rows)
         rows.push_back({{"method", "crowd " + std::to_string(r.agents) + " agents"},
@@ -169,7 +225,8 @@ std::string scale_json(const ScaleTable& t) {
                         {"peak_bytes_1", r.peak_bytes_1},
                         {"peak_bytes_n", r.peak_bytes_n},
                         {"wall_seconds_1", rounded(r.wall_seconds_1, 3)},
-                        {"wall_seconds_n", rounded(r.wall_seconds_n, 3)}});
+                        {"wall_seconds_n", rounded(r.wall_seconds_n, 3)},
+                        {"by_threads", thread_runs_json(r)}});
     j["rows"] = rows;
     return readable_json(j);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -89,17 +90,18 @@ CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
     return co;
 }
 
-// The runs of one size: [0] 1 thread, [1] `threads`; every run's digest and summary, in order.
+// The runs of one size, per thread count (slot): times, peak memory, digests and summaries.
 struct Runs {
-    std::vector<double> sim[2], cd[2], wall[2];
-    std::int64_t peak[2] = {-1, -1};
-    std::vector<std::string> digests;
-    std::vector<CrowdSummary> summaries;
+    explicit Runs(std::size_t counts) : sim(counts), cd(counts), wall(counts), peak(counts, -1), digests(counts) {}
+    std::vector<std::vector<double>> sim, cd, wall;
+    std::vector<std::int64_t> peak;
+    std::vector<std::vector<std::string>> digests;
+    std::vector<CrowdSummary> summaries;  // every run's, in order
 };
 
 // One streamed run (no record kept): its summary, digest, times and peak memory go into `runs`.
 void timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
-               Runs& runs, int slot, const std::function<void(double)>& progress) {
+               Runs& runs, std::size_t slot, const std::function<void(double)>& progress) {
     CrowdOptions co = crowd_options(o, agents);
     co.threads = threads;
     DigestSink digest;
@@ -111,41 +113,73 @@ void timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptio
     runs.peak[slot] = std::max(runs.peak[slot], peak_memory_bytes());
     runs.sim[slot].push_back(s.seconds);
     runs.cd[slot].push_back(s.cd_seconds);
-    runs.digests.push_back(digest.digest());
+    runs.digests[slot].push_back(digest.digest());
     runs.summaries.push_back(s);
 }
 
 // Every run made the same decisions: equal digests and counters.
 bool identical(const Runs& runs) {
     const CrowdSummary& a = runs.summaries.front();
-    for (std::size_t k = 0; k < runs.summaries.size(); ++k) {
-        const CrowdSummary& b = runs.summaries[k];
-        if (runs.digests[k] != runs.digests.front() || a.queries != b.queries || a.hits != b.hits ||
-            a.contacts != b.contacts || a.choice_points != b.choice_points || a.fallbacks != b.fallbacks)
+    std::string digest;
+    for (const std::vector<std::string>& d : runs.digests)
+        for (const std::string& x : d) {
+            if (digest.empty()) digest = x;
+            if (x != digest) return false;
+        }
+    for (const CrowdSummary& b : runs.summaries)
+        if (a.queries != b.queries || a.hits != b.hits || a.contacts != b.contacts ||
+            a.choice_points != b.choice_points || a.fallbacks != b.fallbacks)
             return false;
-    }
     return true;
 }
 
+// The columns of each thread count run, speed-ups and serial shares against the first.
+std::vector<ThreadRuns> thread_columns(const Runs& runs, const std::vector<int>& threads) {
+    std::vector<ThreadRuns> out;
+    for (std::size_t k = 0; k < threads.size(); ++k) {
+        if (runs.sim[k].empty()) continue;
+        ThreadRuns c;
+        c.threads = threads[k];
+        c.sim_seconds = util::median(runs.sim[k]);
+        c.cd_seconds = util::median(runs.cd[k]);
+        c.wall_seconds = util::median(runs.wall[k]);
+        c.peak_bytes = runs.peak[k];
+        c.digest = runs.digests[k].front();
+        if (k == 0) {
+            c.speedup = 1;
+        } else if (!runs.sim[0].empty()) {  // the first count ran (not a parallel_only_from size)
+            const ThreadRuns& first = out.front();
+            c.speedup = c.sim_seconds > 0 ? first.sim_seconds / c.sim_seconds : 0.0;
+            c.serial_share = serial_share(first.threads, first.cd_seconds, c.threads, c.cd_seconds);
+        }
+        out.push_back(c);
+    }
+    return out;
+}
+
 // The row's columns from the runs made.
-void fill_row(ScaleRow& r, const Runs& runs, const ScaleOptions& o) {
+void fill_row(ScaleRow& r, const Runs& runs, const ScaleOptions& o, const std::vector<int>& threads) {
     const CrowdSummary& s = runs.summaries.front();
+    r.by_threads = thread_columns(runs, threads);
     r.identical = identical(runs);
     r.choice_points = s.choice_points;
     r.candidates = s.candidates;
     r.queries = s.queries;
     r.fallbacks = s.fallbacks;
     r.contacts_unexcused = s.contacts_unexcused;
-    r.digest_1 = r.one_thread ? runs.digests.front() : "";
-    r.digest_n = runs.digests.back();
-    r.peak_bytes_1 = runs.peak[0];
-    r.peak_bytes_n = runs.peak[1];
-    r.sim_seconds_1 = util::median(runs.sim[0]);
-    r.sim_seconds_n = util::median(runs.sim[1]);
-    r.cd_seconds_1 = util::median(runs.cd[0]);
-    r.cd_seconds_n = util::median(runs.cd[1]);
-    r.wall_seconds_1 = util::median(runs.wall[0]);
-    r.wall_seconds_n = util::median(runs.wall[1]);
+    const ThreadRuns &first = r.by_threads.front(), &last = r.by_threads.back();
+    r.digest_1 = r.one_thread ? first.digest : "";
+    r.digest_n = last.digest;
+    if (r.one_thread) {
+        r.peak_bytes_1 = first.peak_bytes;
+        r.sim_seconds_1 = first.sim_seconds;
+        r.cd_seconds_1 = first.cd_seconds;
+        r.wall_seconds_1 = first.wall_seconds;
+    }
+    r.peak_bytes_n = last.peak_bytes;
+    r.sim_seconds_n = last.sim_seconds;
+    r.cd_seconds_n = last.cd_seconds;
+    r.wall_seconds_n = last.wall_seconds;
     const double cd = r.one_thread ? r.cd_seconds_1 : r.cd_seconds_n;
     r.cd_us_per_agent_second = cd * 1e6 / (double(r.agents) * o.seconds);
     r.cd_us_per_query = s.queries ? cd * 1e6 / double(s.queries) : 0.0;
@@ -154,28 +188,28 @@ void fill_row(ScaleRow& r, const Runs& runs, const ScaleOptions& o) {
     r.speedup = timed ? r.cd_seconds_1 / r.cd_seconds_n : r.sim_seconds_n > 0 ? r.sim_seconds_1 / r.sim_seconds_n : 0.0;
 }
 
-// One crowd size: pairs of runs (1 thread, then `threads`), interleaved - `repeats` of them below
-// once_from, one from there, only the parallel run from parallel_only_from; records compared by digest
-// and counters; times are medians.
-ScaleRow scale_row(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents, int threads,
-                   const std::function<void(double)>& progress) {
+// One crowd size: rounds of runs, one per thread count in order, interleaved - `repeats` of them below
+// once_from, one from there, only the last count's run from parallel_only_from; records compared by
+// digest and counters; times are medians.
+ScaleRow scale_row(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptions& o, int agents,
+                   const std::vector<int>& threads, const std::function<void(double)>& progress) {
     ScaleRow r;
     r.agents = agents;
-    r.threads = threads;
+    r.threads = threads.back();
     r.one_thread = agents < o.parallel_only_from;
     world_for(agents, o.area_per_agent, r.width, r.height);
-    Runs runs;
+    Runs runs(threads.size());
     const int repeats = agents >= o.once_from ? 1 : std::max(1, o.repeats);
-    for (int k = 0; k < repeats; ++k) {
-        const auto part = [&](int slot) {
-            return [&, slot](double f) {
-                if (progress) progress((2.0 * k + slot + f) / (2.0 * repeats));
-            };
-        };
-        if (r.one_thread) timed_run(g, narrow, o, agents, 1, runs, 0, part(0));
-        timed_run(g, narrow, o, agents, threads, runs, 1, part(1));
-    }
-    fill_row(r, runs, o);
+    const std::size_t from = r.one_thread ? 0 : threads.size() - 1;
+    const double parts = double(repeats) * double(threads.size() - from);
+    for (int k = 0; k < repeats; ++k)
+        for (std::size_t slot = from; slot < threads.size(); ++slot) {
+            const double done = double(k) * double(threads.size() - from) + double(slot - from);
+            timed_run(g, narrow, o, agents, threads[slot], runs, slot, [&](double f) {
+                if (progress) progress((done + f) / parts);
+            });
+        }
+    fill_row(r, runs, o, threads);
     return r;
 }
 
@@ -278,6 +312,14 @@ void save_scale_queries(const MotionGraph& g, const NarrowPhase& narrow, const S
     save_query_set(crowd_query_set(g, sample), o.save_queries + "." + std::to_string(agents));
 }
 
+// "1 and 2", "1, 2 and 4": the thread counts in words.
+std::string count_list(const std::vector<int>& counts) {
+    std::string out;
+    for (std::size_t k = 0; k < counts.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == counts.size() ? " and " : ", ") + std::to_string(counts[k]);
+    return out;
+}
+
 }  // namespace
 
 std::string record_digest(const Record& r) {
@@ -301,17 +343,28 @@ std::string DigestSink::digest() const {
     return hex(h);
 }
 
+std::optional<double> serial_share(int p0, double t0, int p, double t) {
+    if (p == p0 || p0 < 1 || p < 1 || !(t0 > 0) || !(t > 0)) return std::nullopt;
+    // t / t0 = (s + (1 - s) / p) / (s + (1 - s) / p0), solved for s.
+    const double ratio = t / t0, inv0 = 1.0 / double(p0), inv = 1.0 / double(p);
+    return (inv - ratio * inv0) / (ratio * (1.0 - inv0) - (1.0 - inv));
+}
+
 ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& progress) {
     if (o.agents.empty()) throw std::invalid_argument("scale: no crowd sizes");
+    if (o.threads.empty()) throw std::invalid_argument("scale: no thread counts");
     const MotionGraph g = load_graph(o.graph);
     const NarrowPhase narrow = NarrowPhase::sweep(g);
-    const int threads = o.threads > 0 ? o.threads : util::WorkerPool::hardware_threads();
+    std::vector<int> counts;
+    for (int n : o.threads) counts.push_back(n > 0 ? n : util::WorkerPool::hardware_threads());
+    const int threads = counts.back();
     double total = 0, done = 0;
     for (int n : o.agents) total += double(n);
     ScaleTable t;
     t.seconds = o.seconds;
+    t.threads = counts;
     for (int n : o.agents) {
-        t.rows.push_back(scale_row(g, narrow, o, n, threads, [&](double f) {
+        t.rows.push_back(scale_row(g, narrow, o, n, counts, [&](double f) {
             if (progress) progress((done + f * n) / total);
         }));
         done += double(n);
@@ -322,26 +375,32 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
                                ? r.cd_us_per_agent_second / t.rows.front().cd_us_per_agent_second
                                : 0;
     add_scale_targets(t);
+    const std::string first = std::to_string(counts.front()), list = count_list(counts);
     t.title = "Scale: avoiding crowd at the paper's density (" + util::fixed(o.area_per_agent, 0) +
-              " m^2 per agent), " + util::fixed(o.seconds, 0) + " s simulated, 1 and " + std::to_string(threads) +
-              " threads";
+              " m^2 per agent), " + util::fixed(o.seconds, 0) + " s simulated, " + list + " threads";
     t.notes["graph"] = o.graph;
     t.notes["crowd"] =
         "mobb crowd --select wander, seed " + std::to_string(o.seed) + ", world 3:4 growing with the agents";
     t.notes["CD time"] = "CrowdSummary::cd_seconds (broad + narrow phase wall time inside run_crowd)";
-    t.notes["speed-up"] = "1-thread time / " + std::to_string(threads) +
-                          "-thread time: CD seconds when measured, else simulation seconds";
+    t.notes["speed-up"] = first + "-thread time / " + std::to_string(threads) +
+                          "-thread time: CD seconds when measured, else simulation seconds; in the thread table, "
+                          "simulation seconds over the " +
+                          first + "-thread run's";
+    t.notes["serial share"] =
+        "of the frame step (CD seconds), implied by its time at each thread count against " + first +
+        " thread(s) by Amdahl's law (Karp-Flatt metric): serial code, the pool's hand-offs and waits, and other work "
+        "on a shared machine all count";
     t.notes["identical"] =
         "record digests (every choice point's candidates, queries, answers, taken clip; every committed clip) and "
         "summary counters equal";
-    t.notes["repeats"] = std::to_string(std::max(1, o.repeats)) + " pairs of runs (1 thread, then " +
-                         std::to_string(threads) + ") per size, interleaved; times are medians";
+    t.notes["repeats"] = std::to_string(std::max(1, o.repeats)) + " rounds of runs (" + list +
+                         " threads, in that order) per size, interleaved; times are medians";
     t.notes["memory"] =
         "peak resident size of the process during each size's runs (VmHWM, reset before each run); every run "
         "streams its decisions to a digest and its frames to the contact check, keeping no record";
-    t.notes["large sizes"] = "from " + std::to_string(o.once_from) + " agents one pair of runs; from " +
+    t.notes["large sizes"] = "from " + std::to_string(o.once_from) + " agents one round of runs; from " +
                              std::to_string(o.parallel_only_from) + " only the " + std::to_string(threads) +
-                             "-thread run (one-thread columns empty)";
+                             "-thread run (the other counts' columns empty)";
     t.notes["hardware threads"] = std::to_string(util::WorkerPool::hardware_threads());
     if (progress) progress(1.0);
     return t;

@@ -71,6 +71,43 @@ TEST(CrowdCli, PerformanceWorkloads) {
     std::remove(set.c_str());
 }
 
+// `bench scale --threads` takes any list of thread counts: a table column per count, every size's
+// block of lines (times, speed-up, serial share, peak memory), the same in the JSON; one count N is 1,N.
+TEST(CrowdCli, ScaleThreadCounts) {
+    const std::string json = temp_file("scale_threads.json");
+    Result r = run("bench scale --quick --quiet --threads 1,2,3 --graph " + kGraph + " --json " + json);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("| agents x simulated s | 1 thread | 2 threads | 3 threads |\n|---|---:|---:|---:|\n"),
+              std::string::npos)
+        << r.out;
+    for (const std::string size : {"10 x 5", "40 x 5"})
+        EXPECT_NE(r.out.find("| " + size + ": simulation s | "), std::string::npos) << size;
+    const std::size_t share = r.out.find("| serial share of the frame step | - | ");
+    ASSERT_NE(share, std::string::npos) << r.out;
+    const std::string line = r.out.substr(share, r.out.find('\n', share) - share);
+    EXPECT_EQ(std::count(line.begin(), line.end(), '|'), 5) << line;  // a label and three counts
+    EXPECT_NE(r.out.find("| speed-up over 1 thread | 1.00 | "), std::string::npos);
+    EXPECT_NE(r.out.find("| peak MB | "), std::string::npos);
+    const nlohmann::json j = nlohmann::json::parse(test::slurp(json));
+    EXPECT_EQ(j["threads"], nlohmann::json({1, 2, 3}));
+    ASSERT_EQ(j["rows"].size(), 2u);
+    for (const auto& row : j["rows"]) {
+        ASSERT_EQ(row["by_threads"].size(), 3u);
+        EXPECT_TRUE(row["identical"].get<bool>());
+        EXPECT_TRUE(row["by_threads"][0]["serial_share"].is_null());
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(row["by_threads"][k]["threads"], k + 1);
+            EXPECT_EQ(row["by_threads"][k]["digest"], row["digest_1"]);
+        }
+    }
+    r = run("bench scale --quick --quiet --threads 2 --graph " + kGraph + " --json " + json);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(test::slurp(json))["threads"], nlohmann::json({1, 2}));
+    EXPECT_EQ(run("bench scale --quick --threads 1,x").code, 2);
+    EXPECT_EQ(run("bench scale --quick --threads 1,-2").code, 2);
+    std::remove(json.c_str());
+}
+
 TEST(CrowdCli, CrowdPrintsSummaryAndRecord) {
     const std::string rec = temp_file("rec.json");
     const Result r = run("crowd --quiet --graph " + kGraph + " --agents 10 --seconds 5 --world 20x20 --record " + rec);

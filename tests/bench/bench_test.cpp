@@ -236,7 +236,7 @@ TEST(Bench, ScaleQuickShape) {
     o.graph = kGraph;
     o.agents = {8, 16};
     o.seconds = 4;
-    o.threads = 2;
+    o.threads = {1, 2};
     const ScaleTable t = run_scale(o);
     ASSERT_EQ(t.rows.size(), 2u);
     for (const ScaleRow& r : t.rows) {
@@ -246,7 +246,13 @@ TEST(Bench, ScaleQuickShape) {
         EXPECT_EQ(r.threads, 2);
         EXPECT_TRUE(r.one_thread);
         EXPECT_GT(r.wall_seconds_n, 0);
+        ASSERT_EQ(r.by_threads.size(), 2u);
+        EXPECT_EQ(r.by_threads[0].threads, 1);
+        EXPECT_EQ(r.by_threads[1].threads, 2);
+        EXPECT_EQ(r.by_threads[1].sim_seconds, r.sim_seconds_n);
+        EXPECT_FALSE(r.by_threads[0].serial_share.has_value());
     }
+    EXPECT_EQ(t.threads, std::vector<int>({1, 2}));
     EXPECT_NEAR(t.rows[1].width * t.rows[1].height, 16 * o.area_per_agent, 1e-9);
     EXPECT_EQ(t.targets.size(), 3u);
     const nlohmann::json j = nlohmann::json::parse(scale_json(t));
@@ -256,6 +262,42 @@ TEST(Bench, ScaleQuickShape) {
         EXPECT_TRUE(row["us_per_query"].is_number());
     }
     EXPECT_NE(scale_markdown(t).find("| agents |"), std::string::npos);
+}
+
+// Sizes from parallel_only_from run the last thread count only: their other columns are empty.
+TEST(Bench, ScaleLargeSizesRunTheLastCountOnly) {
+    ScaleOptions o;
+    o.graph = kGraph;
+    o.agents = {8, 16};
+    o.seconds = 2;
+    o.threads = {1, 2, 3};
+    o.repeats = 1;
+    o.parallel_only_from = 16;
+    const ScaleTable t = run_scale(o);
+    ASSERT_EQ(t.rows.size(), 2u);
+    ASSERT_EQ(t.rows[0].by_threads.size(), 3u);
+    EXPECT_EQ(t.rows[0].by_threads[2].threads, 3);
+    EXPECT_TRUE(t.rows[0].by_threads[2].serial_share.has_value() || t.rows[0].by_threads[2].cd_seconds <= 0);
+    ASSERT_EQ(t.rows[1].by_threads.size(), 1u);
+    EXPECT_EQ(t.rows[1].by_threads[0].threads, 3);
+    EXPECT_EQ(t.rows[1].by_threads[0].speedup, 0);
+    EXPECT_FALSE(t.rows[1].one_thread);
+    const std::string md = scale_markdown(t);
+    EXPECT_NE(md.find("| 16 x 2: simulation s | - | - | "), std::string::npos) << md;
+    EXPECT_NE(md.find("| speed-up over 1 thread | - | - | - |"), std::string::npos) << md;
+}
+
+// Amdahl's law run backwards: times made from a known serial share give it back, from any reference.
+TEST(Bench, SerialShareInvertsAmdahl) {
+    const auto time = [](double s, int p) { return 10.0 * (s + (1 - s) / p); };
+    for (double s : {0.0, 0.03, 0.25, 1.0}) {
+        EXPECT_NEAR(*serial_share(1, time(s, 1), 2, time(s, 2)), s, 1e-12) << s;
+        EXPECT_NEAR(*serial_share(1, time(s, 1), 16, time(s, 16)), s, 1e-12) << s;
+        EXPECT_NEAR(*serial_share(2, time(s, 2), 8, time(s, 8)), s, 1e-12) << s;
+    }
+    EXPECT_NEAR(*serial_share(1, 5.55, 2, 4.09), 2 * 4.09 / 5.55 - 1, 1e-12);  // Karp-Flatt at p = 2
+    EXPECT_FALSE(serial_share(2, 4.0, 2, 3.0).has_value());
+    EXPECT_FALSE(serial_share(1, 0.0, 2, 3.0).has_value());
 }
 
 // Two test cases written here in SteerSuite's schema: one agent walking 6 m to its goal (passes), and
