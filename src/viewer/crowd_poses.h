@@ -19,8 +19,11 @@ using crowd::PoseSources;
 std::vector<int> drawn_bones(const crowd::Rig& rig);
 
 /// The skeleton of every agent at time t: its blended pose at the record frame the cursor is in (the
-/// disk drawn there) with `bones` (drawn_bones, kept by the caller), coloured per agent.
+/// disk drawn there) with `bones` (drawn_bones, kept by the caller), coloured per agent. With `planted`,
+/// a mark at the cursor under each planted foot (its contact's planted point: the ankle on the heel, the
+/// toe on the toe alone; foot_contact.h) is appended to it.
 std::vector<render::PosedSkeleton> crowd_skeletons(crowd::CrowdPoser& poser, const std::vector<int>& bones, double t,
-                                                   const std::vector<glm::vec3>& agent_colors);
+                                                   const std::vector<glm::vec3>& agent_colors,
+                                                   std::vector<render::Prism>* planted = nullptr);
 
 }  // namespace mobb::viewer

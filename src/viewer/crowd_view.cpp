@@ -352,7 +352,8 @@ std::string skeleton_problem(const CrowdView& v) {
     return v.poses ? v.poses->error() : std::string();
 }
 
-std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const std::vector<glm::vec3>& colors) {
+std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const std::vector<glm::vec3>& colors,
+                                                   std::vector<render::Prism>* planted) {
     if (!v.graph || !v.poses || !same_rate(v)) return {};
     if (!v.poser && v.pose_error.empty()) {
         try {
@@ -363,7 +364,7 @@ std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& v, double t, const
             v.pose_error = e.what();
         }
     }
-    return v.poser ? crowd_skeletons(*v.poser, v.bones, t, colors) : std::vector<render::PosedSkeleton>{};
+    return v.poser ? crowd_skeletons(*v.poser, v.bones, t, colors, planted) : std::vector<render::PosedSkeleton>{};
 }
 
 void update_crowd_playback(State& s, double seconds) {

@@ -126,7 +126,9 @@ std::string skeleton_problem(const CrowdView& view);
 
 /// Every agent's skeleton at time t (loads every source of the graph on first use: the poses' joints are
 /// those all sources share), coloured like its disks.
-std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& view, double t, const std::vector<glm::vec3>& colors);
+/// With `planted`, a mark under each planted foot is appended to it (crowd_skeletons).
+std::vector<render::PosedSkeleton> agent_skeletons(CrowdView& view, double t, const std::vector<glm::vec3>& colors,
+                                                   std::vector<render::Prism>* planted = nullptr);
 
 /// What the 3D view draws besides the agents: the world's walls, the obstacles (filled), each goal as a
 /// post in its agent's colour over the whole run, and red rings around the disks in contact at time t.

@@ -190,7 +190,7 @@ int shown_step(const State& s) {
 render::Frame frame_of(const State& s) {
     render::Frame f = unposed_frame(s);
     // A crowd's agents carry no animation of their own: their poses come from the graph's sources.
-    if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors);
+    if (s.crowd && s.scene.layers.skeletons) f.posed = agent_skeletons(*s.crowd, s.scene.cursor, s.colors, &f.prisms);
     return f;
 }
 

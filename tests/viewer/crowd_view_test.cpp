@@ -102,6 +102,41 @@ TEST(CrowdTrace, BadQueryIndicesAreRefused) {
 
 /// At every frame (sampled), each agent's skeleton root lies on its recorded disk's centre: the pose
 /// went through the graph's localisation and the clip's placement like the path did.
+// Planted feet are marked (issue 47): each mark is a small square on the ground at the cursor, centred on
+// an ankle or toe of a skeleton drawn then, under that agent's disk; walking agents plant a foot most of
+// the time, so marks are many.
+TEST(CrowdSkeletons, PlantedFeetAreMarkedUnderThem) {
+    MOBB_NEEDS_MOCAP();
+    const std::string record = crowd_record();
+    ASSERT_FALSE(record.empty());
+    State s = viewer::load_crowd_state(record, 1.5f);
+    const crowd::Record r = crowd::load_record(record);
+    std::size_t marks = 0, feet = 0;
+    for (std::int64_t k = 0; k < r.frames; k += 7) {
+        const double t = (double(k) + 0.5) * r.dt;
+        std::vector<render::Prism> planted;
+        const auto skeletons = viewer::agent_skeletons(*s.crowd, t, s.colors, &planted);
+        ASSERT_EQ(skeletons.size(), r.tracks.size()) << viewer::skeleton_problem(*s.crowd);
+        feet += 2 * skeletons.size();
+        marks += planted.size();
+        for (const render::Prism& m : planted) {
+            ASSERT_EQ(m.ground.size(), 4u);
+            EXPECT_TRUE(m.on_top && m.t0 == t && m.t1 == t);
+            const double x = 0.5 * (m.ground[0][0] + m.ground[2][0]), y = 0.5 * (m.ground[0][1] + m.ground[2][1]);
+            bool on_a_foot = false;
+            for (std::size_t a = 0; a < skeletons.size() && !on_a_foot; ++a) {
+                const auto& disk = r.tracks[a].samples[std::size_t(k)];
+                if (std::hypot(x - disk[1], y - disk[2]) > disk[3] + 1e-6) continue;
+                for (const glm::dvec3& j : skeletons[a].joints)
+                    on_a_foot = on_a_foot || (std::abs(j.x - x) < 1e-9 && std::abs(j.y - y) < 1e-9 && j.z < 0.2);
+            }
+            EXPECT_TRUE(on_a_foot) << "a mark at (" << x << ", " << y << ") at frame " << k;
+        }
+    }
+    EXPECT_GT(marks, feet / 4) << "planted feet marked";
+    EXPECT_LT(marks, feet);
+}
+
 TEST(CrowdSkeletons, RootsStandOnTheirDisks) {
     MOBB_NEEDS_MOCAP();
     const std::string record = crowd_record();
