@@ -18,8 +18,6 @@ namespace mobb::crowd {
 
 namespace {
 
-double wrap_angle(double a) { return std::remainder(a, 2.0 * kPi); }
-
 // Loads at the graph's rate, dropping a stray first frame far from the rest (CMU 007_03..007_12).
 // "FILE:A:B": frames [A, B) of FILE; anything else: the whole file.
 void parse_input(const std::string& input, GraphSource& src, std::string& file) {

@@ -13,8 +13,7 @@ namespace mobb::crowd {
 inline bool follows(double way, const std::array<double, 2>& from, const std::array<double, 2>& at, double facing,
                     double cone) {
     const double bearing = std::atan2(at[1] - from[1], at[0] - from[0]);
-    return std::abs(std::remainder(facing - way, 2 * kPi)) <= cone &&
-           std::abs(std::remainder(bearing - way, 2 * kPi)) <= cone;
+    return std::abs(wrap_angle(facing - way)) <= cone && std::abs(wrap_angle(bearing - way)) <= cone;
 }
 
 }  // namespace mobb::crowd

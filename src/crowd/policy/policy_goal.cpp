@@ -93,7 +93,7 @@ private:
         const double distance = field.distance(end.x, end.y);
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
-        const double turn = std::abs(std::remainder(field.downhill(end.x, end.y) - end.theta, 2 * kPi));
+        const double turn = std::abs(wrap_angle(field.downhill(end.x, end.y) - end.theta));
         double t = distance / k.walking + turn / k.turning;
         for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
             const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
