@@ -172,6 +172,7 @@ void frame_region(State& s, double x0, double y0, double x1, double y1, float as
         t0 = b.empty ? 0 : b.lo.z, t1 = b.empty ? 1 : b.hi.z;
     }
     std::vector<glm::vec3> points;
+    points.reserve(8);
     for (int k = 0; k < 8; ++k)
         points.push_back(render::to_gl((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? t1 : t0, s.scene.time_scale));
     s.camera.frame(points, aspect);
