@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "mobb/core/angle.h"
+
 namespace mobb::viewer {
 
 namespace {
@@ -32,7 +34,7 @@ Path random_walk(const RandomWalk& walk) {
         turn = 0.98 * turn + 0.02 * (rng.uniform() - 0.5) * 4.0;
         // Steer back toward the origin when far away, so crowds stay on their own plot.
         const double home = std::atan2(-y, -x), dist = std::hypot(x, y);
-        double err = std::remainder(home - heading, 6.283185307179586);
+        const double err = wrap_angle(home - heading);
         heading += (turn + (dist > 4.0 ? 0.8 * err : 0.0)) * path.dt;
         x += 1.3 * std::cos(heading) * path.dt;
         y += 1.3 * std::sin(heading) * path.dt;

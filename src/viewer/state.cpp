@@ -143,18 +143,27 @@ render::Frame unposed_frame(const State& s) {
 
 }  // namespace
 
+namespace {
+
+/// The eight corners of a space-time box in the GL world.
+std::vector<glm::vec3> gl_corners(const render::Bounds& b, double time_scale) {
+    glm::vec3 lo, hi;
+    render::gl_bounds(b, time_scale, lo, hi);
+    std::vector<glm::vec3> out;
+    out.reserve(10);  // frame_all adds two more
+    for (int k = 0; k < 8; ++k) out.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    return out;
+}
+
+}  // namespace
+
 void frame_all(State& s, float aspect) {
     const render::Frame f = unposed_frame(s);  // the bounds hold no skeleton: a crowd's need not be posed
     const render::Bounds b = render::scene_bounds(f);
     if (b.empty) return;
     // The scene's space-time box and the time axis, which stands at the grid's corner (grid_bounds, up to
     // a metre past the scene), rather than the whole grid.
-    glm::vec3 lo, hi;
-    render::gl_bounds(b, s.scene.time_scale, lo, hi);
-    std::vector<glm::vec3> points;
-    points.reserve(10);
-    for (int k = 0; k < 8; ++k)
-        points.emplace_back((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    std::vector<glm::vec3> points = gl_corners(b, s.scene.time_scale);
     const render::Bounds grid = render::grid_bounds(b);
     for (const double t : {grid.lo.z, grid.hi.z})
         points.push_back(render::to_gl(grid.lo.x, grid.lo.y, t, s.scene.time_scale));
@@ -171,11 +180,10 @@ void frame_region(State& s, double x0, double y0, double x1, double y1, float as
         const render::Bounds b = render::scene_bounds(unposed_frame(s));
         t0 = b.empty ? 0 : b.lo.z, t1 = b.empty ? 1 : b.hi.z;
     }
-    std::vector<glm::vec3> points;
-    points.reserve(8);
-    for (int k = 0; k < 8; ++k)
-        points.push_back(render::to_gl((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? t1 : t0, s.scene.time_scale));
-    s.camera.frame(points, aspect);
+    render::Bounds b;
+    b.add({x0, y0, t0});
+    b.add({x1, y1, t1});
+    s.camera.frame(gl_corners(b, s.scene.time_scale), aspect);
 }
 
 void sync_scene(State& s) {

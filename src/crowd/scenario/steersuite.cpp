@@ -270,8 +270,8 @@ double Importer::along_nearest_solid(double x, double y, double heading) const {
         if (const double g = gap(p, x, y); g < d) d = g, nearest = &p;
     if (!nearest) return heading;
     const double along = nearest_edge_angle(*nearest, x, y);
-    const double turn = std::remainder(along - heading, 2 * kPi);
-    return std::remainder(std::abs(turn) <= kPi / 2 ? along : along + kPi, 2 * kPi);
+    const double turn = wrap_angle(along - heading);
+    return wrap_angle(std::abs(turn) <= kPi / 2 ? along : along + kPi);
 }
 
 bool Importer::clear_of_solids(double x, double y, double clearance) const {

@@ -114,8 +114,7 @@ double Importer::face_along(const Group& g, const std::array<double, 2>& start, 
     const double along = util::rounded(along_nearest_solid(start[0], start[1], heading), 9);
     note(*g.element, "starts " + num(solid_distance(start[0], start[1])) + " m from a wall or an obstacle: room to " +
                          "stand, not to turn round (" + num(room_.wall_clearance) + " m); faces along it, heading " +
-                         num(degrees(along)) + " degrees (turned " +
-                         num(degrees(std::remainder(along - heading, 2 * kPi))) + ")");
+                         num(degrees(along)) + " degrees (turned " + num(degrees(wrap_angle(along - heading))) + ")");
     return along;
 }
 
