@@ -102,6 +102,7 @@ std::string record_digest(const crowd::Record& r);
 /// record_digest of the run's whole record.
 class DigestSink : public crowd::RecordSink {
 public:
+    bool keeps_commits() const override { return true; }
     void begin(const crowd::Record& header) override;
     void choice(std::size_t index, const crowd::ChoicePoint& choice) override;
     void clip(int agent, const crowd::PlacedClip& clip) override;

@@ -67,6 +67,7 @@ public:
     /// The record's choice point; `pruned` is left to the commit (it depends on the live count).
     ChoicePoint& point() { return queries_.point(); }
     int queried() const { return queries_.queried(); }
+    std::optional<SpaceTimeBox> queried_bounds() const { return queries_.queried_bounds(); }
     std::uint64_t near_total() const { return queries_.near_total(); }
     std::uint64_t root_rejected() const { return queries_.root_rejected(); }
     /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).

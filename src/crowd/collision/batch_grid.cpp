@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "mobb/core/assert.h"
+#include "mobb/util/worker_pool.h"
+
 namespace mobb::crowd {
 
 // Any cell size finds every overlap; a huge world only gets coarser cells.
@@ -31,6 +34,51 @@ void BatchGrid::add(int index, const SpaceTimeBox* first, const SpaceTimeBox* la
             if (cells_[c].empty()) used_.push_back(c);
             cells_[c].push_back(e);
         }
+}
+
+// Three steps: the groups laid out in index order (one thread: a prefix sum), their boxes and unions (by
+// group), and the cells (by bands of columns: each band visits every group, in order, so a cell's list is
+// in index order as add() leaves it).
+void BatchGrid::fill(std::size_t n, const std::function<Span(std::size_t)>& boxes, util::WorkerPool& pool) {
+    MOBB_ASSERT(groups_.empty() && used_.empty());
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto [first, last] = boxes(i);
+        if (first == last) continue;
+        groups_.push_back({int(i), *first, total, total + std::size_t(last - first)});
+        total += std::size_t(last - first);
+    }
+    boxes_.resize(total);
+    pool.for_each(
+        groups_.size(),
+        [&](std::size_t e, int) {
+            Group& g = groups_[e];
+            const auto [first, last] = boxes(std::size_t(g.index));
+            std::copy(first, last, boxes_.begin() + std::ptrdiff_t(g.begin));
+            for (const SpaceTimeBox* b = first; b != last; ++b) g.all.enclose(*b);
+        },
+        64);
+    const int bands = pool.size() > 1 ? std::min(nx_, 4 * pool.size()) : 1;
+    band_used_.resize(std::size_t(bands));
+    pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
+        const int lo = int(std::int64_t(nx_) * std::int64_t(band) / bands);
+        const int hi = int(std::int64_t(nx_) * std::int64_t(band + 1) / bands);
+        std::vector<std::size_t>& used = band_used_[band];
+        used.clear();
+        for (std::size_t e = 0; e < groups_.size(); ++e) {
+            const SpaceTimeBox& box = groups_[e].all;
+            const int ix0 = std::max(lo, column(box.x0, x0_, nx_)), ix1 = std::min(hi - 1, column(box.x1, x0_, nx_));
+            if (ix0 > ix1) continue;
+            const int iy0 = column(box.y0, y0_, ny_), iy1 = column(box.y1, y0_, ny_);
+            for (int ix = ix0; ix <= ix1; ++ix)
+                for (int iy = iy0; iy <= iy1; ++iy) {
+                    const std::size_t c = std::size_t(ix) * std::size_t(ny_) + std::size_t(iy);
+                    if (cells_[c].empty()) used.push_back(c);
+                    cells_[c].push_back(int(e));
+                }
+        }
+    });
+    for (const std::vector<std::size_t>& used : band_used_) used_.insert(used_.end(), used.begin(), used.end());
 }
 
 bool BatchGrid::any_between(const SpaceTimeBox& box, int from, int below) const {
@@ -79,6 +127,7 @@ void BatchGrid::release() {
     used_ = {};
     groups_ = {};
     boxes_ = {};
+    band_used_ = {};
 }
 
 void BatchGrid::clear() {

@@ -4,9 +4,15 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include "mobb/crowd/collision/broad_phase.h"
+
+namespace mobb::util {
+class WorkerPool;
+}
 
 namespace mobb::crowd {
 
@@ -23,10 +29,16 @@ public:
     void add(int index, const std::vector<SpaceTimeBox>& boxes) {
         add(index, boxes.data(), boxes.data() + boxes.size());
     }
+    /// The boxes of indices 0 .. n - 1 into an empty grid at once, by `pool`'s workers: the same as add()
+    /// of each in turn. boxes(i) gives index i's [first, last).
+    using Span = std::pair<const SpaceTimeBox*, const SpaceTimeBox*>;
+    void fill(std::size_t n, const std::function<Span(std::size_t)>& boxes, util::WorkerPool& pool);
     /// Whether a box added with an index in [from, below) overlaps `box`.
     bool any_between(const SpaceTimeBox& box, int from, int below) const;
     /// The largest index in [from, below) whose boxes overlap `box`; -1 when none does.
     int last_between(const SpaceTimeBox& box, int from, int below) const;
+    /// The largest index added; -1 when empty.
+    int last_index() const { return groups_.empty() ? -1 : groups_.back().index; }
     /// Empties the grid (only the cells used are visited).
     void clear();
     /// Empties the grid and gives back the memory its cells and lists grew to.
@@ -53,6 +65,7 @@ private:
     std::vector<std::size_t> used_;        // cells holding something
     std::vector<Group> groups_;
     std::vector<SpaceTimeBox> boxes_;
+    std::vector<std::vector<std::size_t>> band_used_;  // scratch of fill(): per band, the cells it began
 };
 
 }  // namespace mobb::crowd

@@ -92,35 +92,54 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), e); });
 }
 
+// Item `id` out of the table, if held: the cells it leaves (none when it was not held).
+BroadPhase::Placing BroadPhase::unplace(int id) {
+    if (!holds(id)) return {};
+    Item& item = items_[std::size_t(id)];
+    item.live = false;
+    return placing(entry(item.box, id, item.owner));
+}
+
+// An insertion into the table (whatever held its id out first: unplace()): the cells it enters (none
+// when it ended already).
+BroadPhase::Placing BroadPhase::place(const Insertion& in) {
+    if (in.box.f1 <= expired_) return {};
+    items_[std::size_t(in.id)] = {in.box, in.owner, true};
+    return placing(entry(in.box, in.id, in.owner));
+}
+
 void BroadPhase::update(const std::vector<int>& removed, const std::vector<Insertion>& inserted,
                         util::WorkerPool& pool) {
-    // The item table and the hashed cells here (hashing is not thread-safe); the flat cells below.
-    unplacing_.clear();
-    for (int id : removed) {
-        if (!holds(id)) continue;
-        Item& item = items_[std::size_t(id)];
-        const Placing p = placing(entry(item.box, id, item.owner));
-        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)
-            for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
-                if (!flat(ix, iy)) erase(hashed_[key(ix, iy)], id);
-        unplacing_.push_back(p);
-        item.live = false;
-        --live_;
-        count_end(item.box.f1, -1);
+    if (removed.empty() && inserted.empty()) return;  // no need to wake the pool
+    std::size_t top = 0;
+    for (const Insertion& in : inserted) {
+        if (in.id < 0) throw std::invalid_argument("broad phase: negative id");
+        top = std::max(top, std::size_t(in.id) + 1);
     }
-    placing_.clear();
-    for (const Insertion& it : inserted) {
-        if (!enroll(it.id, it.owner, it.box)) continue;
-        const Placing p = placing(entry(it.box, it.id, it.owner));
-        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)
-            for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
-                if (!flat(ix, iy)) put(hashed_[key(ix, iy)], p.e);
-        placing_.push_back(p);
-    }
-    if (unplacing_.empty() && placing_.empty()) return;  // no need to wake the pool
-    // Bands of columns: a cell belongs to one band, so each cell still loses and receives its entries in
-    // order (one band for one thread: each band visits every item).
-    const std::int64_t bands = pool.size() > 1 ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
+    // Doubling: ids come a few more at a time, and resize() to each would take its slow path each time.
+    if (top > items_.size()) items_.resize(std::max(top, 2 * items_.size()));
+    // The item table in parallel, items apart (ids are distinct within each list): the removed first, as an
+    // id may be removed and inserted again in one update; an inserted id still held leaves first too.
+    constexpr std::size_t kGrain = 64;
+    const std::size_t nr = removed.size();
+    unplacing_.resize(nr + inserted.size());
+    placing_.resize(inserted.size());
+    pool.for_each(nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); }, kGrain);
+    pool.for_each(
+        inserted.size(),
+        [&](std::size_t k, int) {
+            unplacing_[nr + k] = unplace(inserted[k].id);
+            placing_[k] = place(inserted[k]);
+        },
+        kGrain);
+    count(unplacing_, -1);
+    count(placing_, +1);
+    update_hashed();
+    // Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item;
+    // a few items not worth waking the pool). A cell's order does not matter (queries sort or order their
+    // answers).
+    const bool few = unplacing_.size() + placing_.size() < kGrain;
+    const std::int64_t bands = pool.size() > 1 && !few ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
         const auto each_cell = [&](const Placing& p, auto&& f) {
@@ -132,6 +151,27 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
         for (const Placing& p : unplacing_) each_cell(p, [&](Cell& c) { erase(c, p.e.id); });
         for (const Placing& p : placing_) each_cell(p, [&](Cell& c) { put(c, p.e); });
     });
+}
+
+// The held count and the counts by end frame, for items that left (-1) or entered (+1) the table.
+void BroadPhase::count(const std::vector<Placing>& items, int delta) {
+    for (const Placing& p : items) {
+        if (p.ix0 > p.ix1) continue;  // none
+        live_ += std::size_t(delta);
+        count_end(p.e.box.f1, delta);
+    }
+}
+
+// The cells of update() beyond the flat ones, on one thread (hashing is not thread-safe).
+void BroadPhase::update_hashed() {
+    const auto beyond = [&](const Placing& p, auto&& f) {
+        if (p.ix0 > p.ix1 || (p.ix0 >= 0 && p.iy0 >= 0 && p.ix1 < nx_ && p.iy1 < ny_)) return;  // none, or flat
+        for (std::int64_t ix = p.ix0; ix <= p.ix1; ++ix)
+            for (std::int64_t iy = p.iy0; iy <= p.iy1; ++iy)
+                if (!flat(ix, iy)) f(hashed_[key(ix, iy)]);
+    };
+    for (const Placing& p : unplacing_) beyond(p, [&](Cell& c) { erase(c, p.e.id); });
+    for (const Placing& p : placing_) beyond(p, [&](Cell& c) { put(c, p.e); });
 }
 
 // Counts only: an expired item's own flag stays set (held() reads the frame too), so expiry touches no

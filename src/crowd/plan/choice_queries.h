@@ -5,6 +5,7 @@
 // src/crowd.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "collision/batch_grid.h"
@@ -65,6 +66,11 @@ public:
     ChoicePoint& point() { return point_; }
     const ChoicePoint& point() const { return point_; }
     int queried() const { return int(queried_boxes_.size()); }
+    /// The union of the boxes asked about (what affected_by() tests first); nothing when none was.
+    std::optional<SpaceTimeBox> queried_bounds() const {
+        if (queried_boxes_.empty()) return std::nullopt;
+        return queried_all_;
+    }
     std::uint64_t near_total() const { return near_total_; }
     std::uint64_t root_rejected() const { return root_rejected_; }
     /// The clip-against-clip queries in the order run, their choice left 0 (kept if log_queries).

@@ -76,7 +76,7 @@ void Simulation::evaluate(std::size_t i, const CrowdState& s) {
 }
 
 // The boxes the frame's plans put in place and the ones they release, by position in the batch: found in
-// parallel (each worker appends to a list of its own), then entered in position order.
+// parallel (each worker appends to a list of its own), then entered in parallel (BatchGrid::fill).
 void Simulation::gather(std::size_t n) {
     found_.resize(std::size_t(pool_.size()));
     for (std::vector<SpaceTimeBox>& f : found_) f.clear();
@@ -93,11 +93,21 @@ void Simulation::gather(std::size_t n) {
         },
         8);
     chosen_.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-        const BoxSpan& b = spans_[i];
-        const SpaceTimeBox* boxes = found_[std::size_t(b.worker)].data();
-        chosen_.add(int(i), boxes + b.begin, boxes + b.end);
-    }
+    chosen_.fill(
+        n,
+        [&](std::size_t i) {
+            const BoxSpan& b = spans_[i];
+            const SpaceTimeBox* boxes = found_[std::size_t(b.worker)].data();
+            return BatchGrid::Span{boxes + b.begin, boxes + b.end};
+        },
+        pool_);
+}
+
+// What the commit loop reads of position i's evaluation, by position (the slots lie apart): whether it
+// reroutes others, and the bounds of what it queried.
+void Simulation::outline(std::size_t i) {
+    reroutes_[i] = !slots_[i].reroutes().empty();
+    bounds_[i] = slots_[i].queried_bounds();
 }
 
 // Whether the evaluation at position i is still the one the state now gives: no plan committed since
@@ -107,7 +117,11 @@ bool Simulation::current(std::size_t i) const {
     const Choice& c = slots_[i];
     const int from = seen_[i], below = int(i);
     const bool first_changed = from == 0 ? touched_[i] >= 0 : c.affected_by(chosen_, from, below);
-    return !first_changed && !c.affected_by(moved_, from, below);
+    if (first_changed) return false;
+    // Most positions meet no plan chosen again: told from the lists by position, without reading the slot.
+    if (moved_.last_index() < from) return true;
+    const std::optional<SpaceTimeBox>& bounds = bounds_[i];
+    return !bounds || !moved_.any_between(*bounds, from, below) || !c.affected_by(moved_, from, below);
 }
 
 // The evaluation at position p is out of date: p is evaluated again against the state after the commits
@@ -121,44 +135,20 @@ void Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState&
     round_.assign(1, p);
     for (std::size_t k = p + 1; k < n && round_.size() < kRound; ++k)
         if (seen_[k] == 0 && touched_[k] >= 0 && touched_[k] < int(p)) round_.push_back(k);
-    pool_.for_each(round_.size(), [&](std::size_t r, int) { evaluate(round_[r], s); });
+    pool_.for_each(round_.size(), [&](std::size_t r, int) {
+        evaluate(round_[r], s);
+        outline(round_[r]);
+    });
     for (std::size_t k : round_) seen_[k] = int(p);
-}
-
-// The commit loop is serial and waits on memory (agents, pieces, the broad phase's items, each at a
-// random place, and the evaluations in the other workers' caches): what the commits a few positions on
-// will touch is fetched ahead, in three steps since each step's addresses are read from the one before.
-void Simulation::prefetch_commit(std::size_t i, std::size_t n) {
-    constexpr std::size_t kAhead = 4;  // positions between the steps
-    if (i + 3 * kAhead < n) {
-        const char* a = reinterpret_cast<const char*>(&agents_[std::size_t(slots_[i + 3 * kAhead].agent())]);
-        for (std::size_t b = 0; b < sizeof(Agent); b += 64) __builtin_prefetch(a + b);
-    }
-    if (i + 2 * kAhead < n) {
-        const Agent& a = agents_[std::size_t(slots_[i + 2 * kAhead].agent())];
-        __builtin_prefetch(a.reserved.data());
-        __builtin_prefetch(a.clips.data());
-    }
-    if (i + kAhead < n) {
-        Choice& c = slots_[i + kAhead];  // written by whichever worker evaluated it
-        __builtin_prefetch(&c.taken());
-        __builtin_prefetch(&c.plan());
-        __builtin_prefetch(&c.point());
-        __builtin_prefetch(c.point().candidates.data());
-        for (int id : agents_[std::size_t(c.agent())].reserved) {
-            __builtin_prefetch(&pieces_[std::size_t(id)]);
-            broad_.prefetch(id);
-        }
-        if (stream_) stream_->prefetch(c.agent());
-    }
 }
 
 // Four steps, the same for any number of threads: (1) every choice point of the frame is evaluated
 // against the state before the frame (in parallel); (2) the boxes their plans take and release are
 // gathered; (3) each choice point checks whether a plan chosen before it in the frame could change its
 // evaluation (in parallel); (4) in agent order, each commits once its evaluation is current, which a
-// stale one becomes by evaluating it again against the commits before it (in parallel rounds). The
-// outcome is that of evaluating the choice points one by one in agent order.
+// stale one becomes by evaluating it again against the commits before it (in parallel rounds); the
+// current ones between two stale ones commit as one run (in parallel, commit.cpp). The outcome is that
+// of evaluating the choice points one by one in agent order.
 void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     const std::size_t n = batch.size();
     if (slots_.size() < n) slots_.resize(n);
@@ -169,25 +159,37 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     });
     gather(n);
     touched_.resize(n);
+    reroutes_.resize(n);
+    bounds_.resize(n);
     pool_.for_each(
-        n, [&](std::size_t i, int) { touched_[i] = slots_[i].last_change(chosen_, int(i)); }, 8);
+        n,
+        [&](std::size_t i, int) {
+            touched_[i] = slots_[i].last_change(chosen_, int(i));
+            outline(i);
+        },
+        8);
     seen_.assign(n, 0);
     moved_.clear();
+    std::size_t from = 0;  // the first position not committed yet
     for (std::size_t i = 0; i < n; ++i) {
-        prefetch_commit(i, n);
-        if (!current(i)) reevaluate_from(i, n, s);
-        Choice& c = slots_[i];
-        // Position 0 is always current: seen_ > 0 marks a re-evaluation, before which the record's live
-        // count leaves out the pieces released so far (see commit()).
-        const bool again = seen_[i] > 0;
-        if (again) flushed_held_ = released_held_;
-        commit(c);
-        if (!again) continue;
-        ++out_.summary.reevaluated;
-        boxes_.clear();
-        c.boxes(boxes_);
-        moved_.add(int(i), boxes_);
+        if (!current(i)) {
+            commit_run(from, i);
+            from = i;
+            reevaluate_from(i, n, s);
+        }
+        if (seen_[i] > 0) {  // evaluated again
+            ++out_.summary.reevaluated;
+            boxes_.clear();
+            slots_[i].boxes(boxes_);
+            moved_.add(int(i), boxes_);
+        }
+        if (!reroutes_[i]) continue;
+        // It changes other agents' plans, which positions on either side may own: it commits alone.
+        commit_run(from, i);
+        commit_run(i, i + 1);
+        from = i + 1;
     }
+    commit_run(from, n);
     flush();
     apply_waiting();
     unused_.insert(unused_.end(), left_.begin(), left_.end());
@@ -203,9 +205,13 @@ void Simulation::release_batch() {
     found_ = {};
     spans_ = {};
     touched_ = {};
+    reroutes_ = {};
+    bounds_ = {};
     seen_ = {};
     chosen_.release();
     moved_.release();
+    commits_ = {};
+    run_ids_ = {};
 }
 
 void Simulation::release(int id) {
@@ -220,14 +226,6 @@ void Simulation::flush() {
     left_.insert(left_.end(), released_.begin(), released_.end());
     released_.clear();
     pending_.clear();
-}
-
-void Simulation::log_queries(const Choice& c) {
-    const int choice = int(out_.summary.choice_points);
-    for (LoggedQuery q : c.log()) {
-        q.choice = choice;
-        out_.queries.push_back(q);
-    }
 }
 
 void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
@@ -254,62 +252,6 @@ void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
     }
 }
 
-void Simulation::count(const Choice& c, const ChoicePoint& cp) {
-    CrowdSummary& s = out_.summary;
-    ++s.choice_points;
-    s.candidates += cp.candidates.size();
-    s.queries += cp.queries;
-    s.tests2d += cp.tests2d;
-    s.tests3d += cp.tests3d;
-    s.samples += cp.samples;
-    s.pruned += cp.pruned;
-    s.root_rejected += c.root_rejected();
-    for (const Candidate& k : cp.candidates) s.hits += std::uint64_t(k.hits);
-    if (c.outcome() == Outcome::Escape) ++s.escapes;
-    if (c.outcome() == Outcome::RightOfWay) ++s.right_of_way, s.reroutes += c.reroutes().size();
-    if (cp.fallback) {
-        ++s.fallbacks;
-        for (const Candidate& k : cp.candidates)
-            if (k.clip == cp.taken && k.meets_solid) {
-                ++s.fallbacks_meeting_solids;
-                break;
-            }
-    }
-}
-
-// Agent `agent`'s plan from now on, by choice point `choice`: what it reserved before is released.
-void Simulation::reserve(int agent, int choice, const Plan& plan) {
-    MOBB_ASSERT(agent >= 0 && std::size_t(agent) < agents_.size());
-    MOBB_ASSERT(plan.escape.empty() || plan.hold);  // an escape ends on held ground
-    Agent& a = agents_[std::size_t(agent)];
-    for (int id : a.reserved) release(id);
-    a.reserved.clear();
-    Piece p;
-    p.agent = agent;
-    p.choice = choice;
-    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
-        p.index = int(i) + 1;
-        p.clip = plan.escape[i];
-        a.reserved.push_back(add_piece(p, true));
-    }
-    if (plan.hold) {
-        p.kind = Piece::Held;
-        p.index = -1;
-        p.hold = *plan.hold;
-        a.reserved.push_back(add_piece(p, true));
-    }
-    a.plan = plan;
-}
-
-// Giving way (rules/give_way.h): whether the agent waits from the end of the clip it took (`end`) on:
-// others' walks keep clear of it from the next frame on, until it moves.
-void Simulation::note_waiting(int agent, std::int64_t end) {
-    const Agent& a = agents_[std::size_t(agent)];
-    const bool waiting = waits(o_.tuning.give_way, a, end, g_.dt(), policy_->avoids());
-    if (!waiting && !in_waiting_[std::size_t(agent)]) return;
-    wait_changes_.push_back({agent, waiting});
-}
-
 void Simulation::apply_waiting() {
     for (const auto& [agent, waiting] : wait_changes_) {
         in_waiting_[std::size_t(agent)] = waiting;
@@ -322,54 +264,6 @@ void Simulation::apply_waiting() {
         waiting_.insert(agent, agent, waiting_ground(o_.tuning.give_way, h));
     }
     wait_changes_.clear();
-}
-
-void Simulation::commit(Choice& c) {
-    ChoicePoint& cp = c.point();
-    // Every piece live now overlaps the candidates in time (it started before and ends after). Live as the
-    // record has always counted them: the released pieces out once a stale choice point before in the
-    // frame was evaluated again, as when each was evaluated again alone, after a flush.
-    const std::size_t live = broad_.size() + pending_.size() - flushed_held_;
-    const std::uint64_t pairs = live * std::uint64_t(c.queried());
-    cp.pruned = pairs > c.near_total() ? pairs - c.near_total() : 0;
-    out_.summary.time_pairs += pairs;
-    if (o_.log_queries) log_queries(c);
-    const int choice = int(out_.summary.choice_points);  // its index: the choice points committed so far
-    Agent& a = agents_[std::size_t(c.agent())];
-    const BoxedClip& t = c.taken();
-    a.clips.push_back({t.clip, t.frame, t.place, cp.fallback, choice});
-    if (stream_) stream_->clip(c.agent(), a.clips.back()), a.clips.erase(a.clips.begin(), a.clips.end() - 1);
-    Piece clip;
-    clip.agent = c.agent();
-    clip.choice = choice;
-    clip.clip = t;
-    add_piece(clip, true);
-    reserve(c.agent(), choice, c.plan());
-    for (const auto& [x, y, seconds] : c.learned()) a.learned.raise(x, y, seconds);
-    for (const Reroute& r : c.reroutes()) reserve(r.agent, choice, r.plan);
-    if (c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold) {
-        a.arrived = true;
-        policy_->settled(a.plan.hold->x, a.plan.hold->y, a.plan.hold->r);
-    }
-    // Waiting: taking its escape, or choosing to stay in place (the random mode has no escapes).
-    const bool avoids = policy_->avoids();
-    const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
-    a.choices_waited = c.outcome() == Outcome::Escape || stays ? a.choices_waited + 1 : 0;
-    const std::int64_t end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
-    if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.waiting_since = end;
-    note_waiting(c.agent(), end);
-    if (end < std::int64_t(due_.size())) due_[std::size_t(end)].push_back(c.agent());
-    count(c, cp);
-    if (o_.sink && o_.record_queries) return o_.sink->choice(std::size_t(choice), cp);  // the record keeps none
-    if (o_.record_queries) return out_.record.choices.push_back(std::move(cp));
-    // Counted, and not recorded: the slot keeps the candidates' memory for its next choice point.
-    std::vector<Candidate> candidates = std::move(cp.candidates);  // leaves cp.candidates empty
-    if (o_.sink)
-        o_.sink->choice(std::size_t(choice), cp);
-    else
-        out_.record.choices.push_back(std::move(cp));
-    // Assigning a member of the moved-from slot is defined; Choice::prepare resets the rest.
-    cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }
 
 // Where the agent's disk is at the frame before its choice point: the last sample of its last clip (as

@@ -38,7 +38,6 @@ void FrameStream::clip(int agent, const PlacedClip& clip) {
     Track& t = tracks_[std::size_t(agent)];
     if (t.clips.empty()) t.m = Rigid2::of(clip.place);
     t.clips.push_back(clip);
-    sink_.clip(agent, clip);
 }
 
 void FrameStream::left(int agent, std::int64_t frame) { tracks_[std::size_t(agent)].left = frame; }

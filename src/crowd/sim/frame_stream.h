@@ -32,14 +32,9 @@ public:
 
     /// The agents' disks and metrics of each block are then found by `pool`'s workers (one thread without).
     void share(util::WorkerPool& pool) { pool_ = &pool; }
-    /// A clip agent `agent` committed: to the sink, and kept until its frames are out.
+    /// A clip agent `agent` committed, kept until its frames are out (the sink gets it from the
+    /// simulation, in commit order). Agents apart, from any thread.
     void clip(int agent, const PlacedClip& clip);
-    /// Fetches agent `agent`'s track into the cache ahead of clip().
-    void prefetch(int agent) const {
-        const Track& t = tracks_[std::size_t(agent)];
-        __builtin_prefetch(&t);
-        __builtin_prefetch(t.clips.data() + t.clips.size());
-    }
     /// The agent left the run at `frame`: its disks are NaN from then on.
     void left(int agent, std::int64_t frame);
     /// Frames before `frame` are final: whole groups of them go out (group_frames), block by block.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "mobb/core/angle.h"
+#include "mobb/core/assert.h"
 #include "mobb/util/random.h"
 #include "sim/simulation.h"
 
@@ -80,25 +81,13 @@ void Simulation::place_agents() {
     }
 }
 
-// A piece under an unused id: one that left the broad phase before this frame, else a new one.
-int Simulation::add_piece(const Piece& piece, bool pending) {
-    int id = int(pieces_.size());
-    if (unused_.empty()) {
-        pieces_.push_back(piece);
-    } else {
-        id = unused_.back();
-        unused_.pop_back();
-        pieces_[std::size_t(id)] = piece;
-    }
-    pieces_[std::size_t(id)].seq = placed_++;
-    const BroadPhase::Insertion item{id, piece.agent, box_of(piece)};
-    // A committed clip leaves by expiring (BroadPhase::expire); the plans' pieces are released.
-    if (piece.kind == Piece::Clip && piece.index == 0 && item.box.f1 < std::int64_t(ending_.size()))
-        ending_[std::size_t(item.box.f1)].push_back(id);
-    if (pending)
-        pending_.push_back(item);
-    else
-        broad_.insert(item.id, item.owner, item.box);
+// A piece in the broad phase at once, under a new id (before the first frame, no id is unused).
+int Simulation::add_piece(const Piece& piece) {
+    MOBB_ASSERT(unused_.empty());
+    const int id = int(pieces_.size());
+    pieces_.push_back(piece);
+    pieces_.back().seq = placed_++;
+    broad_.insert(id, piece.agent, box_of(piece));
     return id;
 }
 
@@ -126,7 +115,7 @@ void Simulation::reserve_starts() {
         p.index = -1;
         p.hold = h;
         agent.plan.hold = h;
-        agent.reserved.push_back(add_piece(p, false));
+        agent.reserved.push_back(add_piece(p));
     }
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "collision/batch_grid.h"
+#include "mobb/util/worker_pool.h"
 
 namespace mobb::crowd {
 namespace {
@@ -43,6 +44,43 @@ TEST(BatchGrid, AnswersAsAScanOfItsBoxes) {
         EXPECT_EQ(wrong, 0);
         EXPECT_GT(hits, 30);  // the test meets overlaps, not only misses
         EXPECT_LT(hits, 270);
+    }
+}
+
+// fill() by three workers answers as add() of each in turn: the same groups, every cell's in index order
+// (last_between reads them backwards), over enough groups that the workers share them.
+TEST(BatchGrid, FillAnswersAsAddingInTurn) {
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> pos(-10, 160), size(0, 9);
+    const auto random_box = [&] {
+        const double x = pos(rng), y = pos(rng);
+        const auto f0 = std::int64_t(rng() % 30);
+        return SpaceTimeBox{x, y, x + size(rng), y + size(rng), f0, f0 + 1 + std::int64_t(rng() % 30)};
+    };
+    std::vector<std::vector<SpaceTimeBox>> groups(600);
+    for (std::vector<SpaceTimeBox>& g : groups)
+        for (int k = int(rng() % 4); k > 0; --k) g.push_back(random_box());
+    BatchGrid added(4.0, 0, 0, 150, 150), filled(4.0, 0, 0, 150, 150);
+    for (std::size_t i = 0; i < groups.size(); ++i) added.add(int(i), groups[i]);
+    util::WorkerPool pool(3);
+    const auto span = [&](std::size_t i) {
+        return BatchGrid::Span{groups[i].data(), groups[i].data() + groups[i].size()};
+    };
+    for (int round = 0; round < 2; ++round) {  // the second after clear()
+        filled.clear();
+        filled.fill(groups.size(), span, pool);
+        EXPECT_EQ(filled.last_index(), added.last_index());
+        int wrong = 0, hits = 0;
+        for (int q = 0; q < 2000; ++q) {
+            const SpaceTimeBox box = random_box();
+            const int from = int(rng() % 600), below = from + int(rng() % std::uint64_t(601 - from));
+            const int last = added.last_between(box, from, below);
+            hits += last >= 0;
+            wrong += filled.last_between(box, from, below) != last;
+            wrong += filled.any_between(box, from, below) != added.any_between(box, from, below);
+        }
+        EXPECT_EQ(wrong, 0);
+        EXPECT_GT(hits, 200);  // overlaps met, not only misses
     }
 }
 

@@ -130,7 +130,7 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> pos(-6, 30), size(0, 7);
     BroadPhase bp(2.0, 24, 24);
-    util::WorkerPool pool(2);
+    util::WorkerPool pool(3);
     std::vector<SpaceTimeBox> boxes;
     std::vector<int> owners;
     std::vector<char> held;
@@ -145,10 +145,13 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
     for (std::int64_t frame = 0; frame < 120; ++frame) {
         bp.expire(frame);
         for (std::size_t i = 0; i < held.size(); ++i) held[i] = held[i] && boxes[i].f1 > frame;
-        // Removals one by one, or with the batch's insertions (some ids twice, or not held).
+        // Removals one by one, or with the batch's insertions (distinct ids, some not held). Every tenth
+        // frame a large batch, which the pool's workers share.
+        const bool large = frame % 10 == 0;
         std::vector<int> gone;
-        for (int k = int(rng() % 6); k > 0 && !boxes.empty(); --k) {
+        for (int k = int(rng() % (large ? 90 : 6)); k > 0 && !boxes.empty(); --k) {
             const int id = int(rng() % boxes.size());
+            if (std::find(gone.begin(), gone.end(), id) != gone.end()) continue;
             if (rng() % 2)
                 bp.remove(id);
             else
@@ -156,7 +159,7 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             held[std::size_t(id)] = 0;
         }
         std::vector<BroadPhase::Insertion> batch;
-        for (int k = int(rng() % 12); k > 0; --k) {
+        for (int k = int(rng() % (large ? 200 : 12)); k > 0; --k) {
             const int id = int(boxes.size());
             boxes.push_back(random_box(frame));
             owners.push_back(int(rng() % 6));
@@ -166,10 +169,21 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             else
                 batch.push_back({id, owners.back(), boxes.back()});
         }
-        if (rng() % 2)
+        if (rng() % 2) {
+            // Ids inserted again in the same update, held or just removed: each replaces its item.
+            const std::size_t fresh = batch.size();
+            for (int k = int(rng() % (large ? 40 : 3)); k > 0 && boxes.size() > fresh; --k) {
+                const int id = int(rng() % (boxes.size() - fresh));
+                const auto same = [id](const BroadPhase::Insertion& in) { return in.id == id; };
+                if (std::any_of(batch.begin(), batch.end(), same)) continue;
+                boxes[std::size_t(id)] = random_box(frame);
+                held[std::size_t(id)] = 1;
+                batch.push_back({id, owners[std::size_t(id)], boxes[std::size_t(id)]});
+            }
             bp.update(gone, batch, pool);
-        else
+        } else {
             bp.insert_all(batch, pool), bp.update(gone, {}, pool);
+        }
         if (rng() % 3 == 0 && !boxes.empty()) {  // an id inserted again replaces its item
             const int id = int(rng() % boxes.size());
             boxes[std::size_t(id)] = random_box(frame);

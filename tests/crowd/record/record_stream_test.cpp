@@ -51,6 +51,7 @@ TEST(RecordStream, MetricsOnTheStreamEqualTheWholeRecords) {
 class Stopping : public RecordSink {
 public:
     Stopping(H5RecordWriter& out, std::int64_t stop) : out_(out), stop_(stop) {}
+    bool keeps_commits() const override { return true; }
     void begin(const Record& header) override { out_.begin(header); }
     void choice(std::size_t index, const ChoicePoint& choice) override { out_.choice(index, choice); }
     void clip(int agent, const PlacedClip& clip) override { out_.clip(agent, clip); }

@@ -64,8 +64,9 @@ public:
     /// by `pool`'s workers, each owning a band of grid columns (the crowd commits a frame's clips at
     /// once). Throws std::invalid_argument for a negative id.
     void insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) { update({}, items, pool); }
-    /// The same as remove() of each of `removed`, then insert_all(`inserted`): the flat cells lose and
-    /// gain their entries by bands of columns, in parallel (the crowd's released pieces and its commits).
+    /// The same as remove() of each of `removed`, then insert() of each of `inserted` (an id held is
+    /// replaced), for ids distinct within each list: the item table by items, and the flat cells by bands
+    /// of columns, in parallel (the crowd's released pieces and its commits).
     void update(const std::vector<int>& removed, const std::vector<Insertion>& inserted, util::WorkerPool& pool);
     /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
@@ -79,10 +80,6 @@ public:
     void query(const SpaceTimeBox& box, int owner, std::vector<int>& out, bool ascending = true) const;
     /// Items held.
     std::size_t size() const { return live_; }
-    /// Fetches item `id`'s entry into the cache ahead of holds() or remove() (no effect on the grid).
-    void prefetch(int id) const {
-        if (id >= 0 && std::size_t(id) < items_.size()) __builtin_prefetch(&items_[std::size_t(id)]);
-    }
     /// Whether item `id` is held: inserted, and neither removed nor expired since.
     bool holds(int id) const { return id >= 0 && std::size_t(id) < items_.size() && held(items_[std::size_t(id)]); }
 
@@ -104,9 +101,9 @@ private:
         std::vector<Entry> entries;
         std::int64_t ends = std::numeric_limits<std::int64_t>::max();  // no entry ends before (a lower bound)
     };
-    struct Placing {  // an item of update(): its entry and the cells it covers
+    struct Placing {  // an item of update(): its entry and the cells it covers (none: ix0 > ix1)
         Entry e;
-        std::int64_t ix0 = 0, iy0 = 0, ix1 = 0, iy1 = 0;
+        std::int64_t ix0 = 0, iy0 = 0, ix1 = -1, iy1 = -1;
     };
     Entry entry(const SpaceTimeBox& box, int id, int owner) const {
         return {box, id, owner, std::int32_t(index_x(box.x0)), std::int32_t(index_y(box.y0))};
@@ -124,6 +121,10 @@ private:
     Cell& cell(std::int64_t ix, std::int64_t iy);
     bool flat(std::int64_t ix, std::int64_t iy) const { return 0 <= ix && ix < nx_ && 0 <= iy && iy < ny_; }
     bool enroll(int id, int owner, const SpaceTimeBox& box);
+    Placing unplace(int id);
+    Placing place(const Insertion& in);
+    void count(const std::vector<Placing>& items, int delta);
+    void update_hashed();
     Placing placing(const Entry& e) const {
         return {e, index_x(e.box.x0), index_y(e.box.y0), index_x(e.box.x1), index_y(e.box.y1)};
     }

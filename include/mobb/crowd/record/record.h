@@ -174,6 +174,9 @@ struct FrameBlock {
 class RecordSink {
 public:
     virtual ~RecordSink() = default;
+    /// Whether choice() and clip() keep what they get: a run skips those calls to a sink that does not
+    /// (the base), as they are made in commit order, on one thread.
+    virtual bool keeps_commits() const { return false; }
     /// The run's header (dt, frames, world, seed, ...) and its tracks' goals and at_goal, before frame 0.
     virtual void begin(const Record& /*header*/) {}
     virtual void choice(std::size_t /*index*/, const ChoicePoint& /*choice*/) {}

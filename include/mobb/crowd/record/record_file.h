@@ -106,6 +106,7 @@ public:
     /// given to begin() or finish() names its own.
     explicit H5RecordWriter(const std::string& file, const std::string& graph = "", const std::string& scenario = "");
     ~H5RecordWriter() override;
+    bool keeps_commits() const override { return true; }
     void begin(const Record& header) override;
     void choice(std::size_t index, const ChoicePoint& choice) override;
     void clip(int agent, const PlacedClip& clip) override;
