@@ -359,6 +359,24 @@ TEST(Crowd, ThreadCountDoesNotChangeTheRun) {
     }
 }
 
+// Frames of 20 to 30 choice points: the current ones between two stale ones commit as runs on every
+// thread (commit.cpp), and frames re-evaluate and reroute (the right of way) in a denser crowd. Records
+// as on one thread.
+TEST(Crowd, RunsCommittedInParallelKeepTheRecord) {
+    CrowdOptions o = wander(900, 8, 4);
+    o.world.x1 *= 0.6, o.world.y1 *= 0.6;  // 4.3 m^2 per agent: crowded
+    const CrowdRun ref = run(o);
+    const std::string text = record_to_text(ref.record, summary_json(ref.summary));
+    EXPECT_GT(ref.summary.reevaluated, 100u);
+    EXPECT_GT(ref.summary.right_of_way, 0u);
+    for (int threads : {2, 3}) {
+        o.threads = threads;
+        const CrowdRun r = run(o);
+        EXPECT_TRUE(record_to_text(r.record, summary_json(r.summary)) == text) << threads << " threads";
+        EXPECT_EQ(counters(r.summary), counters(ref.summary)) << threads << " threads";
+    }
+}
+
 // Obstacles hold as the walls do: no sample disk of any agent overlaps one, checked here against the
 // polygon's dense sampling (its interior on a fine grid and its edges).
 TEST(Crowd, AgentsKeepClearOfObstacles) {
