@@ -17,6 +17,7 @@ BatchGrid::BatchGrid(double cell, double x0, double y0, double x1, double y1) : 
     nx_ = int(width / cell_) + 1;
     ny_ = int(height / cell_) + 1;
     cells_.resize(std::size_t(nx_) * std::size_t(ny_));
+    occupied_.resize((cells_.size() + 63) / 64);
 }
 
 void BatchGrid::add(int index, const SpaceTimeBox* first, const SpaceTimeBox* last) {
@@ -31,7 +32,7 @@ void BatchGrid::add(int index, const SpaceTimeBox* first, const SpaceTimeBox* la
     for (int ix = ix0; ix <= ix1; ++ix)
         for (int iy = iy0; iy <= iy1; ++iy) {
             const std::size_t c = std::size_t(ix) * std::size_t(ny_) + std::size_t(iy);
-            if (cells_[c].empty()) used_.push_back(c);
+            if (cells_[c].empty()) used_.push_back(c), occupied_[c >> 6] |= std::uint64_t(1) << (c & 63);
             cells_[c].push_back(e);
         }
 }
@@ -79,18 +80,22 @@ void BatchGrid::fill(std::size_t n, const std::function<Span(std::size_t)>& boxe
         }
     });
     for (const std::vector<std::size_t>& used : band_used_) used_.insert(used_.end(), used.begin(), used.end());
+    for (std::size_t c : used_) occupied_[c >> 6] |= std::uint64_t(1) << (c & 63);  // a word spans bands
 }
 
 bool BatchGrid::any_between(const SpaceTimeBox& box, int from, int below) const {
     const int ix0 = column(box.x0, x0_, nx_), ix1 = column(box.x1, x0_, nx_);
     const int iy0 = column(box.y0, y0_, ny_), iy1 = column(box.y1, y0_, ny_);
     for (int ix = ix0; ix <= ix1; ++ix)
-        for (int iy = iy0; iy <= iy1; ++iy)
-            for (int e : cells_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)]) {
+        for (int iy = iy0; iy <= iy1; ++iy) {
+            const std::size_t c = std::size_t(ix) * std::size_t(ny_) + std::size_t(iy);
+            if (!occupied(c)) continue;
+            for (int e : cells_[c]) {
                 const Group& g = groups_[std::size_t(e)];
                 if (g.index >= below) break;  // indices were added in increasing order
                 if (g.index >= from && overlaps(g, box)) return true;
             }
+        }
     return false;
 }
 
@@ -107,7 +112,9 @@ int BatchGrid::last_between(const SpaceTimeBox& box, int from, int below) const 
     int last = -1;
     for (int ix = ix0; ix <= ix1; ++ix)
         for (int iy = iy0; iy <= iy1; ++iy) {
-            const std::vector<int>& cell = cells_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)];
+            const std::size_t c = std::size_t(ix) * std::size_t(ny_) + std::size_t(iy);
+            if (!occupied(c)) continue;
+            const std::vector<int>& cell = cells_[c];
             // Backwards: indices were added in increasing order, so the first overlap met is the cell's last.
             for (auto e = cell.rbegin(); e != cell.rend(); ++e) {
                 const Group& g = groups_[std::size_t(*e)];
@@ -123,7 +130,7 @@ int BatchGrid::last_between(const SpaceTimeBox& box, int from, int below) const 
 }
 
 void BatchGrid::release() {
-    for (std::size_t c : used_) std::vector<int>().swap(cells_[c]);
+    for (std::size_t c : used_) std::vector<int>().swap(cells_[c]), occupied_[c >> 6] = 0;
     used_ = {};
     groups_ = {};
     boxes_ = {};
@@ -131,7 +138,7 @@ void BatchGrid::release() {
 }
 
 void BatchGrid::clear() {
-    for (std::size_t c : used_) cells_[c].clear();
+    for (std::size_t c : used_) cells_[c].clear(), occupied_[c >> 6] = 0;
     used_.clear();
     groups_.clear();
     boxes_.clear();

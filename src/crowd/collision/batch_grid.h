@@ -62,6 +62,10 @@ private:
     double cell_ = 1, inv_cell_ = 1, x0_ = 0, y0_ = 0;
     int nx_ = 1, ny_ = 1;
     std::vector<std::vector<int>> cells_;  // groups, in order of addition
+    // One bit per cell, set when it holds a group: most cells are empty, and the bits stay in the cache
+    // where the cells' arrays do not.
+    std::vector<std::uint64_t> occupied_;
+    bool occupied(std::size_t c) const { return (occupied_[c >> 6] >> (c & 63)) & 1; }
     std::vector<std::size_t> used_;        // cells holding something
     std::vector<Group> groups_;
     std::vector<SpaceTimeBox> boxes_;

@@ -199,8 +199,10 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
 
 // The first frame holds every agent's first choice point; a later one holds the agents whose clips end
 // there, a few percent of them. What the first grew (the slots and their lists, the batch's boxes) is
-// given back after it rather than held for the whole run: at a million agents, gigabytes.
+// given back after it rather than held for the whole run: at a million agents, gigabytes. The slots' lists
+// are freed by every thread.
 void Simulation::release_batch() {
+    pool_.for_each(slots_.size(), [&](std::size_t i, int) { slots_[i] = Choice(); }, 256);
     slots_ = {};
     found_ = {};
     spans_ = {};
