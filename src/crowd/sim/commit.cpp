@@ -80,12 +80,13 @@ void Simulation::commit_run(std::size_t from, std::size_t to) {
     };
     each(m, kRunGrain, [&](std::size_t k, int) { count_commit(from + k, commits_[k]); });
     lay_out(from, to);
-    each(m, kRunGrain, [&](std::size_t k, int worker) {
-        apply_commit(from + k, commits_[k], tallies_[std::size_t(worker)]);
-    });
-    // The lists by frame, shared out by frame (each list filled in position order by one worker).
+    // The commits, and beside them the lists by frame, shared out by frame (each list filled in position
+    // order by one worker; from what count_commit and lay_out found, which apply_commit leaves alone).
     const std::size_t parts = parallel ? std::size_t(pool_.size()) : 1;
-    each(parts, 1, [&](std::size_t part, int) { list_commits(part, parts); });
+    each(m + parts, kRunGrain, [&](std::size_t k, int worker) {
+        if (k < m) return apply_commit(from + k, commits_[k], tallies_[std::size_t(worker)]);
+        list_commits(k - m, parts);
+    });
     for (std::size_t k = 0; k < m; ++k) finish_commit(from + k, commits_[k]);
     for (const CrowdSummary& t : tallies_) add_counts(out_.summary, t);
 }
@@ -113,6 +114,9 @@ void Simulation::count_commit(std::size_t i, Commit& out) const {
         }
     };
     out = {};
+    out.agent = c.agent();
+    out.clip_f1 = c.taken().box.f1;
+    out.end = c.taken().frame + std::int64_t(g_.clips[std::size_t(c.taken().clip)].path.size());
     out.pieces = 1;  // the clip taken
     count(c.agent(), c.plan());
     for (const Reroute& r : c.reroutes()) {
@@ -144,6 +148,7 @@ void Simulation::lay_out(std::size_t from, std::size_t to) {
     run_ids_.resize(pieces);
     for (std::size_t j = 0; j < pieces; ++j)
         run_ids_[j] = j < reused ? unused_[unused_.size() - 1 - j] : int(pieces_.size() + (j - reused));
+    for (Commit& c : commits_) c.clip_id = run_ids_[c.first_piece];  // its first piece: the clip taken
     unused_.resize(unused_.size() - reused);
     pieces_.resize(pieces_.size() + (pieces - reused));
     run_pending_ = pending_.size();
@@ -208,9 +213,7 @@ void Simulation::apply_commit(std::size_t i, Commit& at, CrowdSummary& tally) {
     clip.agent = c.agent();
     clip.choice = at.choice;
     clip.clip = t;
-    at.agent = c.agent();
-    at.clip_id = place_piece(clip, at.first_piece++);
-    at.clip_f1 = t.box.f1;
+    place_piece(clip, at.first_piece++);
     reserve(c.agent(), at.choice, c.plan(), at);
     for (const auto& [x, y, seconds] : c.learned()) a.learned.raise(x, y, seconds);
     for (const Reroute& r : c.reroutes()) reserve(r.agent, at.choice, r.plan, at);
@@ -220,7 +223,6 @@ void Simulation::apply_commit(std::size_t i, Commit& at, CrowdSummary& tally) {
     const bool avoids = policy_->avoids();
     const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
     a.choices_waited = c.outcome() == Outcome::Escape || stays ? a.choices_waited + 1 : 0;
-    at.end = t.frame + std::int64_t(g_.clips[std::size_t(t.clip)].path.size());
     if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.waiting_since = at.end;
     // Giving way (rules/give_way.h): whether the agent waits from the end of its clip on.
     const bool waiting = waits(o_.tuning.give_way, a, at.end, g_.dt(), avoids);
