@@ -66,7 +66,7 @@ private:
     // where the cells' arrays do not.
     std::vector<std::uint64_t> occupied_;
     bool occupied(std::size_t c) const { return (occupied_[c >> 6] >> (c & 63)) & 1; }
-    std::vector<std::size_t> used_;        // cells holding something
+    std::vector<std::size_t> used_;  // cells holding something
     std::vector<Group> groups_;
     std::vector<SpaceTimeBox> boxes_;
     std::vector<std::vector<std::size_t>> band_used_;  // scratch of fill(): per band, the cells it began

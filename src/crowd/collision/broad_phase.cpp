@@ -124,7 +124,8 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
     const std::size_t nr = removed.size();
     unplacing_.resize(nr + inserted.size());
     placing_.resize(inserted.size());
-    pool.for_each(nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); }, kGrain);
+    pool.for_each(
+        nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); }, kGrain);
     pool.for_each(
         inserted.size(),
         [&](std::size_t k, int) {

@@ -15,7 +15,7 @@ namespace {
 constexpr std::size_t kParallelRun = 16;
 constexpr std::size_t kRunGrain = 8;  // positions a worker takes at a time
 
-// The counts a commit adds to the summary (count, below), from a worker's tally.
+// The counts a commit adds to the summary (count_choice, below), from a worker's tally.
 void add_counts(CrowdSummary& to, const CrowdSummary& from) {
     to.choice_points += from.choice_points;
     to.candidates += from.candidates;
@@ -35,7 +35,7 @@ void add_counts(CrowdSummary& to, const CrowdSummary& from) {
 }
 
 // A committed choice point's counts, added to `s`.
-void count(const Choice& c, const ChoicePoint& cp, CrowdSummary& s) {
+void count_choice(const Choice& c, const ChoicePoint& cp, CrowdSummary& s) {
     ++s.choice_points;
     s.candidates += cp.candidates.size();
     s.queries += cp.queries;
@@ -227,7 +227,7 @@ void Simulation::apply_commit(std::size_t i, Commit& at, CrowdSummary& tally) {
     // Giving way (rules/give_way.h): whether the agent waits from the end of its clip on.
     const bool waiting = waits(o_.tuning.give_way, a, at.end, g_.dt(), avoids);
     at.wait = waiting ? 1 : in_waiting_[std::size_t(c.agent())] ? 0 : -1;
-    count(c, cp, tally);
+    count_choice(c, cp, tally);
     if (!o_.sink) record(cp, out_.record.choices[std::size_t(at.choice)]);
 }
 
@@ -257,7 +257,7 @@ void Simulation::finish_commit(std::size_t i, const Commit& at) {
     o_.sink->clip(at.agent, agents_[std::size_t(at.agent)].clips.back());
     ChoicePoint& cp = slots_[i].point();
     if (o_.record_queries) return o_.sink->choice(std::size_t(at.choice), cp);  // the record keeps none
-    std::vector<Candidate> candidates = std::move(cp.candidates);  // leaves cp.candidates empty
+    std::vector<Candidate> candidates = std::move(cp.candidates);               // leaves cp.candidates empty
     o_.sink->choice(std::size_t(at.choice), cp);
     cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }

@@ -202,7 +202,8 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
 // given back after it rather than held for the whole run: at a million agents, gigabytes. The slots' lists
 // are freed by every thread.
 void Simulation::release_batch() {
-    pool_.for_each(slots_.size(), [&](std::size_t i, int) { slots_[i] = Choice(); }, 256);
+    pool_.for_each(
+        slots_.size(), [&](std::size_t i, int) { slots_[i] = Choice(); }, 256);
     slots_ = {};
     found_ = {};
     spans_ = {};

@@ -51,19 +51,19 @@ private:
     int add_piece(const Piece& piece);
     // A commit's share of a run (commit.cpp): its counts, then its places in the run's shared lists.
     struct Commit {
-        std::uint32_t pieces = 0;          // pieces it adds: the clip taken, its plan's and its reroutes'
-        std::uint32_t released = 0;        // pieces it releases: its agent's and the rerouted agents' plans
-        std::uint32_t released_held = 0;   // how many of those the broad phase holds
-        std::size_t first_piece = 0;       // its next piece: the run's j-th (run_ids_)
-        std::size_t first_release = 0;     // its next place in released_
-        int choice = 0;                    // its index in the record
-        std::uint64_t live = 0;            // pieces live as the record counts them when it commits
-        int agent = -1;                    // whose
-        int clip_id = -1;                  // the clip taken's piece
-        std::int64_t clip_f1 = 0;          // the end of its box
-        std::int64_t end = 0;              // the frame the clip taken ends
-        bool settles = false;              // arrives for good (Policy::settled)
-        std::int8_t wait = -1;             // waits from `end` on (1), no longer (0), unchanged (-1)
+        std::uint32_t pieces = 0;         // pieces it adds: the clip taken, its plan's and its reroutes'
+        std::uint32_t released = 0;       // pieces it releases: its agent's and the rerouted agents' plans
+        std::uint32_t released_held = 0;  // how many of those the broad phase holds
+        std::size_t first_piece = 0;      // its next piece: the run's j-th (run_ids_)
+        std::size_t first_release = 0;    // its next place in released_
+        int choice = 0;                   // its index in the record
+        std::uint64_t live = 0;           // pieces live as the record counts them when it commits
+        int agent = -1;                   // whose
+        int clip_id = -1;                 // the clip taken's piece
+        std::int64_t clip_f1 = 0;         // the end of its box
+        std::int64_t end = 0;             // the frame the clip taken ends
+        bool settles = false;             // arrives for good (Policy::settled)
+        std::int8_t wait = -1;            // waits from `end` on (1), no longer (0), unchanged (-1)
     };
     void commit_run(std::size_t from, std::size_t to);
     void count_commit(std::size_t i, Commit& out) const;
@@ -105,17 +105,17 @@ private:
     std::vector<std::vector<SpaceTimeBox>> found_;  // per worker: the boxes it found
     std::vector<BoxSpan> spans_;                    // per position: its boxes in found_
     BatchGrid chosen_;                              // the same, by position
-    std::vector<int> touched_;        // per position: the last one before whose first plan may change it, or -1
-    std::vector<int> seen_;           // per position: the positions committed when last evaluated
-    std::vector<char> reroutes_;      // per position: its plan reroutes other agents (commits alone)
+    std::vector<int> touched_;    // per position: the last one before whose first plan may change it, or -1
+    std::vector<int> seen_;       // per position: the positions committed when last evaluated
+    std::vector<char> reroutes_;  // per position: its plan reroutes other agents (commits alone)
     std::vector<std::optional<SpaceTimeBox>> bounds_;  // per position: the union of what it queried
-    std::vector<std::size_t> round_;  // scratch: the positions evaluated again together
+    std::vector<std::size_t> round_;                   // scratch: the positions evaluated again together
     BatchGrid moved_;  // boxes of the current batch's plans chosen again on re-evaluation, once committed
-    std::vector<SpaceTimeBox> boxes_;  // scratch: one choice point's boxes
-    std::vector<Commit> commits_;      // the run being committed, by position from its first
-    std::vector<int> run_ids_;         // the ids its pieces take, in commit order
-    std::size_t run_pending_ = 0;      // where its pieces start in pending_
-    std::int64_t run_seq_ = 0;         // the Piece::seq of its first piece
+    std::vector<SpaceTimeBox> boxes_;    // scratch: one choice point's boxes
+    std::vector<Commit> commits_;        // the run being committed, by position from its first
+    std::vector<int> run_ids_;           // the ids its pieces take, in commit order
+    std::size_t run_pending_ = 0;        // where its pieces start in pending_
+    std::int64_t run_seq_ = 0;           // the Piece::seq of its first piece
     std::vector<CrowdSummary> tallies_;  // per worker: the counts of the commits it applied
     std::vector<Agent> agents_;
     std::vector<Piece> pieces_;                       // by broad-phase id
