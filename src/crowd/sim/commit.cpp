@@ -63,8 +63,8 @@ void count_choice(const Choice& c, const ChoicePoint& cp, CrowdSummary& s) {
 // batch, and a position that reroutes other agents commits alone (Simulation::run_batch), so the
 // positions of a run write to agents of their own. What they share - piece ids, the pending and released
 // lists, the live count - is laid out beforehand from each position's counts (prefix sums); what must go
-// in position order (the lists by frame, the policy, a streamed record) follows in position order. The
-// counts are summed per worker, then added: sums of integers, the same in any order.
+// in position order (the policy, the waiting agents, a sink that keeps the record) follows on one thread.
+// The counts are summed per worker, then added: sums of integers, the same in any order.
 void Simulation::commit_run(std::size_t from, std::size_t to) {
     if (from == to) return;
     const std::size_t m = to - from;
@@ -219,27 +219,30 @@ void Simulation::apply_commit(std::size_t i, Commit& at, CrowdSummary& tally) {
     for (const Reroute& r : c.reroutes()) reserve(r.agent, at.choice, r.plan, at);
     at.settles = c.outcome() == Outcome::Arrived && !a.arrived && a.plan.hold;
     if (at.settles) a.arrived = true;
-    // Waiting: taking its escape, or choosing to stay in place (the random mode has no escapes).
-    const bool avoids = policy_->avoids();
-    const bool stays = avoids && escapes_.in_place[std::size_t(t.clip)];
-    a.choices_waited = c.outcome() == Outcome::Escape || stays ? a.choices_waited + 1 : 0;
-    if (!avoids || escapes_.moves[std::size_t(t.clip)]) a.waiting_since = at.end;
-    // Giving way (rules/give_way.h): whether the agent waits from the end of its clip on.
-    const bool waiting = waits(o_.tuning.give_way, a, at.end, g_.dt(), avoids);
-    at.wait = waiting ? 1 : in_waiting_[std::size_t(c.agent())] ? 0 : -1;
+    note_waiting(c, a, at);
     count_choice(c, cp, tally);
-    if (!o_.sink) record(cp, out_.record.choices[std::size_t(at.choice)]);
+    if (!o_.sink) hand_over(cp, [&](ChoicePoint& p) { out_.record.choices[std::size_t(at.choice)] = std::move(p); });
 }
 
-// The choice point into the record's place for it; without its candidates unless the run records queries
-// (then the slot keeps their memory for its next choice point).
-void Simulation::record(ChoicePoint& cp, ChoicePoint& into) const {
-    if (o_.record_queries) {
-        into = std::move(cp);
-        return;
-    }
+// Waiting: taking its escape, or choosing to stay in place (the random mode has no escapes); and giving way
+// (rules/give_way.h): whether the agent waits from the end of its clip on.
+void Simulation::note_waiting(const Choice& c, Agent& a, Commit& at) const {
+    const bool avoids = policy_->avoids();
+    const int clip = c.taken().clip;
+    const bool stays = avoids && escapes_.in_place[std::size_t(clip)];
+    a.choices_waited = c.outcome() == Outcome::Escape || stays ? a.choices_waited + 1 : 0;
+    if (!avoids || escapes_.moves[std::size_t(clip)]) a.waiting_since = at.end;
+    const bool waiting = waits(o_.tuning.give_way, a, at.end, g_.dt(), avoids);
+    at.wait = waiting ? 1 : in_waiting_[std::size_t(c.agent())] ? 0 : -1;
+}
+
+// Hands `cp` to `take` without its candidates unless the run records queries: the slot keeps their memory
+// for its next choice point.
+template <class Take>
+void Simulation::hand_over(ChoicePoint& cp, Take&& take) const {
+    if (o_.record_queries) return take(cp);
     std::vector<Candidate> candidates = std::move(cp.candidates);  // leaves cp.candidates empty
-    into = std::move(cp);
+    take(cp);
     // Assigning a member of the moved-from slot is defined; Choice::prepare resets the rest.
     cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
 }
@@ -255,11 +258,7 @@ void Simulation::finish_commit(std::size_t i, const Commit& at) {
     if (at.wait >= 0) wait_changes_.push_back({at.agent, at.wait == 1});
     if (!o_.sink || !o_.sink->keeps_commits()) return;
     o_.sink->clip(at.agent, agents_[std::size_t(at.agent)].clips.back());
-    ChoicePoint& cp = slots_[i].point();
-    if (o_.record_queries) return o_.sink->choice(std::size_t(at.choice), cp);  // the record keeps none
-    std::vector<Candidate> candidates = std::move(cp.candidates);               // leaves cp.candidates empty
-    o_.sink->choice(std::size_t(at.choice), cp);
-    cp.candidates = std::move(candidates);  // NOLINT(bugprone-use-after-move)
+    hand_over(slots_[i].point(), [&](ChoicePoint& p) { o_.sink->choice(std::size_t(at.choice), p); });
 }
 
 void Simulation::log_queries(const Choice& c, int choice) {

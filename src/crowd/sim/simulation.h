@@ -74,7 +74,9 @@ private:
     int place_piece(Piece piece, std::size_t j);
     void reserve(int agent, int choice, const Plan& plan, Commit& at);
     void record_plan(const Choice& c, ChoicePoint& cp) const;
-    void record(ChoicePoint& cp, ChoicePoint& into) const;
+    void note_waiting(const Choice& c, Agent& a, Commit& at) const;
+    template <class Take>
+    void hand_over(ChoicePoint& cp, Take&& take) const;
     void release(int id);
     void flush();
     void log_queries(const Choice& c, int choice);
