@@ -15,14 +15,23 @@ glm::dvec3 planted_point(const glm::dvec3& ankle, const glm::dvec3& toe, Plant p
     return plant == Plant::Toe ? toe : ankle;
 }
 
-// v turned by the smallest rotation that takes unit vector a to unit vector b (Rodrigues).
-glm::dvec3 turned(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& v) {
-    const glm::dvec3 axis = glm::cross(a, b);
-    const double s = glm::length(axis), c = glm::dot(a, b);
-    if (s < 1e-12) return v;
-    const glm::dvec3 k = axis / s;
-    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
-}
+// The smallest rotation that takes unit vector a to unit vector b (Rodrigues), set up once per segment and
+// applied to each joint hanging from it.
+struct Turn {
+    glm::dvec3 k{0.0};
+    double s = 0, c = 1;
+    bool none = true;  // a and b (anti)parallel: joints are left as they are
+    Turn(const glm::dvec3& a, const glm::dvec3& b) {
+        const glm::dvec3 axis = glm::cross(a, b);
+        s = glm::length(axis);
+        c = glm::dot(a, b);
+        none = s < 1e-12;
+        if (!none) k = axis / s;
+    }
+    glm::dvec3 operator()(const glm::dvec3& v) const {
+        return none ? v : v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+    }
+};
 
 glm::dvec3 unit(const glm::dvec3& v) {
     const double l = glm::length(v);
@@ -34,13 +43,16 @@ glm::dvec3 unit(const glm::dvec3& v) {
 void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out) {
     const glm::dvec3 hip = out[std::size_t(leg.hip)], knee = out[std::size_t(leg.knee)],
                      ankle = out[std::size_t(leg.ankle)];
-    const glm::dvec3 thigh_a = unit(knee - hip), thigh_b = unit(s.knee - hip);
-    const glm::dvec3 shin_a = unit(ankle - knee), shin_b = unit(s.ankle - s.knee);
+    const Turn thigh(unit(knee - hip), unit(s.knee - hip)), shin(unit(ankle - knee), unit(s.ankle - s.knee));
+    const glm::dvec3 moved = s.ankle - ankle, bent_knee = s.knee;
     for (const auto& [j, segment] : leg.hanging) {
         glm::dvec3& q = out[std::size_t(j)];
-        if (segment == 1) q = hip + turned(thigh_a, thigh_b, q - hip);
-        if (segment == 2) q = s.knee + turned(shin_a, shin_b, q - knee);
-        if (segment == 3) q += s.ankle - ankle;
+        if (segment == 3)
+            q += moved;
+        else if (segment == 2)
+            q = bent_knee + shin(q - knee);
+        else
+            q = hip + thigh(q - hip);
     }
     out[std::size_t(leg.knee)] = s.knee;
     out[std::size_t(leg.ankle)] = s.ankle;
@@ -59,6 +71,16 @@ Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
     return std::size_t(at.sample) < t.plant.size() ? t.plant[std::size_t(at.sample)] : Plant::Free;
+}
+
+bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) const {
+    // Frame k is the one pose() poses, and the clip it plays has had the foot free for `frames` frames.
+    if (agent != posed_agent_ || k != posed_frame_) return false;
+    const GraphClip& gc = sources_->graph().clips[std::size_t(posed_.placed->clip)];
+    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+    const int i = posed_.sample;
+    return std::size_t(i) < t.plant.size() && t.plant[std::size_t(i)] == Plant::Free &&
+           i - frames >= std::max(t.run_begin[std::size_t(i)], gc.first);
 }
 
 bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
@@ -165,6 +187,7 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
     }
     // Released: the correction at the contact's last frame, decaying (smoothstep) over the release.
     const int release = int(std::lround(lock_.release / record_.dt));
+    if (free_for(agent, k, foot, release)) return false;
     for (int d = 1; d <= release; ++d) {
         const Plant then = plant_at(agent, k - d, foot);
         if (then == Plant::Free) continue;
@@ -197,8 +220,10 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
                                         targets[std::size_t(f)], free.toe - free.ankle);
         bend_leg(leg, s, out);
     }
-    if (!held[0] && !held[1]) return;
-    hold_inside(leg_joints_, disk, out);
+    // The bent legs inside the disk. Blended, free_pose held every joint inside this same disk, so a leg
+    // that was not bent is inside already; unblended it was not, and both legs are held in.
+    for (std::size_t f = 0; f < 2; ++f)
+        if (held[f] || (!(blend_.window > 0) && (held[0] || held[1]))) hold_inside(leg_joints_[f], disk, out);
     if (!feet) return;
     for (std::size_t f = 0; f < 2; ++f) {
         feet->held[f] = held[f];

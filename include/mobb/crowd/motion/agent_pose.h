@@ -193,6 +193,9 @@ private:
     void hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const;
     // Foot locking (foot_lock.cpp).
     Plant plant_at(int agent, std::int64_t k, int foot);
+    /// True where frame k (the frame being posed) and the `frames` frames before it are free in its clip:
+    /// no release to look for (one lookup instead of one per frame back).
+    bool free_for(int agent, std::int64_t k, int foot, int frames) const;
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const;
@@ -207,7 +210,8 @@ private:
     PoseBlend blend_;
     FootLock lock_;
     std::array<RigLeg, 2> legs_;
-    std::vector<int> all_, leg_joints_;       // every rig joint; both legs' joints (root first)
+    std::vector<int> all_;                       // every rig joint
+    std::array<std::vector<int>, 2> leg_joints_;  // per leg, the joints bending moves (root first)
     std::array<std::vector<int>, 2> foot_;    // per foot: root, hip, knee, ankle, toe
     std::vector<std::array<Hold, 2>> holds_;  // per agent and foot
     double disk_ = 0;                         // e(k) of the last free_pose (with blending)
