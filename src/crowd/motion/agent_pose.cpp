@@ -261,7 +261,11 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
     if (feet) {
         *feet = {};
         for (int f = 0; f < 2; ++f)
-            if (legs_[std::size_t(f)].complete()) feet->plant[std::size_t(f)] = plant_at(agent, k, f);
+            if (legs_[std::size_t(f)].complete()) {
+                feet->plant[std::size_t(f)] = plant_at(agent, k, f, false);
+                feet->hold[std::size_t(f)] =
+                    lock_.on ? plant_at(agent, k, f, lock_.carry) : feet->plant[std::size_t(f)];
+            }
     }
     if (lock_.on) lock_feet(agent, k, out, feet);
     return true;

@@ -58,9 +58,17 @@ void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out
     out[std::size_t(leg.ankle)] = s.ankle;
 }
 
+// The foot is up at samples [first, first + frames) of the track.
+bool up_from(const FootTrack& t, int first, int frames) {
+    if (first < 0 || std::size_t(first + frames) > t.plant.size()) return false;
+    for (int i = first; i < first + frames; ++i)
+        if (t.plant[std::size_t(i)] != Plant::Free) return false;
+    return true;
+}
+
 }  // namespace
 
-Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
+Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot, bool carry) {
     AgentClipAt at;
     if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
         at = posed_;  // in the clip of the frame being posed: no search
@@ -68,19 +76,47 @@ Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
     } else if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) {
         return Plant::Free;
     }
-    const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
-    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
-    return std::size_t(at.sample) < t.plant.size() ? t.plant[std::size_t(at.sample)] : Plant::Free;
+    return plant_in(at, k, foot, carry);
 }
 
-bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) const {
-    // Frame k is the one pose() poses, and the clip it plays has had the foot free for `frames` frames.
+Plant CrowdPoser::plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool carry) {
+    const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
+    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+    const std::size_t i = std::size_t(at.sample);
+    if (i >= t.plant.size()) return Plant::Free;
+    if (t.plant[i] != Plant::Free || !carry || t.run_begin[i] > gc.first) return t.plant[i];
+    return carried_plant(at, k, foot);
+}
+
+bool CrowdPoser::in_blend(std::int64_t i) const { return blend_.window > 0 && double(i) < blend_.window / record_.dt; }
+
+Plant CrowdPoser::carried_plant(const AgentClipAt& at, std::int64_t k, int foot) {
+    if (at.index == 0 || !in_blend(k - at.placed->start)) return Plant::Free;
+    const MotionGraph& g = sources_->graph();
+    const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
+    // The new clip keeps the foot up through the blend and the release after it, so the carried contact
+    // lets go before the clip's own next one begins (one contact never stands in two places).
+    const int up = int(std::ceil(blend_.window / record_.dt)) + int(std::lround(lock_.release / record_.dt));
+    if (!up_from(sources_->get(gc.source).feet[std::size_t(foot)], gc.first, up)) return Plant::Free;
+    const PlacedClip& prev = at.placed[-1];  // the agent's clips are one vector: the clip before
+    const GraphClip& gp = g.clips[std::size_t(prev.clip)];
+    if (prev.start + (gp.exit - gp.first) != at.placed->start) return Plant::Free;  // not back to back: no blend
+    const FootTrack& t = sources_->get(gp.source).feet[std::size_t(foot)];
+    if (gp.exit <= gp.first || std::size_t(gp.exit) >= t.plant.size()) return Plant::Free;
+    // Planted at its last frame and at its exit, the pose the blend eases out of.
+    return t.plant[std::size_t(gp.exit)] != Plant::Free ? t.plant[std::size_t(gp.exit - 1)] : Plant::Free;
+}
+
+bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) {
+    // Frame k is the one pose() poses, and the clip it plays has had the foot free for `frames` frames,
+    // none of them carried from the clip before.
     if (agent != posed_agent_ || k != posed_frame_) return false;
     const GraphClip& gc = sources_->graph().clips[std::size_t(posed_.placed->clip)];
     const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
     const int i = posed_.sample;
     return std::size_t(i) < t.plant.size() && t.plant[std::size_t(i)] == Plant::Free &&
-           i - frames >= std::max(t.run_begin[std::size_t(i)], gc.first);
+           i - frames >= std::max(t.run_begin[std::size_t(i)], gc.first) &&
+           (!lock_.carry || t.run_begin[std::size_t(i)] > gc.first || !in_blend(i - frames - gc.first));
 }
 
 bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
@@ -147,10 +183,12 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
-        if (std::size_t(at.sample) >= t.plant.size()) break;
-        const Plant p = t.plant[std::size_t(at.sample)];
+        const Plant p = plant_in(at, cur, foot, lock_.carry);
         if (p == Plant::Free) break;
-        const std::int64_t begin = cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
+        // A run of the clip's own contact, or frames carried from the clip before (from the clip's start).
+        const std::int64_t begin = t.plant[std::size_t(at.sample)] == Plant::Free
+                                       ? at.placed->start
+                                       : cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
         if (!segments_.empty() && segments_.back().plant == p)
             segments_.back().begin = begin;
         else
@@ -178,7 +216,7 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
 
 bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,
                               double& dragged) {
-    if (const Plant plant = plant_at(agent, k, foot); plant != Plant::Free) {
+    if (const Plant plant = plant_at(agent, k, foot, lock_.carry); plant != Plant::Free) {
         const Hold* h = contact_target(agent, k, foot, plant, &free);
         if (!h) return false;
         target = h->target;
@@ -189,7 +227,7 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
     const int release = int(std::lround(lock_.release / record_.dt));
     if (free_for(agent, k, foot, release)) return false;
     for (int d = 1; d <= release; ++d) {
-        const Plant then = plant_at(agent, k - d, foot);
+        const Plant then = plant_at(agent, k - d, foot, lock_.carry);
         if (then == Plant::Free) continue;
         const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
         if (!h) return false;
