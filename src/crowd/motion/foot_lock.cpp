@@ -91,20 +91,28 @@ Plant CrowdPoser::plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool
 bool CrowdPoser::in_blend(std::int64_t i) const { return blend_.window > 0 && double(i) < blend_.window / record_.dt; }
 
 Plant CrowdPoser::carried_plant(const AgentClipAt& at, std::int64_t k, int foot) {
-    if (at.index == 0 || !in_blend(k - at.placed->start)) return Plant::Free;
+    return at.index > 0 && in_blend(k - at.placed->start) ? carried_into(at, foot) : Plant::Free;
+}
+
+Plant CrowdPoser::carried_into(const AgentClipAt& at, int foot) {
+    CarryCache& c = carry_[std::size_t(foot)];
+    if (c.placed == at.placed) return c.plant;  // the clip of the last call: every frame of a blend asks
+    c = {at.placed, Plant::Free};
+    if (at.index == 0) return c.plant;
     const MotionGraph& g = sources_->graph();
     const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
     // The new clip keeps the foot up through the blend and the release after it, so the carried contact
     // lets go before the clip's own next one begins (one contact never stands in two places).
     const int up = int(std::ceil(blend_.window / record_.dt)) + int(std::lround(lock_.release / record_.dt));
-    if (!up_from(sources_->get(gc.source).feet[std::size_t(foot)], gc.first, up)) return Plant::Free;
+    if (!up_from(sources_->get(gc.source).feet[std::size_t(foot)], gc.first, up)) return c.plant;
     const PlacedClip& prev = at.placed[-1];  // the agent's clips are one vector: the clip before
     const GraphClip& gp = g.clips[std::size_t(prev.clip)];
-    if (prev.start + (gp.exit - gp.first) != at.placed->start) return Plant::Free;  // not back to back: no blend
+    if (prev.start + (gp.exit - gp.first) != at.placed->start) return c.plant;  // not back to back: no blend
     const FootTrack& t = sources_->get(gp.source).feet[std::size_t(foot)];
-    if (gp.exit <= gp.first || std::size_t(gp.exit) >= t.plant.size()) return Plant::Free;
+    if (gp.exit <= gp.first || std::size_t(gp.exit) >= t.plant.size()) return c.plant;
     // Planted at its last frame and at its exit, the pose the blend eases out of.
-    return t.plant[std::size_t(gp.exit)] != Plant::Free ? t.plant[std::size_t(gp.exit - 1)] : Plant::Free;
+    if (t.plant[std::size_t(gp.exit)] != Plant::Free) c.plant = t.plant[std::size_t(gp.exit - 1)];
+    return c.plant;
 }
 
 bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) {
@@ -116,7 +124,8 @@ bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) {
     const int i = posed_.sample;
     return std::size_t(i) < t.plant.size() && t.plant[std::size_t(i)] == Plant::Free &&
            i - frames >= std::max(t.run_begin[std::size_t(i)], gc.first) &&
-           (!lock_.carry || t.run_begin[std::size_t(i)] > gc.first || !in_blend(i - frames - gc.first));
+           (!lock_.carry || t.run_begin[std::size_t(i)] > gc.first || !in_blend(i - frames - gc.first) ||
+            carried_into(posed_, foot) == Plant::Free);
 }
 
 bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {

@@ -204,6 +204,8 @@ private:
     /// and the clip before (back to back) had it planted at its last frame and at its exit (the pose the
     /// blend eases out of): the plant of that last frame, the contact going on; else Free.
     Plant carried_plant(const AgentClipAt& at, std::int64_t k, int foot);
+    /// The plant carried into clip `at` through its blend (Free: none), kept for the clip last asked about.
+    Plant carried_into(const AgentClipAt& at, int foot);
     /// Frame i of a clip is blended (PoseBlend::window).
     bool in_blend(std::int64_t i) const;
     /// True where frame k (the frame being posed) and the `frames` frames before it are free in its clip:
@@ -237,6 +239,11 @@ private:
         Plant plant;
     };
     std::vector<Segment> segments_;
+    struct CarryCache {
+        const PlacedClip* placed = nullptr;
+        Plant plant = Plant::Free;
+    };
+    std::array<CarryCache, 2> carry_;  // per foot: carried_into's last clip and answer
 };
 
 }  // namespace mobb::crowd
