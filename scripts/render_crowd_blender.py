@@ -1,8 +1,12 @@
 # Renders an exported crowd (mobb export-crowd ... --body) headless in Blender, for docs/export.md:
 #   blender -b --factory-startup --python scripts/render_crowd_blender.py -- crowd.glb out.png [SECONDS] [WIDTH HEIGHT]
+#       [look=X,Y] [distance=D] [samples=N]
 # Imports the GLB (one armature per agent, skinned capsule bodies, the world's walls, obstacles and goals),
 # adds a ground, a sun and a camera looking down at the world from its south-west corner, and renders the
 # frame at SECONDS (default 5) with Cycles on the CPU (64 samples). Debian's Blender 3.4.
+# A close-up: look=X,Y (a ground point, mobb's metres: the export's glTF (x, h, -y) is Blender's (x, y, h))
+# puts the camera low, D metres (default 4) south-west of it, aimed at knee height there, so feet on the
+# ground can be judged; samples=N sets Cycles' samples.
 import sys
 
 import numpy
@@ -13,12 +17,18 @@ if "bool" not in vars(numpy):  # Blender 3.4's glTF importer still names numpy.b
 import bpy  # noqa: E402
 from mathutils import Vector  # noqa: E402
 
-args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-if len(args) < 2:
-    sys.exit("usage: blender -b --python render_crowd_blender.py -- CROWD.glb OUT.png [SECONDS] [WIDTH HEIGHT]")
+argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+args = [a for a in argv if "=" not in a]
+options = dict(a.split("=", 1) for a in argv if "=" in a)
+if len(args) < 2 or not set(options) <= {"look", "distance", "samples"}:
+    sys.exit("usage: blender -b --python render_crowd_blender.py -- CROWD.glb OUT.png [SECONDS] [WIDTH HEIGHT]"
+             " [look=X,Y] [distance=D] [samples=N]")
 glb, out = args[0], args[1]
 seconds = float(args[2]) if len(args) > 2 else 5.0
 width, height = (int(args[3]), int(args[4])) if len(args) > 4 else (960, 540)
+look = Vector([float(v) for v in options["look"].split(",")] + [0.0]) if "look" in options else None
+distance = float(options.get("distance", 4.0))
+samples = int(options.get("samples", 64))
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
@@ -61,16 +71,21 @@ scene.world.use_nodes = True
 scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.75, 0.8, 0.9, 1)
 scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.6
 
-eye = centre + Vector((-0.55 * size, -0.75 * size, 0.55 * size))
+if look is None:  # the whole world from above its south-west corner
+    aim = centre
+    eye = centre + Vector((-0.55 * size, -0.75 * size, 0.55 * size))
+else:  # low, from the south-west, aimed at knee height: feet and their shadows on the ground
+    aim = look + Vector((0, 0, 0.45))
+    eye = look + distance * Vector((-0.55, -0.8, 0.22))
 bpy.ops.object.camera_add(location=eye)
 cam = bpy.context.object
-cam.rotation_euler = (centre - eye).to_track_quat("-Z", "Y").to_euler()
-cam.data.lens = 40
+cam.rotation_euler = (aim - eye).to_track_quat("-Z", "Y").to_euler()
+cam.data.lens = 40 if look is None else 50
 scene.camera = cam
 
 scene.render.engine = "CYCLES"
 scene.cycles.device = "CPU"
-scene.cycles.samples = 64
+scene.cycles.samples = samples
 scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
 scene.render.resolution_x, scene.render.resolution_y = width, height
 scene.render.resolution_percentage = 100

@@ -218,13 +218,12 @@ CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> source
     rig_ = crowd_rig(*sources_, joints);
     legs_ = rig_legs(rig_);
     for (int j = 0; j < rig_.size(); ++j) all_.push_back(j);
-    leg_joints_ = {0};
     for (std::size_t f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[f];
         if (!leg.complete()) continue;
         foot_[f] = {0, leg.hip, leg.knee, leg.ankle, leg.toe};
-        for (int j : {leg.knee, leg.ankle}) leg_joints_.push_back(j);
-        for (const auto& h : leg.hanging) leg_joints_.push_back(h.first);
+        leg_joints_[f] = {0, leg.knee, leg.ankle};
+        for (const auto& h : leg.hanging) leg_joints_[f].push_back(h.first);
     }
 }
 
@@ -262,7 +261,11 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
     if (feet) {
         *feet = {};
         for (int f = 0; f < 2; ++f)
-            if (legs_[std::size_t(f)].complete()) feet->plant[std::size_t(f)] = plant_at(agent, k, f);
+            if (legs_[std::size_t(f)].complete()) {
+                feet->plant[std::size_t(f)] = plant_at(agent, k, f, false);
+                feet->hold[std::size_t(f)] =
+                    lock_.on ? plant_at(agent, k, f, lock_.carry) : feet->plant[std::size_t(f)];
+            }
     }
     if (lock_.on) lock_feet(agent, k, out, feet);
     return true;

@@ -15,14 +15,23 @@ glm::dvec3 planted_point(const glm::dvec3& ankle, const glm::dvec3& toe, Plant p
     return plant == Plant::Toe ? toe : ankle;
 }
 
-// v turned by the smallest rotation that takes unit vector a to unit vector b (Rodrigues).
-glm::dvec3 turned(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& v) {
-    const glm::dvec3 axis = glm::cross(a, b);
-    const double s = glm::length(axis), c = glm::dot(a, b);
-    if (s < 1e-12) return v;
-    const glm::dvec3 k = axis / s;
-    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
-}
+// The smallest rotation that takes unit vector a to unit vector b (Rodrigues), set up once per segment and
+// applied to each joint hanging from it.
+struct Turn {
+    glm::dvec3 k{0.0};
+    double s = 0, c = 1;
+    bool none = true;  // a and b (anti)parallel: joints are left as they are
+    Turn(const glm::dvec3& a, const glm::dvec3& b) {
+        const glm::dvec3 axis = glm::cross(a, b);
+        s = glm::length(axis);
+        c = glm::dot(a, b);
+        none = s < 1e-12;
+        if (!none) k = axis / s;
+    }
+    glm::dvec3 operator()(const glm::dvec3& v) const {
+        return none ? v : v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+    }
+};
 
 glm::dvec3 unit(const glm::dvec3& v) {
     const double l = glm::length(v);
@@ -34,21 +43,32 @@ glm::dvec3 unit(const glm::dvec3& v) {
 void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out) {
     const glm::dvec3 hip = out[std::size_t(leg.hip)], knee = out[std::size_t(leg.knee)],
                      ankle = out[std::size_t(leg.ankle)];
-    const glm::dvec3 thigh_a = unit(knee - hip), thigh_b = unit(s.knee - hip);
-    const glm::dvec3 shin_a = unit(ankle - knee), shin_b = unit(s.ankle - s.knee);
+    const Turn thigh(unit(knee - hip), unit(s.knee - hip)), shin(unit(ankle - knee), unit(s.ankle - s.knee));
+    const glm::dvec3 moved = s.ankle - ankle, bent_knee = s.knee;
     for (const auto& [j, segment] : leg.hanging) {
         glm::dvec3& q = out[std::size_t(j)];
-        if (segment == 1) q = hip + turned(thigh_a, thigh_b, q - hip);
-        if (segment == 2) q = s.knee + turned(shin_a, shin_b, q - knee);
-        if (segment == 3) q += s.ankle - ankle;
+        if (segment == 3)
+            q += moved;
+        else if (segment == 2)
+            q = bent_knee + shin(q - knee);
+        else
+            q = hip + thigh(q - hip);
     }
     out[std::size_t(leg.knee)] = s.knee;
     out[std::size_t(leg.ankle)] = s.ankle;
 }
 
+// The foot is up at samples [first, first + frames) of the track.
+bool up_from(const FootTrack& t, int first, int frames) {
+    if (first < 0 || std::size_t(first + frames) > t.plant.size()) return false;
+    for (int i = first; i < first + frames; ++i)
+        if (t.plant[std::size_t(i)] != Plant::Free) return false;
+    return true;
+}
+
 }  // namespace
 
-Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
+Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot, bool carry) {
     AgentClipAt at;
     if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
         at = posed_;  // in the clip of the frame being posed: no search
@@ -56,9 +76,56 @@ Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot) {
     } else if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) {
         return Plant::Free;
     }
+    return plant_in(at, k, foot, carry);
+}
+
+Plant CrowdPoser::plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool carry) {
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
-    return std::size_t(at.sample) < t.plant.size() ? t.plant[std::size_t(at.sample)] : Plant::Free;
+    const std::size_t i = std::size_t(at.sample);
+    if (i >= t.plant.size()) return Plant::Free;
+    if (t.plant[i] != Plant::Free || !carry || t.run_begin[i] > gc.first) return t.plant[i];
+    return carried_plant(at, k, foot);
+}
+
+bool CrowdPoser::in_blend(std::int64_t i) const { return blend_.window > 0 && double(i) < blend_.window / record_.dt; }
+
+Plant CrowdPoser::carried_plant(const AgentClipAt& at, std::int64_t k, int foot) {
+    return at.index > 0 && in_blend(k - at.placed->start) ? carried_into(at, foot) : Plant::Free;
+}
+
+Plant CrowdPoser::carried_into(const AgentClipAt& at, int foot) {
+    CarryCache& c = carry_[std::size_t(foot)];
+    if (c.placed == at.placed) return c.plant;  // the clip of the last call: every frame of a blend asks
+    c = {at.placed, Plant::Free};
+    if (at.index == 0) return c.plant;
+    const MotionGraph& g = sources_->graph();
+    const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
+    // The new clip keeps the foot up through the blend and the release after it, so the carried contact
+    // lets go before the clip's own next one begins (one contact never stands in two places).
+    const int up = int(std::ceil(blend_.window / record_.dt)) + int(std::lround(lock_.release / record_.dt));
+    if (!up_from(sources_->get(gc.source).feet[std::size_t(foot)], gc.first, up)) return c.plant;
+    const PlacedClip& prev = at.placed[-1];  // the agent's clips are one vector: the clip before
+    const GraphClip& gp = g.clips[std::size_t(prev.clip)];
+    if (prev.start + (gp.exit - gp.first) != at.placed->start) return c.plant;  // not back to back: no blend
+    const FootTrack& t = sources_->get(gp.source).feet[std::size_t(foot)];
+    if (gp.exit <= gp.first || std::size_t(gp.exit) >= t.plant.size()) return c.plant;
+    // Planted at its last frame and at its exit, the pose the blend eases out of.
+    if (t.plant[std::size_t(gp.exit)] != Plant::Free) c.plant = t.plant[std::size_t(gp.exit - 1)];
+    return c.plant;
+}
+
+bool CrowdPoser::free_for(int agent, std::int64_t k, int foot, int frames) {
+    // Frame k is the one pose() poses, and the clip it plays has had the foot free for `frames` frames,
+    // none of them carried from the clip before.
+    if (agent != posed_agent_ || k != posed_frame_) return false;
+    const GraphClip& gc = sources_->graph().clips[std::size_t(posed_.placed->clip)];
+    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+    const int i = posed_.sample;
+    return std::size_t(i) < t.plant.size() && t.plant[std::size_t(i)] == Plant::Free &&
+           i - frames >= std::max(t.run_begin[std::size_t(i)], gc.first) &&
+           (!lock_.carry || t.run_begin[std::size_t(i)] > gc.first || !in_blend(i - frames - gc.first) ||
+            carried_into(posed_, foot) == Plant::Free);
 }
 
 bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
@@ -125,10 +192,12 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
-        if (std::size_t(at.sample) >= t.plant.size()) break;
-        const Plant p = t.plant[std::size_t(at.sample)];
+        const Plant p = plant_in(at, cur, foot, lock_.carry);
         if (p == Plant::Free) break;
-        const std::int64_t begin = cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
+        // A run of the clip's own contact, or frames carried from the clip before (from the clip's start).
+        const std::int64_t begin = t.plant[std::size_t(at.sample)] == Plant::Free
+                                       ? at.placed->start
+                                       : cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
         if (!segments_.empty() && segments_.back().plant == p)
             segments_.back().begin = begin;
         else
@@ -156,7 +225,7 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
 
 bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,
                               double& dragged) {
-    if (const Plant plant = plant_at(agent, k, foot); plant != Plant::Free) {
+    if (const Plant plant = plant_at(agent, k, foot, lock_.carry); plant != Plant::Free) {
         const Hold* h = contact_target(agent, k, foot, plant, &free);
         if (!h) return false;
         target = h->target;
@@ -165,8 +234,9 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
     }
     // Released: the correction at the contact's last frame, decaying (smoothstep) over the release.
     const int release = int(std::lround(lock_.release / record_.dt));
+    if (free_for(agent, k, foot, release)) return false;
     for (int d = 1; d <= release; ++d) {
-        const Plant then = plant_at(agent, k - d, foot);
+        const Plant then = plant_at(agent, k - d, foot, lock_.carry);
         if (then == Plant::Free) continue;
         const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
         if (!h) return false;
@@ -197,8 +267,10 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
                                         targets[std::size_t(f)], free.toe - free.ankle);
         bend_leg(leg, s, out);
     }
-    if (!held[0] && !held[1]) return;
-    hold_inside(leg_joints_, disk, out);
+    // The bent legs inside the disk. Blended, free_pose held every joint inside this same disk, so a leg
+    // that was not bent is inside already; unblended it was not, and both legs are held in.
+    for (std::size_t f = 0; f < 2; ++f)
+        if (held[f] || (!(blend_.window > 0) && (held[0] || held[1]))) hold_inside(leg_joints_[f], disk, out);
     if (!feet) return;
     for (std::size_t f = 0; f < 2; ++f) {
         feet->held[f] = held[f];

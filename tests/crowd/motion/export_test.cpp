@@ -43,9 +43,10 @@ const Record& record() {
     return r;
 }
 
-CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true) {
+CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true, bool carry = true) {
     FootLock lock;
     lock.on = lock_feet;
+    lock.carry = carry;
     return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend, lock);
 }
 
@@ -196,6 +197,52 @@ TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
     EXPECT_GT(free_moved, 0.02);   // metres: without the lock the ankle slides through the transition
 }
 
+// Where a clip ends with a foot planted and the next one has it up from its start, the blend eases out of
+// the planted pose and carries the foot off while it is still low; the lock holds it (FootLock::carry)
+// through the blend, as planted as it was at the clip's last frame, moving only where the hold says it
+// was dragged. Without carry those frames are not held.
+TEST(FootLock, AFootPlantedAtAClipsEndIsHeldThroughTheBlend) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser locked = poser(), uncarried = poser({}, RigJoints::All, true, false);
+    std::vector<glm::dvec3> pose, raw, unlocked, other;
+    FeetAt feet, other_feet;
+    int carried = 0, still = 0;
+    double free_moved = 0;
+    for (int a = 0; a < int(record().tracks.size()); ++a)
+        for (std::size_t c = 1; c < record().tracks[std::size_t(a)].clips.size(); ++c) {
+            const std::int64_t start = record().tracks[std::size_t(a)].clips[c].start;
+            for (std::size_t f = 0; f < 2; ++f) {
+                if (!locked.pose(a, start - 1, pose, raw, unlocked, &feet) || feet.plant[f] == Plant::Free) continue;
+                const Plant plant = feet.plant[f];
+                const std::size_t j = std::size_t(plant == Plant::Toe ? locked.legs()[f].toe : locked.legs()[f].ankle);
+                glm::dvec3 last = pose[j];
+                const glm::dvec3 free_first = unlocked[j];
+                bool moved = false;
+                std::int64_t k = start;
+                for (; locked.pose(a, k, pose, raw, unlocked, &feet) && feet.plant[f] == Plant::Free &&
+                       feet.hold[f] != Plant::Free;
+                     ++k) {
+                    EXPECT_EQ(feet.hold[f], plant) << "agent " << a << " frame " << k;
+                    EXPECT_TRUE(feet.held[f]);
+                    EXPECT_LE(glm::length(pose[j] - last), feet.dragged[f] + feet.residual[f] + 1e-9)
+                        << "agent " << a << " frame " << k;
+                    moved = moved || feet.dragged[f] > 0;
+                    last = pose[j];
+                    free_moved =
+                        std::max(free_moved, std::hypot(unlocked[j].x - free_first.x, unlocked[j].y - free_first.y));
+                    ASSERT_TRUE(uncarried.pose(a, k, other, raw, unlocked, &other_feet));
+                    EXPECT_EQ(other_feet.hold[f], Plant::Free);
+                }
+                if (k == start) continue;
+                ++carried;
+                still += !moved;
+            }
+        }
+    EXPECT_GT(carried, 5);
+    EXPECT_GT(still, 0);          // some carried feet do not move at all
+    EXPECT_GT(free_moved, 0.02);  // metres: the blend alone carries them off
+}
+
 // A hold is followed frame by frame and kept per agent and foot; posing the frames backwards (every frame
 // starting its hold over) gives the same poses as posing them in order, to the bit.
 TEST(FootLock, PosesDoNotDependOnTheOrderFramesArePosedIn) {
@@ -204,7 +251,7 @@ TEST(FootLock, PosesDoNotDependOnTheOrderFramesArePosedIn) {
     std::vector<glm::dvec3> a, b;
     const std::int64_t frames = std::min<std::int64_t>(record().frames, 300);
     std::vector<std::vector<glm::dvec3>> ahead;
-    for (int agent : {0, 5}) {
+    for (int agent = 0; agent < int(record().tracks.size()); ++agent) {
         ahead.clear();
         for (std::int64_t k = 0; k < frames; ++k) {
             ASSERT_TRUE(forward.pose(agent, k, a));

@@ -115,7 +115,10 @@ std::array<RigLeg, 2> rig_legs(const Rig& rig);
 
 /// What foot locking did at one frame, per foot (left, right).
 struct FeetAt {
-    std::array<Plant, 2> plant{};      ///< the foot's contact at the frame (Free: none)
+    std::array<Plant, 2> plant{};  ///< the foot's contact at the frame, its clip's own (Free: none)
+    /// The contact the lock holds: `plant`, or one carried through a blend from the clip before
+    /// (FootLock::carry); `plant` where locking is off.
+    std::array<Plant, 2> hold{};
     std::array<bool, 2> held{};        ///< the ankle had a target (in contact, or releasing after one)
     std::array<double, 2> residual{};  ///< metres from the ankle to its target after the IK (and the disk)
     /// Metres the planted point was dragged at this frame, where the leg could not reach it or it left the
@@ -127,11 +130,12 @@ struct FeetAt {
 /// not the graph's (frames would not be samples). Not thread-safe (sources load on first use).
 ///
 /// Foot locking (`lock`, on by default; foot_contact.h, Kovar et al. 2002): while a foot is in contact
-/// (its source's contacts, continued across back-to-back clips) its planted point - the ankle while the
-/// heel is down, the toe while only the toe is - stays where it was in the world when the contact began
-/// (where the planted point changes, the new one's place follows from the old one's); the ankle's target
-/// is that point plus the pose's own ankle offset from it, and two_joint_ik bends the leg to reach it
-/// (the rig's joints below the hip follow their segments). After a contact the correction decays over
+/// (its source's contacts, continued across back-to-back clips, and carried through the blend after a
+/// clip start where the clip before ends planted and the new one has the foot up: carried_plant) its
+/// planted point - the ankle while the heel is down, the toe while only the toe is - stays where it was
+/// in the world when the contact began (where the planted point changes, the new one's place follows from
+/// the old one's); the ankle's target is that point plus the pose's own ankle offset from it, and
+/// two_joint_ik bends the leg to reach it (the rig's joints below the hip follow their segments). After a contact the correction decays over
 /// FootLock::release. The root and every other joint are not touched; the leg is held inside the disk
 /// like blended joints (where that moves the ankle off its target, it shows as the residual).
 class CrowdPoser {
@@ -192,7 +196,21 @@ private:
     double envelope(int agent, std::int64_t k) const;
     void hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const;
     // Foot locking (foot_lock.cpp).
-    Plant plant_at(int agent, std::int64_t k, int foot);
+    /// The foot's contact at frame k: its clip's own, or with `carry` also one carried through a blend
+    /// (carried_plant).
+    Plant plant_at(int agent, std::int64_t k, int foot, bool carry);
+    Plant plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool carry);
+    /// Frame k of clip `at` is in the blend after its start, the clip has the foot up from its first sample,
+    /// and the clip before (back to back) had it planted at its last frame and at its exit (the pose the
+    /// blend eases out of): the plant of that last frame, the contact going on; else Free.
+    Plant carried_plant(const AgentClipAt& at, std::int64_t k, int foot);
+    /// The plant carried into clip `at` through its blend (Free: none), kept for the clip last asked about.
+    Plant carried_into(const AgentClipAt& at, int foot);
+    /// Frame i of a clip is blended (PoseBlend::window).
+    bool in_blend(std::int64_t i) const;
+    /// True where frame k (the frame being posed) and the `frames` frames before it are free in its clip:
+    /// no release to look for (one lookup instead of one per frame back).
+    bool free_for(int agent, std::int64_t k, int foot, int frames);
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const;
@@ -207,11 +225,12 @@ private:
     PoseBlend blend_;
     FootLock lock_;
     std::array<RigLeg, 2> legs_;
-    std::vector<int> all_, leg_joints_;       // every rig joint; both legs' joints (root first)
-    std::array<std::vector<int>, 2> foot_;    // per foot: root, hip, knee, ankle, toe
-    std::vector<std::array<Hold, 2>> holds_;  // per agent and foot
-    double disk_ = 0;                         // e(k) of the last free_pose (with blending)
-    AgentClipAt posed_;                       // the clip of the frame pose() poses (agent -1: none)
+    std::vector<int> all_;                        // every rig joint
+    std::array<std::vector<int>, 2> leg_joints_;  // per leg, the joints bending moves (root first)
+    std::array<std::vector<int>, 2> foot_;        // per foot: root, hip, knee, ankle, toe
+    std::vector<std::array<Hold, 2>> holds_;      // per agent and foot
+    double disk_ = 0;                             // e(k) of the last free_pose (with blending)
+    AgentClipAt posed_;                           // the clip of the frame pose() poses (agent -1: none)
     int posed_agent_ = -1;
     std::int64_t posed_frame_ = 0;
     std::vector<glm::dvec3> a_, b_, c_, d_, e_, u_;
@@ -220,6 +239,11 @@ private:
         Plant plant;
     };
     std::vector<Segment> segments_;
+    struct CarryCache {
+        const PlacedClip* placed = nullptr;
+        Plant plant = Plant::Free;
+    };
+    std::array<CarryCache, 2> carry_;  // per foot: carried_into's last clip and answer
 };
 
 }  // namespace mobb::crowd

@@ -37,7 +37,8 @@ struct ContactRule {
     double speed_off = 0.2;         ///< metres per second to lift
     double ground_quantile = 0.05;  ///< the joint's ground level: this quantile of its height over the take
     double merge_gap = 0.2;         ///< seconds: a foot's contacts closer than this are one (a lock does not
-                                    ///< restart while the previous one still releases, FootLock::release)
+                                    ///< restart while the previous one still releases: FootLock::release is
+                                    ///< no longer)
     double min_contact = 0.1;       ///< seconds: shorter contacts are dropped (a toe brushing the floor)
 };
 
@@ -74,8 +75,16 @@ std::vector<ContactSpan> clip_contacts(const std::array<FootTrack, 2>& feet, con
 /// `release` seconds (smoothstep), as blending's offsets do.
 struct FootLock {
     bool on = true;
-    double reach = 0.98;    ///< of the leg's length: a walker's knee at heel strike is nearly straight
-    double release = 0.15;  ///< seconds; Kovar et al. blend the adjustment out over a few frames
+    double reach = 0.98;  ///< of the leg's length: a walker's knee at heel strike is nearly straight
+    /// Seconds; Kovar et al. blend the adjustment out over a few frames. As long as ContactRule::merge_gap,
+    /// the shortest gap between a foot's contacts, so a release ends before the next contact begins (0.15
+    /// s let go faster: on the 100-agent wander, seed 1, walk clips skated in 11.6 % of GMD's contact
+    /// steps, 0.2 s 11.3 %).
+    double release = 0.2;
+    /// Hold a contact on through the blend after a clip start where the new clip has the foot up from its
+    /// first frame but the clip before had it planted at its end: the blend eases out of a planted pose, so
+    /// its foot stays low while the offset carries it towards the new clip's swing (it skated there).
+    bool carry = true;
 };
 
 /// The leg after the two-joint IK: the new knee and ankle, and how far the ankle ends from the target
