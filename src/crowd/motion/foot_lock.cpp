@@ -60,7 +60,7 @@ void bend_leg(const RigLeg& leg, const LegSolve& s, std::vector<glm::dvec3>& out
 
 // The foot is up at samples [first, first + frames) of the track.
 bool up_from(const FootTrack& t, int first, int frames) {
-    if (first < 0 || std::size_t(first + frames) > t.plant.size()) return false;
+    if (first < 0 || frames < 0 || std::size_t(first) + std::size_t(frames) > t.plant.size()) return false;
     for (int i = first; i < first + frames; ++i)
         if (t.plant[std::size_t(i)] != Plant::Free) return false;
     return true;
