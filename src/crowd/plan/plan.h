@@ -63,6 +63,25 @@ inline SpaceTimeBox hold_box(const Hold& h) { return {h.x - h.r, h.y - h.r, h.x 
 /// The space-time box a piece takes in the broad phase: its clip's, or its held ground's (hold_box).
 inline SpaceTimeBox box_of(const Piece& p) { return p.kind == Piece::Held ? hold_box(p.hold) : p.clip.box; }
 
+/// The pieces agent `agent` reserves for `plan` by choice point `choice`, in order - its escape clips
+/// (index 1, 2, ...), then its held ground - each handed to `take`.
+template <class Take>
+void plan_pieces(int agent, int choice, const Plan& plan, Take&& take) {
+    Piece p;
+    p.agent = agent;
+    p.choice = choice;
+    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
+        p.index = int(i) + 1;
+        p.clip = plan.escape[i];
+        take(p);
+    }
+    if (!plan.hold) return;
+    p.kind = Piece::Held;
+    p.index = -1;
+    p.hold = *plan.hold;
+    take(p);
+}
+
 /// Whether two held disks come closer than `gap` metres beyond touching.
 inline bool holds_meet(const Hold& a, const Hold& b, double gap = 0) {
     const double dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r + gap;

@@ -176,20 +176,7 @@ void Simulation::reserve(int agent, int choice, const Plan& plan, Commit& at) {
     Agent& a = agents_[std::size_t(agent)];
     for (int id : a.reserved) released_[at.first_release++] = id;
     a.reserved.clear();
-    Piece p;
-    p.agent = agent;
-    p.choice = choice;
-    for (std::size_t i = 0; i < plan.escape.size(); ++i) {
-        p.index = int(i) + 1;
-        p.clip = plan.escape[i];
-        a.reserved.push_back(place_piece(p, at.first_piece++));
-    }
-    if (plan.hold) {
-        p.kind = Piece::Held;
-        p.index = -1;
-        p.hold = *plan.hold;
-        a.reserved.push_back(place_piece(p, at.first_piece++));
-    }
+    plan_pieces(agent, choice, plan, [&](const Piece& p) { a.reserved.push_back(place_piece(p, at.first_piece++)); });
     a.plan = plan;
 }
 

@@ -81,20 +81,7 @@ struct Scene {
     // Agent `a` reserves `plan` (its escape clips, its held ground), as Simulation::reserve does.
     void reserve(int a, const Plan& plan, int choice = 0) {
         Agent& agent = agents[std::size_t(a)];
-        Piece p;
-        p.agent = a;
-        p.choice = choice;
-        for (std::size_t i = 0; i < plan.escape.size(); ++i) {
-            p.index = int(i) + 1;
-            p.clip = plan.escape[i];
-            agent.reserved.push_back(place(p));
-        }
-        if (plan.hold) {
-            p.kind = Piece::Held;
-            p.index = -1;
-            p.hold = *plan.hold;
-            agent.reserved.push_back(place(p));
-        }
+        plan_pieces(a, choice, plan, [&](const Piece& p) { agent.reserved.push_back(place(p)); });
         agent.plan = plan;
     }
     // Agent `a` stands at its start for good: the ground it holds there (choice -1, as at a run's start).
