@@ -68,7 +68,6 @@ void count_choice(const Choice& c, const ChoicePoint& cp, CrowdSummary& s) {
 void Simulation::commit_run(std::size_t from, std::size_t to) {
     if (from == to) return;
     const std::size_t m = to - from;
-    commits_.resize(m);
     tallies_.assign(std::size_t(pool_.size()), {});
     const bool parallel = m >= kParallelRun;
     const auto each = [&](std::size_t n, std::size_t grain, auto&& f) {
@@ -78,32 +77,39 @@ void Simulation::commit_run(std::size_t from, std::size_t to) {
         }
         pool_.for_each(n, f, grain);
     };
-    each(m, kRunGrain, [&](std::size_t k, int) { count_commit(from + k, commits_[k]); });
+    if (reroutes_[from]) {  // its count is taken again: the reroutes' plans as they are now
+        MOBB_ASSERT(m == 1);
+        count_commit(from, commits_[from]);
+    }
     lay_out(from, to);
     // The commits, and beside them the lists by frame, shared out by frame (each list filled in position
     // order by one worker; from what count_commit and lay_out found, which apply_commit leaves alone).
     const std::size_t parts = parallel ? std::size_t(pool_.size()) : 1;
     each(m + parts, kRunGrain, [&](std::size_t k, int worker) {
-        if (k < m) return apply_commit(from + k, commits_[k], tallies_[std::size_t(worker)]);
-        list_commits(k - m, parts);
+        if (k < m) return apply_commit(from + k, commits_[from + k], tallies_[std::size_t(worker)]);
+        list_commits(from, to, k - m, parts);
     });
-    for (std::size_t k = 0; k < m; ++k) finish_commit(from + k, commits_[k]);
+    for (std::size_t i = from; i < to; ++i) finish_commit(i, commits_[i]);
     for (const CrowdSummary& t : tallies_) add_counts(out_.summary, t);
 }
 
 // The run's commits into the lists by frame whose frame is `part` modulo `parts`: the clips that end then
 // (expired then: BroadPhase::expire) and the agents at a choice point then.
-void Simulation::list_commits(std::size_t part, std::size_t parts) {
+void Simulation::list_commits(std::size_t from, std::size_t to, std::size_t part, std::size_t parts) {
     const auto mine = [&](std::int64_t frame, std::size_t size) {
         return frame < std::int64_t(size) && std::size_t(frame) % parts == part;
     };
-    for (const Commit& at : commits_) {
+    for (std::size_t i = from; i < to; ++i) {
+        const Commit& at = commits_[i];
         if (mine(at.clip_f1, ending_.size())) ending_[std::size_t(at.clip_f1)].push_back(at.clip_id);
         if (mine(at.end, due_.size())) due_[std::size_t(at.end)].push_back(at.agent);
     }
 }
 
-// What the commit at position i adds and releases: read-only, so positions count in parallel.
+// What the commit at position i adds and releases: read-only, so positions count in parallel, as they are
+// evaluated. It stays true until the commit: an agent's reservations change only by its own commit or by
+// a reroute, and agents at a choice point are never rerouted (may_reroute), so only the reroutes' count
+// is taken again, when the position commits (alone).
 void Simulation::count_commit(std::size_t i, Commit& out) const {
     const Choice& c = slots_[i];
     const auto count = [&](int agent, const Plan& plan) {
@@ -132,7 +138,7 @@ void Simulation::lay_out(std::size_t from, std::size_t to) {
     std::uint64_t choice = out_.summary.choice_points;
     MOBB_ASSERT(o_.sink || out_.record.choices.size() == choice);  // the record holds every commit so far
     for (std::size_t i = from; i < to; ++i) {
-        Commit& c = commits_[i - from];
+        Commit& c = commits_[i];
         c.first_piece = pieces;
         c.first_release = released;
         c.choice = int(choice++);
@@ -148,7 +154,8 @@ void Simulation::lay_out(std::size_t from, std::size_t to) {
     run_ids_.resize(pieces);
     for (std::size_t j = 0; j < pieces; ++j)
         run_ids_[j] = j < reused ? unused_[unused_.size() - 1 - j] : int(pieces_.size() + (j - reused));
-    for (Commit& c : commits_) c.clip_id = run_ids_[c.first_piece];  // its first piece: the clip taken
+    for (std::size_t i = from; i < to; ++i)  // its first piece: the clip taken
+        commits_[i].clip_id = run_ids_[commits_[i].first_piece];
     unused_.resize(unused_.size() - reused);
     pieces_.resize(pieces_.size() + (pieces - reused));
     run_pending_ = pending_.size();

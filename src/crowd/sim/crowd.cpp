@@ -104,10 +104,11 @@ void Simulation::gather(std::size_t n) {
 }
 
 // What the commit loop reads of position i's evaluation, by position (the slots lie apart): whether it
-// reroutes others, and the bounds of what it queried.
+// reroutes others, the bounds of what it queried, and what its commit adds and releases.
 void Simulation::outline(std::size_t i) {
     reroutes_[i] = !slots_[i].reroutes().empty();
     bounds_[i] = slots_[i].queried_bounds();
+    count_commit(i, commits_[i]);
 }
 
 // Whether the evaluation at position i is still the one the state now gives: no plan committed since
@@ -161,6 +162,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     touched_.resize(n);
     reroutes_.resize(n);
     bounds_.resize(n);
+    commits_.resize(n);
     pool_.for_each(
         n,
         [&](std::size_t i, int) {

@@ -69,7 +69,7 @@ private:
     void count_commit(std::size_t i, Commit& out) const;
     void lay_out(std::size_t from, std::size_t to);
     void apply_commit(std::size_t i, Commit& at, CrowdSummary& tally);
-    void list_commits(std::size_t part, std::size_t parts);
+    void list_commits(std::size_t from, std::size_t to, std::size_t part, std::size_t parts);
     void finish_commit(std::size_t i, const Commit& at);
     int place_piece(Piece piece, std::size_t j);
     void reserve(int agent, int choice, const Plan& plan, Commit& at);
@@ -114,7 +114,7 @@ private:
     std::vector<std::size_t> round_;                   // scratch: the positions evaluated again together
     BatchGrid moved_;  // boxes of the current batch's plans chosen again on re-evaluation, once committed
     std::vector<SpaceTimeBox> boxes_;    // scratch: one choice point's boxes
-    std::vector<Commit> commits_;        // the run being committed, by position from its first
+    std::vector<Commit> commits_;        // by batch position: what each commit adds and where it goes
     std::vector<int> run_ids_;           // the ids its pieces take, in commit order
     std::size_t run_pending_ = 0;        // where its pieces start in pending_
     std::int64_t run_seq_ = 0;           // the Piece::seq of its first piece
