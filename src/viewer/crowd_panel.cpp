@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include <imgui.h>
@@ -102,7 +103,9 @@ void choice_list(State& s, Ui& ui) {
     const float height = v.choice < 0 ? room
                                       : std::min(list_height(float(choices.size())),
                                                  std::max(list_height(kLeastRows), kChoiceShare * room));
-    ImGui::BeginChild("choices", ImVec2(0, std::max(height, list_height(kLeastRows))), true);
+    // A row wider than the panel scrolls sideways, and hovering it shows it whole.
+    ImGui::BeginChild("choices", ImVec2(0, std::max(height, list_height(kLeastRows))), true,
+                      ImGuiWindowFlags_HorizontalScrollbar);
     for (const crowd::ChoiceSummary& listed_choice : choices) {
         const crowd::ChoicePoint& c = listed_choice.point;
         const int k = int(listed_choice.row);
@@ -116,6 +119,7 @@ void choice_list(State& s, Ui& ui) {
             select(s, ui, v.agent, v.choice == k ? -1 : k);
             if (v.choice >= 0) s.scene.cursor = double(c.frame) * r.dt;
         }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(label, std::strcspn(label, "#")).c_str());
     }
     ImGui::EndChild();
 }
