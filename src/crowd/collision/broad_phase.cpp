@@ -122,24 +122,25 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
     // id may be removed and inserted again in one update; an inserted id still held leaves first too.
     constexpr std::size_t kGrain = 64;
     const std::size_t nr = removed.size();
+    // A few items are not worth waking the pool for: they go on the calling thread (the crowd's updates
+    // between two choice points it evaluates again are often a few hundred items).
+    const bool few = nr + inserted.size() < kFewItems;
+    const auto each = [&](std::size_t n, auto&& f) {
+        if (!few) return pool.for_each(n, f, kGrain);
+        for (std::size_t k = 0; k < n; ++k) f(k, 0);
+    };
     unplacing_.resize(nr + inserted.size());
     placing_.resize(inserted.size());
-    pool.for_each(
-        nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); }, kGrain);
-    pool.for_each(
-        inserted.size(),
-        [&](std::size_t k, int) {
-            unplacing_[nr + k] = unplace(inserted[k].id);
-            placing_[k] = place(inserted[k]);
-        },
-        kGrain);
+    each(nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); });
+    each(inserted.size(), [&](std::size_t k, int) {
+        unplacing_[nr + k] = unplace(inserted[k].id);
+        placing_[k] = place(inserted[k]);
+    });
     count(unplacing_, -1);
     count(placing_, +1);
     update_hashed();
-    // Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item;
-    // a few items not worth waking the pool). A cell's order does not matter (queries sort or order their
-    // answers).
-    const bool few = unplacing_.size() + placing_.size() < kGrain;
+    // Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item).
+    // A cell's order does not matter (queries sort or order their answers).
     const std::int64_t bands = pool.size() > 1 && !few ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
     pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;

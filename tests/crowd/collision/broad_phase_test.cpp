@@ -146,10 +146,10 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
         bp.expire(frame);
         for (std::size_t i = 0; i < held.size(); ++i) held[i] = held[i] && boxes[i].f1 > frame;
         // Removals one by one, or with the batch's insertions (distinct ids, some not held). Every tenth
-        // frame a large batch, which the pool's workers share.
+        // frame a large batch, often over BroadPhase::kFewItems, which the pool's workers share.
         const bool large = frame % 10 == 0;
         std::vector<int> gone;
-        for (int k = int(rng() % (large ? 90 : 6)); k > 0 && !boxes.empty(); --k) {
+        for (int k = int(rng() % (large ? 400 : 6)); k > 0 && !boxes.empty(); --k) {
             const int id = int(rng() % boxes.size());
             if (std::find(gone.begin(), gone.end(), id) != gone.end()) continue;
             if (rng() % 2)
@@ -159,7 +159,7 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
             held[std::size_t(id)] = 0;
         }
         std::vector<BroadPhase::Insertion> batch;
-        for (int k = int(rng() % (large ? 200 : 12)); k > 0; --k) {
+        for (int k = int(rng() % (large ? 800 : 12)); k > 0; --k) {
             const int id = int(boxes.size());
             boxes.push_back(random_box(frame));
             owners.push_back(int(rng() % 6));

@@ -43,6 +43,9 @@ struct SpaceTimeBox {
 class BroadPhase {
 public:
     static constexpr std::int64_t kMaxFlatCells = std::int64_t(1) << 20;
+    /// update() of fewer items (removed and inserted together) runs on the calling thread: waking the
+    /// pool would cost more than the items do. Its outcome is the same either way.
+    static constexpr std::size_t kFewItems = 256;
 
     /// `cell`: side of a grid cell, metres. Throws std::invalid_argument unless cell > 0.
     explicit BroadPhase(double cell = 4.0);
