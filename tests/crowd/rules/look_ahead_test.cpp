@@ -113,6 +113,55 @@ TEST(LookAhead, ADeadEndRanksBehindItsBestFreeStep) {
     }
 }
 
+// A lower bound of the time to go (LookAhead::search's `bound`) changes how often to_go is computed, never
+// the search: the same steps tested, scores, sequences and learned times, to the bit, whether the budget
+// runs out or not and however loose the bound (a bound as loose as 0 estimates every step, as before).
+TEST(LookAhead, ABoundGivesTheSameSearchWithFewerEstimates) {
+    const MotionGraph& g = graph();
+    const std::vector<int> first = walking_candidates(g);
+    const Barrier b;
+    const Placement base{0, 0, 0, 0};
+    const auto free = [&](const SearchStep& s) { return b.free(s); };
+    int estimates = 0;
+    const LookAhead::ToGo to_go = [&](const Placement& p) { return ++estimates, b.seconds_to_go(p); };
+    const std::vector<LookAhead::ToGo> bounds{
+        [&](const Placement& p) { return 0.5 * b.seconds_to_go(p); },
+        [&](const Placement& p) { return b.seconds_to_go(p) - 1.0; },
+        [](const Placement&) { return 0.0; },
+    };
+    for (int budget : {40, 400}) {
+        const LookAheadLimits limits{3, budget, 2.0};
+        LookAhead eager, lazy;
+        estimates = 0;
+        const std::vector<double> want = eager.search(g, first, base, 0, limits, free, to_go);
+        const int eager_estimates = estimates;
+        std::vector<std::array<double, 3>> want_learned, got_learned;
+        eager.learned(want[0], want_learned);
+        for (std::size_t j = 0; j < bounds.size(); ++j) {
+            estimates = 0;
+            EXPECT_EQ(lazy.search(g, first, base, 0, limits, free, to_go, bounds[j]), want) << budget << " " << j;
+            EXPECT_LE(estimates, eager_estimates) << budget << " " << j;
+            if (j == 1) {
+                EXPECT_LT(estimates, eager_estimates) << "a close bound leaves steps unestimated";
+            }
+            EXPECT_EQ(lazy.tested(), eager.tested());
+            got_learned.clear();
+            lazy.learned(want[0], got_learned);
+            EXPECT_EQ(got_learned, want_learned);
+            for (int k = 0; k < int(first.size()); ++k) {
+                const std::vector<SearchStep> a = eager.sequence(k), c = lazy.sequence(k);
+                ASSERT_EQ(a.size(), c.size()) << k;
+                for (std::size_t i = 0; i < a.size(); ++i) {
+                    EXPECT_EQ(a[i].clip, c[i].clip);
+                    EXPECT_EQ(a[i].frame, c[i].frame);
+                    EXPECT_EQ(a[i].place.x, c[i].place.x);
+                    EXPECT_EQ(a[i].place.theta, c[i].place.theta);
+                }
+            }
+        }
+    }
+}
+
 TEST(LearnedCost, KeepsTheLargestPerCell) {
     LearnedCost c;
     EXPECT_EQ(c.at(1.1, -0.2), 0.0);
