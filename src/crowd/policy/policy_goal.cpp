@@ -8,11 +8,13 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "mobb/core/angle.h"
 #include "mobb/crowd/policy/policy.h"
 #include "policy/follow.h"
 #include "policy/nav_field.h"
+#include "policy/near_points.h"
 
 namespace mobb::crowd {
 
@@ -98,13 +100,13 @@ private:
     // where the neighbours it keeps away from will be (not those it follows), in the site's order.
     struct Around {
         const NavField* field = nullptr;
-        std::vector<std::array<double, 2>> kept_from;
+        NearPoints kept_from;
     };
     Around around(const ChoiceSite& site) const {
-        Around a{&fields_.at(*site.goal), {}};
+        std::vector<std::array<double, 2>> kept_from;
         for (const Neighbour& n : site.neighbours)
-            if (!goes_my_way(site, n)) a.kept_from.push_back(n.at);
-        return a;
+            if (!goes_my_way(site, n)) kept_from.push_back(n.at);
+        return {&fields_.at(*site.goal), NearPoints(std::move(kept_from), tuning_.goal.personal)};
     }
 
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
@@ -129,13 +131,14 @@ private:
         return crowded(a, end, distance / k.walking);
     }
 
-    // `t` plus the cost of ending `end` close to where the neighbours will be.
+    // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
     double crowded(const Around& a, const Placement& end, double t) const {
         const GoalTuning& k = tuning_.goal;
-        for (const auto& at : a.kept_from) {  // squared first: most are farther (and hypot is slow)
-            const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;
+        a.kept_from.near(end.x, end.y, [&](std::size_t i) {
+            const std::array<double, 2>& at = a.kept_from.points()[i];
+            const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
             if (d2 < k.personal * k.personal) t += k.crowding * (k.personal - std::sqrt(d2));
-        }
+        });
         return t;
     }
 
