@@ -50,12 +50,21 @@ void LookAhead::expand(const MotionGraph& graph, int node) {
     for (int next : clip.successors) push(graph, {next, at, frame}, m, node, n.first, n.depth + 1, n.elapsed);
 }
 
-// The candidate still searching (no sequence yet, nodes open) whose least open node comes first; -1: none.
-int LookAhead::least() const {
+// The candidate still searching (no sequence yet, nodes open) whose least open node comes first, and
+// into `second` the one whose comes next; -1: none.
+int LookAhead::least(int& second) const {
     int first = -1;
-    for (std::size_t k = 0; k < open_.size(); ++k)
-        if (best_[k] < 0 && !open_[k].empty() && (first < 0 || open_[std::size_t(first)].front() > open_[k].front()))
-            first = int(k);
+    second = -1;
+    const auto before = [&](std::size_t k, int other) {
+        return other < 0 || open_[std::size_t(other)].front() > open_[k].front();
+    };
+    for (std::size_t k = 0; k < open_.size(); ++k) {
+        if (best_[k] >= 0 || open_[k].empty()) continue;
+        if (before(k, first))
+            second = first, first = int(k);
+        else if (before(k, second))
+            second = int(k);
+    }
     return first;
 }
 
@@ -65,7 +74,8 @@ int LookAhead::least() const {
 // exact priority (priority() rises with the score), so an exact key at the top is the least exact
 // priority of all. The nodes of a candidate with its sequence are never read again.
 int LookAhead::pop() {
-    for (int k = least(); k >= 0; k = least()) {
+    int second = -1;
+    for (int k = least(second); k >= 0;) {
         std::vector<Open>& open = open_[std::size_t(k)];
         std::pop_heap(open.begin(), open.end(), std::greater<>{});
         const int i = open.back().node;
@@ -77,6 +87,7 @@ int LookAhead::pop() {
         score(node);
         open.back().priority = priority(node);
         std::push_heap(open.begin(), open.end(), std::greater<>{});
+        if (second >= 0 && open.front() > open_[std::size_t(second)].front()) k = least(second);  // else still k
     }
     return -1;
 }

@@ -85,7 +85,7 @@ private:
     void push(const MotionGraph& graph, const SearchStep& step, const Rigid2& m, int parent, int first, int depth,
               double elapsed);
     void expand(const MotionGraph& graph, int node);
-    int least() const;
+    int least(int& second) const;
     int pop();
     void settle(int first, const LookAheadLimits& limits);
     double open_score(std::size_t k);
