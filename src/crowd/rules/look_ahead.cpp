@@ -182,14 +182,14 @@ namespace {
 // leaders the agent follows (follow.h) beyond its first clip, when it wants to go `way` - its queries
 // counted for the choice point.
 bool step_free(const FollowTuning& follow, const CrowdState& s, const ChoiceBase& base, std::optional<double> way,
-               const SearchStep& step, ChoiceQueries& q) {
+               const SearchStep& step, ChoiceQueries& q, LeaderFacing& leader) {
     Piece piece;
     piece.agent = base.agent;
     piece.clip = frame_clip(s, step.clip, step.place, Rigid2::of(step.place), step.frame);
     const bool following = way && step.frame > base.frame;  // beyond the first clip
     const std::array<double, 2> from{base.place.x, base.place.y};
-    return q.piece_free(s, piece,
-                        [&](int, const Piece& other) { return following && walks_on(follow, s, *way, from, other); });
+    return q.piece_free(
+        s, piece, [&](int, const Piece& other) { return following && walks_on(follow, s, *way, from, other, leader); });
 }
 
 // The candidates of `io_order` by `score`, the lowest first; the order before breaks ties (io.ranked
@@ -211,7 +211,8 @@ void look_ahead(const LookAheadTuning& t, const FollowTuning& follow, const Crow
     const int horizon = s.policy.horizon(site);
     if (horizon <= 0 || !t.on) return;
     const LookAheadLimits limits{horizon, t.budget, t.dead_end, t.weight};
-    const auto free = [&](const SearchStep& step) { return step_free(follow, s, base, site.way, step, q); };
+    LeaderFacing leader;
+    const auto free = [&](const SearchStep& step) { return step_free(follow, s, base, site.way, step, q, leader); };
     const LearnedCost& learned = s.agents[std::size_t(base.agent)].learned;
     const Policy::Estimate estimate = s.policy.estimate(site);
     const auto to_go = [&](const Placement& end) {
