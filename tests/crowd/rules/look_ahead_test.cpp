@@ -8,6 +8,8 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <random>
 
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
@@ -172,6 +174,32 @@ TEST(LearnedCost, KeepsTheLargestPerCell) {
     EXPECT_EQ(c.at(1.1, 0.1), 0.0);   // the next cell in y
     c.raise(-700.3, 900.2, 7.0);
     EXPECT_EQ(c.at(-700.3, 900.2), 7.0);
+}
+
+// Thousands of cells, each raised several times, through the table's growth: the largest per cell, 0
+// where nothing was; and nothing after clear().
+TEST(LearnedCost, KeepsEveryCellThroughGrowth) {
+    LearnedCost c;
+    std::map<std::pair<int, int>, double> want;
+    std::mt19937_64 rng(5);
+    std::uniform_int_distribution<int> cell(-60, 60);
+    std::uniform_real_distribution<double> seconds(0, 100);
+    for (int k = 0; k < 20000; ++k) {
+        const int ix = cell(rng), iy = cell(rng);
+        const double s = seconds(rng);
+        c.raise((ix + 0.25) * LearnedCost::kCell, (iy + 0.75) * LearnedCost::kCell, s);
+        double& w = want[{ix, iy}];
+        w = std::max(w, s);
+    }
+    for (int ix = -61; ix <= 61; ++ix)
+        for (int iy = -61; iy <= 61; ++iy) {
+            const auto it = want.find({ix, iy});
+            ASSERT_EQ(c.at((ix + 0.5) * LearnedCost::kCell, (iy + 0.5) * LearnedCost::kCell),
+                      it == want.end() ? 0.0 : it->second)
+                << ix << ", " << iy;
+        }
+    c.clear();
+    EXPECT_EQ(c.at(0.25 * LearnedCost::kCell, 0.75 * LearnedCost::kCell), 0.0);
 }
 
 // A whole crowd: the twenty agents of a circle cross its centre. With the look-ahead they reach their
