@@ -13,7 +13,8 @@ namespace mobb::crowd {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-}
+constexpr int kNoNode = std::numeric_limits<int>::max();
+}  // namespace
 
 // Weighted A* (Pohl 1970): the time to go weighs more in the order of search than in the score, so the
 // search follows a sequence that gains ground to the horizon before widening. Rises with node.score for
@@ -37,6 +38,12 @@ void LookAhead::push(const MotionGraph& graph, const SearchStep& step, const Rig
     std::vector<Open>& open = open_[std::size_t(first)];
     open.push_back({priority(nodes_.back()), int(nodes_.size()) - 1});
     std::push_heap(open.begin(), open.end(), std::greater<>{});
+    top_[std::size_t(first)] = open.front();
+}
+
+// top_[k] after candidate k's open list changed or it found its sequence.
+void LookAhead::retop(std::size_t k) {
+    top_[k] = best_[k] < 0 && !open_[k].empty() ? open_[k].front() : Open{kInfinity, kNoNode};
 }
 
 // The successors of a free node, each placed where it leaves the agent, on the global frame grid.
@@ -55,11 +62,9 @@ void LookAhead::expand(const MotionGraph& graph, int node) {
 int LookAhead::least(int& second) const {
     int first = -1;
     second = -1;
-    const auto before = [&](std::size_t k, int other) {
-        return other < 0 || open_[std::size_t(other)].front() > open_[k].front();
-    };
-    for (std::size_t k = 0; k < open_.size(); ++k) {
-        if (best_[k] >= 0 || open_[k].empty()) continue;
+    const auto before = [&](std::size_t k, int other) { return other < 0 || top_[std::size_t(other)] > top_[k]; };
+    for (std::size_t k = 0; k < top_.size(); ++k) {
+        if (top_[k].node == kNoNode) continue;
         if (before(k, first))
             second = first, first = int(k);
         else if (before(k, second))
@@ -82,12 +87,14 @@ int LookAhead::pop() {
         Node& node = nodes_[std::size_t(i)];
         if (node.exact) {
             open.pop_back();
+            retop(std::size_t(k));
             return i;
         }
         score(node);
         open.back().priority = priority(node);
         std::push_heap(open.begin(), open.end(), std::greater<>{});
-        if (second >= 0 && open.front() > open_[std::size_t(second)].front()) k = least(second);  // else still k
+        retop(std::size_t(k));
+        if (second >= 0 && top_[std::size_t(k)] > top_[std::size_t(second)]) k = least(second);  // else still k
     }
     return -1;
 }
@@ -121,6 +128,7 @@ const std::vector<double>& LookAhead::search(const MotionGraph& graph, const std
     nodes_.clear();
     open_.resize(n);
     for (std::vector<Open>& open : open_) open.clear();
+    top_.assign(n, {kInfinity, kNoNode});
     score_.assign(n, kInfinity);
     best_.assign(n, -1);
     reached_.assign(n, kInfinity);
@@ -141,6 +149,7 @@ const std::vector<double>& LookAhead::search(const MotionGraph& graph, const std
         reached_[std::size_t(k)] = std::min(reached_[std::size_t(k)], node.score);
         if (node.depth >= limits.horizon) {
             best_[std::size_t(k)] = i;  // its sequence: the first to reach the horizon
+            retop(std::size_t(k));
             score_[std::size_t(k)] = node.score;
             continue;
         }

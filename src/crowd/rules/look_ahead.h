@@ -85,6 +85,7 @@ private:
     void push(const MotionGraph& graph, const SearchStep& step, const Rigid2& m, int parent, int first, int depth,
               double elapsed);
     void expand(const MotionGraph& graph, int node);
+    void retop(std::size_t k);
     int least(int& second) const;
     int pop();
     void settle(int first, const LookAheadLimits& limits);
@@ -97,6 +98,7 @@ private:
     const ToGo* bound_ = nullptr;  // during search(): null when nodes enter the open list by to_go
     std::vector<Node> nodes_;
     std::vector<std::vector<Open>> open_;  // per candidate: its open nodes, a heap (least first)
+    std::vector<Open> top_;                // per candidate still searching: its least open node (priority +inf: none)
     std::vector<double> score_;            // per candidate
     std::vector<int> best_;                // per candidate: node ending its best sequence (-1: none)
     std::vector<double> reached_;          // per candidate: the best score of its free nodes
