@@ -52,9 +52,10 @@ void Choice::order(const CrowdState& s) {
             base_.place.y + reach,
             base_.frame,
             base_.frame + std::int64_t(std::llround(s.options.tuning.goal.neighbours_ahead / s.graph.dt()))};
+        LeaderFacing leader;
         for (int id : queries_.pieces_near(s, around)) {
             const Piece& p = s.pieces[std::size_t(id)];
-            const std::optional<double> facing = leader_facing(s.options.tuning.follow, s, p.agent);
+            const std::optional<double> facing = leader(s.options.tuning.follow, s, p.agent);
             if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing});
             if (p.kind == Piece::Clip)
                 site.neighbours.push_back(

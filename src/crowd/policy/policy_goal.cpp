@@ -7,11 +7,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <utility>
 
 #include "mobb/core/angle.h"
 #include "mobb/crowd/policy/policy.h"
 #include "policy/follow.h"
 #include "policy/nav_field.h"
+#include "policy/near_points.h"
 
 namespace mobb::crowd {
 
@@ -40,6 +43,8 @@ public:
                 sway = std::max(sway, std::hypot(x.x - samples.front().x, x.y - samples.front().y));
         }
         stop_radius_ = radius_ - sway;
+        const GoalTuning& k = c.tuning.goal;
+        bounded_ = k.turning > 0 && k.crowding >= 0 && k.personal >= 0;  // the turn and crowding add no less than 0
         for (const auto& g : c.goals) fields_.try_emplace(g, grid_, g);  // one field per distinct goal, built once
     }
 
@@ -49,9 +54,11 @@ public:
     void order(const ChoiceSite& site, std::vector<int>& candidates) const override {
         if (!site.goal) return;
         const Rigid2 m = Rigid2::of(site.base);
+        const Around around_site = site.arrived ? Around{} : around(site);
         std::vector<std::pair<double, int>> scored;
         scored.reserve(candidates.size());
-        for (int c : candidates) scored.emplace_back(site.arrived ? stop_cost(site, m, c) : cost(site, m, c), c);
+        for (int c : candidates)
+            scored.emplace_back(site.arrived ? stop_cost(site, m, c) : cost(site, around_site, m, c), c);
         std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (std::size_t k = 0; k < scored.size(); ++k) candidates[k] = scored[k].second;
     }
@@ -63,8 +70,13 @@ public:
         return site.goal && !site.arrived && site.choices_waited < tuning_.goal.patience ? tuning_.goal.horizon : 0;
     }
 
-    double to_go(const ChoiceSite& site, const Placement& end) const override {
-        return seconds(fields_.at(*site.goal), end, site);
+    double to_go(const ChoiceSite& site, const Placement& end) const override { return seconds(around(site), end); }
+
+    Estimate estimate(const ChoiceSite& site) const override {
+        const auto a = std::make_shared<const Around>(around(site));
+        Estimate e{[this, a](const Placement& end) { return seconds(*a, end); }, {}};
+        if (bounded_) e.bound = [this, a](const Placement& end) { return seconds_bound(*a, end); };
+        return e;
     }
 
     std::optional<double> heading(const ChoiceSite& site) const override {
@@ -84,22 +96,49 @@ public:
     }
 
 private:
+    // What seconds() reads of a site, worked out once for the many ends it scores: the goal's field, and
+    // where the neighbours it keeps away from will be (not those it follows), in the site's order.
+    struct Around {
+        const NavField* field = nullptr;
+        NearPoints kept_from;
+    };
+    Around around(const ChoiceSite& site) const {
+        std::vector<std::array<double, 2>> kept_from;
+        for (const Neighbour& n : site.neighbours)
+            if (!goes_my_way(site, n)) kept_from.push_back(n.at);
+        return {&fields_.at(*site.goal), NearPoints(std::move(kept_from), tuning_.goal.personal)};
+    }
+
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
     // cost for ending close to where the neighbours will be. Within the stop radius, the path alone: the
     // agent stops there whichever way it faces and whoever stands near (else ending at the goal facing
     // away, or beside an agent standing at its own goal, would cost more than ending short of it, and an
     // agent could circle its goal for good).
-    double seconds(const NavField& field, const Placement& end, const ChoiceSite& site) const {
-        const double distance = field.distance(end.x, end.y);
+    double seconds(const Around& a, const Placement& end) const {
+        const double distance = a.field->distance(end.x, end.y);
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
-        const double turn = std::abs(wrap_angle(field.downhill(end.x, end.y) - end.theta));
-        double t = distance / k.walking + turn / k.turning;
-        for (const Neighbour& n : site.neighbours) {  // squared first: most are farther (and hypot is slow)
-            const double dx = end.x - n.at[0], dy = end.y - n.at[1], d2 = dx * dx + dy * dy;
-            if (d2 >= k.personal * k.personal || goes_my_way(site, n)) continue;
-            t += k.crowding * (k.personal - std::sqrt(d2));
-        }
+        const double turn = std::abs(wrap_angle(a.field->downhill(end.x, end.y) - end.theta));
+        return crowded(a, end, distance / k.walking + turn / k.turning);
+    }
+
+    // seconds() less the turn: no more than it, each term added being no less than 0 (bounded_), and
+    // without the slope's four distances and its atan2.
+    double seconds_bound(const Around& a, const Placement& end) const {
+        const double distance = a.field->distance(end.x, end.y);
+        const GoalTuning& k = tuning_.goal;
+        if (distance < stop_radius_) return distance / k.walking;
+        return crowded(a, end, distance / k.walking);
+    }
+
+    // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
+    double crowded(const Around& a, const Placement& end, double t) const {
+        const GoalTuning& k = tuning_.goal;
+        a.kept_from.near(end.x, end.y, [&](std::size_t i) {
+            const std::array<double, 2>& at = a.kept_from.points()[i];
+            const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
+            if (d2 < k.personal * k.personal) t += k.crowding * (k.personal - std::sqrt(d2));
+        });
         return t;
     }
 
@@ -114,12 +153,12 @@ private:
     // in place, which moves it out of the way of the agents it waits for: two agents meeting head-on in a
     // door each step aside or back rather than turn on the spot in front of the other
     // (bench/results/log.md, "Following").
-    double cost(const ChoiceSite& site, const Rigid2& m, int c) const {
+    double cost(const ChoiceSite& site, const Around& a, const Rigid2& m, int c) const {
         const double idle = kinds_[std::size_t(c)] == ClipKind::Idle ? 1e12 : 0.0;
         if (site.choices_waited >= tuning_.goal.patience)
             return idle + (kinds_[std::size_t(c)] == ClipKind::InPlace ? 1e6 : 0.0);
         const Placement end = graph_.next(site.base, m, c);
-        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(fields_.at(*site.goal), end, site);
+        return idle + graph_.clips[std::size_t(c)].path.duration() + seconds(a, end);
     }
 
     // At the goal: standing idle first, then turning in place, then the clips that end nearest to it.
@@ -136,6 +175,7 @@ private:
     std::vector<ClipKind> kinds_;
     double radius_;
     double stop_radius_;  // metres: radius_ less the idle clips' sway
+    bool bounded_;        // seconds_bound() is a lower bound of seconds()
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
 };

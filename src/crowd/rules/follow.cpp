@@ -19,9 +19,9 @@ std::optional<double> leader_facing(const FollowTuning& t, const CrowdState& s, 
 }
 
 bool walks_on(const FollowTuning& t, const CrowdState& s, double way, const std::array<double, 2>& from,
-              const Piece& other) {
+              const Piece& other, LeaderFacing& leader) {
     if (other.index == 0) return false;
-    const std::optional<double> facing = leader_facing(t, s, other.agent);
+    const std::optional<double> facing = leader(t, s, other.agent);
     if (!facing) return false;
     const SpaceTimeBox b = box_of(other);
     return follows(way, from, {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}, *facing, t.angle);

@@ -21,10 +21,29 @@ namespace mobb::crowd {
 /// (it is about to), or has played no clip yet.
 std::optional<double> leader_facing(const FollowTuning& t, const CrowdState& s, int agent);
 
+/// leader_facing() keeping the last agent's answer: the pieces a query finds come in runs of one agent's
+/// (by seq), so a choice point works it out once a run rather than once a piece. For one state only.
+class LeaderFacing {
+public:
+    std::optional<double> operator()(const FollowTuning& t, const CrowdState& s, int agent) {
+        if (agent != agent_) agent_ = agent, facing_ = leader_facing(t, s, agent);
+        return facing_;
+    }
+
+private:
+    int agent_ = -1;
+    std::optional<double> facing_;
+};
+
 /// Whether another agent's piece is a reservation that an agent at `from` wanting to go `way` (radians)
 /// may plan past: one of a leader it follows (leader_facing, follows() within `angle`), and not the clip
 /// that leader plays, which is certain.
 bool walks_on(const FollowTuning& t, const CrowdState& s, double way, const std::array<double, 2>& from,
-              const Piece& other);
+              const Piece& other, LeaderFacing& facing);
+inline bool walks_on(const FollowTuning& t, const CrowdState& s, double way, const std::array<double, 2>& from,
+                     const Piece& other) {
+    LeaderFacing facing;
+    return walks_on(t, s, way, from, other, facing);
+}
 
 }  // namespace mobb::crowd

@@ -13,7 +13,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -50,10 +49,12 @@ public:
     /// score per candidate (seconds, lower is better): its sequence's duration plus to_go at its end - the
     /// first found to the horizon, all of its clips free; without one, dead_end more than its best open
     /// estimate (the budget ran out) or than its best free clip (every way on was refused); +infinity
-    /// for a first clip refused itself.
+    /// for a first clip refused itself. `bound`, when given, is a cheaper lower bound of to_go (never
+    /// more): a step enters the open list by it and gets to_go only if it comes near the top - the same
+    /// search, scores and sequences, with to_go computed for a fraction of the steps.
     const std::vector<double>& search(const MotionGraph& graph, const std::vector<int>& first, const Placement& base,
                                       std::int64_t frame, const LookAheadLimits& limits, const Free& free,
-                                      const ToGo& to_go);
+                                      const ToGo& to_go, const ToGo& bound = {});
 
     /// The best sequence found through candidate k (its first clip included; empty when none was free).
     std::vector<SearchStep> sequence(int k) const;
@@ -71,8 +72,9 @@ private:
         int first = 0;    ///< the candidate it descends from
         int depth = 1;
         double elapsed = 0;  ///< seconds from the choice point to the end of this clip
-        double score = 0;    ///< elapsed + to_go(end)
+        double score = 0;    ///< elapsed + to_go(end); elapsed + bound(end) until `exact`
         Placement end;       ///< where the clip leaves the agent
+        bool exact = true;
     };
     struct Open {
         double priority;
@@ -80,19 +82,27 @@ private:
         bool operator>(const Open& o) const { return priority != o.priority ? priority > o.priority : node > o.node; }
     };
 
-    void push(const MotionGraph& graph, const SearchStep& step, int parent, int first, int depth, double elapsed,
-              const ToGo& to_go);
-    void expand(const MotionGraph& graph, int node, const ToGo& to_go);
+    void push(const MotionGraph& graph, const SearchStep& step, const Rigid2& m, int parent, int first, int depth,
+              double elapsed);
+    void expand(const MotionGraph& graph, int node);
+    void retop(std::size_t k);
+    int least(int& second) const;
+    int pop();
     void settle(int first, const LookAheadLimits& limits);
+    double open_score(std::size_t k);
+    void score(Node& node) const;
+    double priority(const Node& node) const;
 
     LookAheadLimits limits_;
+    const ToGo* to_go_ = nullptr;  // during search()
+    const ToGo* bound_ = nullptr;  // during search(): null when nodes enter the open list by to_go
     std::vector<Node> nodes_;
-    std::priority_queue<Open, std::vector<Open>, std::greater<>> open_;
-    std::vector<double> score_;    // per candidate
-    std::vector<int> best_;        // per candidate: node ending its best sequence (-1: none)
-    std::vector<int> pending_;     // per candidate: its nodes still open
-    std::vector<double> reached_;  // per candidate: the best score of its free nodes
-    std::vector<int> expanded_;    // free nodes whose successors were opened
+    std::vector<std::vector<Open>> open_;  // per candidate: its open nodes, a heap (least first)
+    std::vector<Open> top_;                // per candidate still searching: its least open node (priority +inf: none)
+    std::vector<double> score_;            // per candidate
+    std::vector<int> best_;                // per candidate: node ending its best sequence (-1: none)
+    std::vector<double> reached_;          // per candidate: the best score of its free nodes
+    std::vector<int> expanded_;            // free nodes whose successors were opened
     int tested_ = 0;
 };
 

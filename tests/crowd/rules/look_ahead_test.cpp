@@ -8,6 +8,8 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <random>
 
 #include "committed_graph.h"
 #include "mobb/crowd/metrics/metrics.h"
@@ -113,6 +115,55 @@ TEST(LookAhead, ADeadEndRanksBehindItsBestFreeStep) {
     }
 }
 
+// A lower bound of the time to go (LookAhead::search's `bound`) changes how often to_go is computed, never
+// the search: the same steps tested, scores, sequences and learned times, to the bit, whether the budget
+// runs out or not and however loose the bound (a bound as loose as 0 estimates every step, as before).
+TEST(LookAhead, ABoundGivesTheSameSearchWithFewerEstimates) {
+    const MotionGraph& g = graph();
+    const std::vector<int> first = walking_candidates(g);
+    const Barrier b;
+    const Placement base{0, 0, 0, 0};
+    const auto free = [&](const SearchStep& s) { return b.free(s); };
+    int estimates = 0;
+    const LookAhead::ToGo to_go = [&](const Placement& p) { return ++estimates, b.seconds_to_go(p); };
+    const std::vector<LookAhead::ToGo> bounds{
+        [&](const Placement& p) { return 0.5 * b.seconds_to_go(p); },
+        [&](const Placement& p) { return b.seconds_to_go(p) - 1.0; },
+        [](const Placement&) { return 0.0; },
+    };
+    for (int budget : {40, 400}) {
+        const LookAheadLimits limits{3, budget, 2.0};
+        LookAhead eager, lazy;
+        estimates = 0;
+        const std::vector<double> want = eager.search(g, first, base, 0, limits, free, to_go);
+        const int eager_estimates = estimates;
+        std::vector<std::array<double, 3>> want_learned, got_learned;
+        eager.learned(want[0], want_learned);
+        for (std::size_t j = 0; j < bounds.size(); ++j) {
+            estimates = 0;
+            EXPECT_EQ(lazy.search(g, first, base, 0, limits, free, to_go, bounds[j]), want) << budget << " " << j;
+            EXPECT_LE(estimates, eager_estimates) << budget << " " << j;
+            if (j == 1) {
+                EXPECT_LT(estimates, eager_estimates) << "a close bound leaves steps unestimated";
+            }
+            EXPECT_EQ(lazy.tested(), eager.tested());
+            got_learned.clear();
+            lazy.learned(want[0], got_learned);
+            EXPECT_EQ(got_learned, want_learned);
+            for (int k = 0; k < int(first.size()); ++k) {
+                const std::vector<SearchStep> a = eager.sequence(k), c = lazy.sequence(k);
+                ASSERT_EQ(a.size(), c.size()) << k;
+                for (std::size_t i = 0; i < a.size(); ++i) {
+                    EXPECT_EQ(a[i].clip, c[i].clip);
+                    EXPECT_EQ(a[i].frame, c[i].frame);
+                    EXPECT_EQ(a[i].place.x, c[i].place.x);
+                    EXPECT_EQ(a[i].place.theta, c[i].place.theta);
+                }
+            }
+        }
+    }
+}
+
 TEST(LearnedCost, KeepsTheLargestPerCell) {
     LearnedCost c;
     EXPECT_EQ(c.at(1.1, -0.2), 0.0);
@@ -123,6 +174,32 @@ TEST(LearnedCost, KeepsTheLargestPerCell) {
     EXPECT_EQ(c.at(1.1, 0.1), 0.0);   // the next cell in y
     c.raise(-700.3, 900.2, 7.0);
     EXPECT_EQ(c.at(-700.3, 900.2), 7.0);
+}
+
+// Thousands of cells, each raised several times, through the table's growth: the largest per cell, 0
+// where nothing was; and nothing after clear().
+TEST(LearnedCost, KeepsEveryCellThroughGrowth) {
+    LearnedCost c;
+    std::map<std::pair<int, int>, double> want;
+    std::mt19937_64 rng(5);
+    std::uniform_int_distribution<int> cell(-60, 60);
+    std::uniform_real_distribution<double> seconds(0, 100);
+    for (int k = 0; k < 20000; ++k) {
+        const int ix = cell(rng), iy = cell(rng);
+        const double s = seconds(rng);
+        c.raise((ix + 0.25) * LearnedCost::kCell, (iy + 0.75) * LearnedCost::kCell, s);
+        double& w = want[{ix, iy}];
+        w = std::max(w, s);
+    }
+    for (int ix = -61; ix <= 61; ++ix)
+        for (int iy = -61; iy <= 61; ++iy) {
+            const auto it = want.find({ix, iy});
+            ASSERT_EQ(c.at((ix + 0.5) * LearnedCost::kCell, (iy + 0.5) * LearnedCost::kCell),
+                      it == want.end() ? 0.0 : it->second)
+                << ix << ", " << iy;
+        }
+    c.clear();
+    EXPECT_EQ(c.at(0.25 * LearnedCost::kCell, 0.75 * LearnedCost::kCell), 0.0);
 }
 
 // A whole crowd: the twenty agents of a circle cross its centre. With the look-ahead they reach their

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -83,6 +84,16 @@ public:
     virtual std::optional<double> heading(const ChoiceSite&) const { return std::nullopt; }
     /// The estimated seconds from `end` (where a searched sequence leaves the agent) to what it seeks.
     virtual double to_go(const ChoiceSite&, const Placement& /*end*/) const { return 0; }
+    /// to_go() at one site as a function of the end alone, with what it reads of the site worked out
+    /// once for the many ends a search scores, and a lower bound of it (never more) that is cheaper.
+    struct Estimate {
+        std::function<double(const Placement&)> to_go;
+        std::function<double(const Placement&)> bound;  ///< empty: none cheaper than to_go
+    };
+    /// By default to_go() itself, without a bound. `site` must outlive the estimate.
+    virtual Estimate estimate(const ChoiceSite& site) const {
+        return {[this, &site](const Placement& end) { return to_go(site, end); }, {}};
+    }
     /// An agent stopped for good at (x, y), holding a disk of radius r: the others plan around it. Called
     /// in commit order, never while choice points are evaluated.
     virtual void settled(double /*x*/, double /*y*/, double /*r*/) {}
