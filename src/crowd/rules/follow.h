@@ -37,9 +37,9 @@ private:
 
 /// Whether another agent's piece is a reservation that an agent at `from` wanting to go `way` (radians)
 /// may plan past: one of a leader it follows (leader_facing, follows() within `angle`), and not the clip
-/// that leader plays, which is certain.
+/// that leader plays, which is certain. `leader` keeps the facing of the last agent asked about.
 bool walks_on(const FollowTuning& t, const CrowdState& s, double way, const std::array<double, 2>& from,
-              const Piece& other, LeaderFacing& facing);
+              const Piece& other, LeaderFacing& leader);
 inline bool walks_on(const FollowTuning& t, const CrowdState& s, double way, const std::array<double, 2>& from,
                      const Piece& other) {
     LeaderFacing facing;
