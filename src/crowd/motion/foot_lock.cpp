@@ -240,11 +240,19 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
         if (then == Plant::Free) continue;
         const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
         if (!h) return false;
-        const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
-        target = within_reach(free.ankle + w * (h->target - h->ankle), free);
+        target = within_reach(free.ankle + release_shift(h->target - h->ankle, d, release, free), free);
         return true;
     }
     return false;
+}
+
+// The correction d frames after a contact's last frame: smoothstep down to 0 over the release, its
+// horizontal part whole while the toe is still on the ground (FootLock::release_height).
+glm::dvec3 CrowdPoser::release_shift(const glm::dvec3& correction, int d, int release, const FootFree& free) const {
+    const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
+    glm::dvec3 out = w * correction;
+    if (free.toe.z < lock_.release_height) out.x = correction.x, out.y = correction.y;
+    return out;
 }
 
 void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet) {

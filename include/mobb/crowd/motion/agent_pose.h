@@ -215,6 +215,7 @@ private:
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const;
     glm::dvec3 within_reach(const glm::dvec3& target, const FootFree& q) const;
+    glm::dvec3 release_shift(const glm::dvec3& correction, int d, int release, const FootFree& free) const;
     bool ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target, double& dragged);
     void lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet);
 
