@@ -246,12 +246,18 @@ bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFre
     return false;
 }
 
-// The correction d frames after a contact's last frame: smoothstep down to 0 over the release, its
-// horizontal part whole while the toe is still on the ground (FootLock::release_height).
+// The correction d frames after a contact's last frame: smoothstep down to 0 over the release. While the
+// toe is still on the ground (FootLock::release_height) its horizontal part stays as long as what is left can
+// be gone by the release's end at FootLock::release_speed, and leaves at that speed after.
 glm::dvec3 CrowdPoser::release_shift(const glm::dvec3& correction, int d, int release, const FootFree& free) const {
     const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
     glm::dvec3 out = w * correction;
-    if (free.toe.z < lock_.release_height) out.x = correction.x, out.y = correction.y;
+    const double ground = std::hypot(correction.x, correction.y);
+    if (free.toe.z >= lock_.release_height || !(ground > 0)) return out;
+    const double in_time = double(release + 1 - d) * lock_.release_speed * record_.dt / ground;
+    const double kept = std::max(w, std::min(1.0, in_time));
+    out.x = kept * correction.x;
+    out.y = kept * correction.y;
     return out;
 }
 
