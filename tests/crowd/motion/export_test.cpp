@@ -271,7 +271,8 @@ TEST(FootLock, ALetGoFootKeepsItsCorrectionWhileItsToeIsDown) {
                         continue;
                     }
                     const glm::dvec2 d(pose[std::size_t(leg.ankle)] - unlocked[std::size_t(leg.ankle)]);
-                    if (was_held && feet.held[f] && feet.hold[f] == Plant::Free && unlocked[std::size_t(leg.toe)].z < 0.05) {
+                    if (was_held && feet.held[f] && feet.hold[f] == Plant::Free &&
+                        unlocked[std::size_t(leg.toe)].z < 0.05) {
                         ++steps;
                         change += glm::length(d - before);
                     }
