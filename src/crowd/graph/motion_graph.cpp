@@ -37,12 +37,6 @@ const char* to_string(ClipKind kind) {
 
 Placement MotionGraph::next(const Placement& p, int clip) const { return next(p, Rigid2::of(p), clip); }
 
-Placement MotionGraph::next(const Placement& p, const Rigid2& m, int clip) const {
-    const GraphClip& c = clips[std::size_t(clip)];
-    return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y, p.theta + c.exit_heading,
-            p.t0 + double(c.path.size()) * dt()};
-}
-
 io::Clip load_graph_source(const MotionGraph& g, int source) {
     const GraphSource& src = g.sources.at(std::size_t(source));
     // Frames dropped first, then resampled (LoadOptions applies them in that order), as the build did.

@@ -52,7 +52,7 @@ void NavGrid::block_disk(double x, double y, double r) {
 }
 
 NavField::NavField(const NavGrid& grid, std::array<double, 2> goal)
-    : x0_(grid.x0), y0_(grid.y0), cell_(grid.cell), nx_(grid.nx), ny_(grid.ny), goal_(goal) {
+    : x0_(grid.x0), y0_(grid.y0), cell_(grid.cell), nx_(grid.nx), ny_(grid.ny), nxd_(nx_), nyd_(ny_), goal_(goal) {
     value_.assign(std::size_t(nx_) * std::size_t(ny_), kUnreachable);
     parent_.assign(value_.size(), -1);
     cut_.assign(value_.size(), 0);
@@ -120,16 +120,6 @@ double NavField::downhill(double x, double y) const {
     const double e = distance(x + h, y), w = distance(x - h, y), n = distance(x, y + h), s = distance(x, y - h);
     if (std::max({e, w, n, s}) < kUnreachable && (e != w || n != s)) return std::atan2(s - n, w - e);
     return std::atan2(goal_[1] - y, goal_[0] - x);
-}
-
-double NavField::distance(double x, double y) const {
-    const double fx = (x - x0_) / cell_, fy = (y - y0_) / cell_;
-    if (fx < 0 || fy < 0 || fx >= nx_ || fy >= ny_) return kUnreachable;
-    const int ix = int(fx), iy = int(fy);
-    const double v = value_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)];
-    if (v >= kUnreachable) return kUnreachable;
-    const double dx = fx - (ix + 0.5), dy = fy - (iy + 0.5);
-    return v + planar_distance(dx, dy) * cell_;  // this runs for every clip a search scores
 }
 
 }  // namespace mobb::crowd

@@ -7,10 +7,10 @@
 namespace mobb::crowd {
 
 namespace {
-// Cells a hundredth wider than the reach: two points within it lie in the same or adjacent cells, the
-// rounding of their cell coordinates (about 1e-14 of a cell) notwithstanding.
+// Cells a hundredth wider than reach / kSplit: two points within reach lie at most kSplit cells apart along
+// each axis, the rounding of their cell coordinates (about 1e-14 of a cell) notwithstanding.
 constexpr double kWider = 1.01;
-constexpr int kMaxCells = 4096;  // beyond (points spread far, or a reach near 0): no grid
+constexpr int kMaxCells = 4096;  // cells as wide as reach; beyond (points spread far, or a reach near 0): no grid
 }  // namespace
 
 NearPoints::NearPoints(std::vector<std::array<double, 2>> points, double reach) : points_(std::move(points)) {
@@ -22,17 +22,24 @@ NearPoints::NearPoints(std::vector<std::array<double, 2>> points, double reach) 
         x0_ = std::min(x0_, p[0]), x1 = std::max(x1, p[0]);
         y0_ = std::min(y0_, p[1]), y1 = std::max(y1, p[1]);
     }
-    cell_ = kWider * reach;
+    cell_ = kWider * reach / kSplit;
     const double nx = std::floor((x1 - x0_) / cell_) + 1, ny = std::floor((y1 - y0_) / cell_) + 1;
-    if (!(nx * ny <= kMaxCells)) return;
-    nx_ = int(nx), ny_ = int(ny);
-    words_ = (points_.size() + 63) / 64;
-    bits_.assign(std::size_t(nx_ * ny_) * words_, 0);
+    if (!(nx * ny <= double(kMaxCells) * kSplit * kSplit)) return;
+    // Each point's bit in the block of every cell within kSplit of its own, the points' grid kSplit cells in
+    // from the block grid's edges.
+    const int bx = int(nx) + 2 * kSplit, by = int(ny) + 2 * kSplit;
+    const std::size_t words = (points_.size() + 63) / 64;
+    blocks_.assign(std::size_t(bx) * std::size_t(by) * words, 0);
     for (std::size_t i = 0; i < points_.size(); ++i) {
-        const int ix = std::min(int((points_[i][0] - x0_) / cell_), nx_ - 1);
-        const int iy = std::min(int((points_[i][1] - y0_) / cell_), ny_ - 1);
-        bits_[cell(ix, iy) * words_ + i / 64] |= std::uint64_t(1) << (i % 64);
+        const int ix = std::min(int((points_[i][0] - x0_) / cell_), int(nx) - 1);
+        const int iy = std::min(int((points_[i][1] - y0_) / cell_), int(ny) - 1);
+        const std::uint64_t bit = std::uint64_t(1) << (i % 64);
+        for (int jx = ix; jx <= ix + 2 * kSplit; ++jx) {
+            std::uint64_t* column = &blocks_[std::size_t(jx) * std::size_t(by) * words + i / 64];
+            for (int jy = iy; jy <= iy + 2 * kSplit; ++jy) column[std::size_t(jy) * words] |= bit;
+        }
     }
+    bx_ = bx, by_ = by, words_ = words;
 }
 
 }  // namespace mobb::crowd

@@ -45,6 +45,9 @@ public:
         stop_radius_ = radius_ - sway;
         const GoalTuning& k = c.tuning.goal;
         bounded_ = k.turning > 0 && k.crowding >= 0 && k.personal >= 0;  // the turn and crowding add no less than 0
+        // sqrt of a rounded square is the number itself for a number >= 0 whose square neither overflows nor
+        // underflows (binary floating point, rounding to nearest): tested rather than assumed of the tuning.
+        far_adds_zero_ = std::sqrt(k.personal * k.personal) == k.personal && std::isfinite(k.crowding);
         for (const auto& g : c.goals) fields_.try_emplace(g, grid_, g);  // one field per distinct goal, built once
     }
 
@@ -134,10 +137,22 @@ private:
     // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
     double crowded(const Around& a, const Placement& end, double t) const {
         const GoalTuning& k = tuning_.goal;
+        const double r2 = k.personal * k.personal;
+        if (!(far_adds_zero_ && t >= 0 && !std::signbit(t))) {
+            a.kept_from.near(end.x, end.y, [&](std::size_t i) {
+                const std::array<double, 2>& at = a.kept_from.points()[i];
+                const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
+                if (d2 < r2) t += k.crowding * (k.personal - std::sqrt(d2));
+            });
+            return t;
+        }
+        // Without a branch on the distance, which the listed points pass about half the time: a point no
+        // nearer than `personal` adds crowding * (personal - sqrt(personal^2)) = +-0 (far_adds_zero_), which
+        // leaves t >= +0 as it is.
         a.kept_from.near(end.x, end.y, [&](std::size_t i) {
             const std::array<double, 2>& at = a.kept_from.points()[i];
             const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
-            if (d2 < k.personal * k.personal) t += k.crowding * (k.personal - std::sqrt(d2));
+            t += k.crowding * (k.personal - std::sqrt(d2 < r2 ? d2 : r2));
         });
         return t;
     }
@@ -176,6 +191,7 @@ private:
     double radius_;
     double stop_radius_;  // metres: radius_ less the idle clips' sway
     bool bounded_;        // seconds_bound() is a lower bound of seconds()
+    bool far_adds_zero_;  // crowding * (personal - sqrt(personal^2)) is +-0: crowded() sums without a branch
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
 };

@@ -81,8 +81,13 @@ struct MotionGraph {
     /// Placement of a successor of `clip` placed at p: chained through its exit transform; starts at
     /// p.t0 + samples * dt (the caller may recompute t0 on the global frame grid).
     Placement next(const Placement& p, int clip) const;
-    /// The same with the placement's rotation evaluated once (m = Rigid2::of(p)), for many clips.
-    Placement next(const Placement& p, const Rigid2& m, int clip) const;
+    /// The same with the placement's rotation evaluated once (m = Rigid2::of(p)), for many clips. Inline:
+    /// the look-ahead places every clip it pushes with it.
+    Placement next(const Placement& p, const Rigid2& m, int clip) const {
+        const GraphClip& c = clips[std::size_t(clip)];
+        return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y,
+                p.theta + c.exit_heading, p.t0 + double(c.path.size()) * dt()};
+    }
 };
 
 struct GraphBuildOptions {
