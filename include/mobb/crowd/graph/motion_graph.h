@@ -85,8 +85,8 @@ struct MotionGraph {
     /// the look-ahead places every clip it pushes with it.
     Placement next(const Placement& p, const Rigid2& m, int clip) const {
         const GraphClip& c = clips[std::size_t(clip)];
-        return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y,
-                p.theta + c.exit_heading, p.t0 + double(c.path.size()) * dt()};
+        return {p.x + m.c * c.exit_x - m.s * c.exit_y, p.y + m.s * c.exit_x + m.c * c.exit_y, p.theta + c.exit_heading,
+                p.t0 + double(c.path.size()) * dt()};
     }
 };
 
