@@ -105,6 +105,8 @@ private:
         if (!hint.empty()) hint.erase(0, 1);
         if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))
             fail("FBX connections form a cycle through object " + std::to_string(*id));
+        if (fbx::impossible_array(bytes))
+            fail("an FBX array declares more values than the file's " + std::to_string(bytes.size()) + " bytes hold");
         const aiScene* scene = nullptr;
         std::string error;
         try {

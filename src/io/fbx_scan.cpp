@@ -180,6 +180,26 @@ std::optional<std::int64_t> connection_cycle(const std::string& bytes) {
     return find_cycle(edges);
 }
 
+std::optional<std::uint64_t> impossible_array(const std::string& bytes) {
+    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) return std::nullopt;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const char c = bytes[i];
+        if (c == ';') {  // a comment, to the end of the line
+            while (i < bytes.size() && bytes[i] != '\n') ++i;
+        } else if (c == '"') {  // a string
+            i = bytes.find('"', i + 1);
+            if (i == std::string::npos) break;
+        } else if (c == '*') {
+            std::uint64_t n = 0;
+            bool digits = false;  // capped at the file's size + 1: no overflow
+            for (std::size_t k = i + 1; k < bytes.size() && bytes[k] >= '0' && bytes[k] <= '9'; ++k, digits = true)
+                n = std::min<std::uint64_t>(n * 10 + std::uint64_t(bytes[k] - '0'), bytes.size() + 1);
+            if (digits && n > bytes.size()) return n;
+        }
+    }
+    return std::nullopt;
+}
+
 bool names_property(const std::string& bytes, const std::string& name) {
     if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) != 0)
         return bytes.find('"' + name + '"') != std::string::npos;

@@ -13,6 +13,12 @@ namespace mobb::io::fbx {
 /// than Assimp reads, never less); other bytes are left to Assimp's own checks.
 std::optional<std::int64_t> connection_cycle(const std::string& bytes);
 
+/// The length an ASCII FBX array declares (`*N` after a key) where it exceeds the file's size in bytes -
+/// each value takes at least one - or nothing. Assimp reserves the declared length before it reads a value:
+/// a 1.5 KB file declaring 77,777,777,773 key times asked for 622 GB (found by fuzz/fbx_fuzz in CI). Binary
+/// FBX arrays state their byte length, which Assimp checks against the file.
+std::optional<std::uint64_t> impossible_array(const std::string& bytes);
+
 /// True when the file names the property `name` (e.g. "UnitScaleFactor") as a whole string: quoted in
 /// ASCII FBX, a length-prefixed string property in binary FBX.
 bool names_property(const std::string& bytes, const std::string& name);

@@ -215,6 +215,18 @@ TEST_F(Fbx, MalformedFilesAreOneLineErrors) {
     const std::string junk_cycle = dir_.write("junk_cycle.fbx", junk);
     EXPECT_EQ(test::load_error([&] { load_clip(junk_cycle); }),
               junk_cycle + ": FBX connections form a cycle through object 1001");
+
+    // An array declaring more values than the file could hold: Assimp would reserve them all first (found
+    // by fuzz/fbx_fuzz in CI: 77,777,777,773 key times, 622 GB). A declared length the file holds loads.
+    std::string huge = test::ascii_fbx(walk({0, 1 / 30.0}, {0, 0.1}));
+    const std::size_t star = huge.find("KeyTime: *");
+    ASSERT_NE(star, std::string::npos);
+    const std::size_t digits = star + std::string("KeyTime: *").size();
+    huge.replace(digits, huge.find_first_not_of("0123456789", digits) - digits, "77777777773");
+    const std::string oversized = dir_.write("oversized.fbx", huge);
+    EXPECT_EQ(test::load_error([&] { load_clip(oversized); }),
+              oversized + ": an FBX array declares more values than the file's " + std::to_string(huge.size()) +
+                  " bytes hold");
 }
 
 // Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
