@@ -136,23 +136,24 @@ private:
 
     // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
     double crowded(const Around& a, const Placement& end, double t) const {
+        if (far_adds_zero_ && t >= 0 && !std::signbit(t)) return crowding_sum<true>(a, end, t);
+        return crowding_sum<false>(a, end, t);
+    }
+
+    // kBranchFree: without a branch on the distance, which the listed points pass about half the time. A
+    // point no nearer than `personal` then adds crowding * (personal - sqrt(personal^2)) = +-0
+    // (far_adds_zero_), which leaves t >= +0 as it is: the same sum as the branch.
+    template <bool kBranchFree>
+    double crowding_sum(const Around& a, const Placement& end, double t) const {
         const GoalTuning& k = tuning_.goal;
         const double r2 = k.personal * k.personal;
-        if (!(far_adds_zero_ && t >= 0 && !std::signbit(t))) {
-            a.kept_from.near(end.x, end.y, [&](std::size_t i) {
-                const std::array<double, 2>& at = a.kept_from.points()[i];
-                const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
-                if (d2 < r2) t += k.crowding * (k.personal - std::sqrt(d2));
-            });
-            return t;
-        }
-        // Without a branch on the distance, which the listed points pass about half the time: a point no
-        // nearer than `personal` adds crowding * (personal - sqrt(personal^2)) = +-0 (far_adds_zero_), which
-        // leaves t >= +0 as it is.
         a.kept_from.near(end.x, end.y, [&](std::size_t i) {
             const std::array<double, 2>& at = a.kept_from.points()[i];
             const double dx = end.x - at[0], dy = end.y - at[1], d2 = dx * dx + dy * dy;  // hypot is slow
-            t += k.crowding * (k.personal - std::sqrt(d2 < r2 ? d2 : r2));
+            if constexpr (kBranchFree)
+                t += k.crowding * (k.personal - std::sqrt(d2 < r2 ? d2 : r2));
+            else if (d2 < r2)
+                t += k.crowding * (k.personal - std::sqrt(d2));
         });
         return t;
     }
