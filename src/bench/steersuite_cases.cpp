@@ -45,6 +45,7 @@ CaseRow run_case(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, 
         row.error = e.what();
         return row;
     }
+    row.imported = true;
     row.notes = imported.notes;
     row.left_out = left_out_of(imported.notes);
     const crowd::Scenario& s = imported.scenario;
@@ -70,23 +71,34 @@ CaseRow run_case(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, 
     return row;
 }
 
+// A case is empty when it imports on every seed without an agent and left none out: a map alone.
+bool empty_run(const CaseRow& r) { return r.imported && r.agents == 0 && r.left_out == 0; }
+
 void count_cases(SteerSuiteTable& t) {
-    std::map<std::string, bool> passed;
+    std::map<std::string, bool> passed, empty;
     for (const CaseRow& r : t.rows) {
         const bool ok = r.error.empty() && r.verdict.passed;
         const auto [it, fresh] = passed.emplace(r.name, ok);
         if (!fresh) it->second = it->second && ok;
+        const auto [e, first] = empty.emplace(r.name, empty_run(r));
+        if (!first) e->second = e->second && empty_run(r);
     }
-    t.cases = int(passed.size());
-    for (const auto& [name, ok] : passed) t.cases_passed += ok;
+    for (const auto& [name, ok] : passed) {
+        if (empty.at(name)) {
+            t.empty.push_back(name);
+            continue;
+        }
+        ++t.cases;
+        t.cases_passed += ok;
+    }
     int imported = 0, contacts = 0;
-    for (const CaseRow& r : t.rows) imported += r.error.empty(), contacts += int(r.metrics.contacts);
-    t.targets.push_back(
-        at_least("runs that import and run", double(t.rows.size()), imported, "every file, every seed"));
+    for (const CaseRow& r : t.rows) imported += r.imported, contacts += int(r.metrics.contacts);
+    t.targets.push_back(at_least("runs whose file imports", double(t.rows.size()), imported, "every file, every seed"));
     t.targets.push_back(at_most("contact frames, every run", 0, contacts, "agent pairs x frames"));
     t.targets.push_back(at_least("% of the cases passing the judge on every seed", 90,
                                  t.cases ? 100.0 * t.cases_passed / t.cases : 0.0,
-                                 std::to_string(t.cases_passed) + " of " + std::to_string(t.cases)));
+                                 std::to_string(t.cases_passed) + " of " + std::to_string(t.cases) +
+                                     " with agents"));
     for (Target& g : t.targets) g.ratio = false;  // counts and shares
 }
 
@@ -125,7 +137,9 @@ std::string steersuite_markdown(const SteerSuiteTable& t) {
             << fixed(m.composite01, 1) << " | " << fixed(m.composite02, 1) << " | " << fixed(r.wall_seconds, 1) << " | "
             << v.reason << " |\n";
     }
-    out << "\n" << t.cases_passed << " of " << t.cases << " cases pass on every seed.\n\nTargets (issue 45):\n\n";
+    out << "\n" << t.cases_passed << " of " << t.cases << " cases pass on every seed.";
+    for (const std::string& name : t.empty) out << " " << name << " imports without an agent: nothing to judge.";
+    out << "\n\nTargets (issue 45):\n\n";
     for (const Target& g : t.targets) out << "- " << g.what << ": " << target_text(g) << " (" << g.detail << ")\n";
     return out.str();
 }
@@ -159,6 +173,7 @@ std::string steersuite_json(const SteerSuiteTable& t) {
     const J j = {{"workload", "steersuite"},
                  {"cases", t.cases},
                  {"cases_passed", t.cases_passed},
+                 {"cases_without_agents", t.empty},
                  {"rows", rows},
                  {"targets", targets}};
     return util::readable_json(j);

@@ -22,9 +22,10 @@ struct SteerSuiteOptions {
     int threads = 1;  ///< per run
 };
 
-/// One case run with one seed; a case that does not import has only `error`.
+/// One case run with one seed; a case that does not import, or imports without an agent, has only `error`.
 struct CaseRow {
     std::string name, error;
+    bool imported = false;  ///< the file imports (it may still hold no agent: a map alone)
     std::uint64_t seed = 0;
     int agents = 0;    ///< run
     int left_out = 0;  ///< agents of the file the import left out (each said in a note)
@@ -36,7 +37,10 @@ struct CaseRow {
 
 struct SteerSuiteTable {
     std::vector<CaseRow> rows;
-    int cases = 0, cases_passed = 0;  ///< a case passes when every seed's run does
+    /// Cases to judge: those that import with agents, or fail to import (a case passes when every seed's
+    /// run does). A file that imports without an agent (a map alone) has nothing to judge: in `empty`.
+    int cases = 0, cases_passed = 0;
+    std::vector<std::string> empty;
     std::vector<Target> targets;
 };
 

@@ -301,8 +301,8 @@ TEST(Bench, SerialShareInvertsAmdahl) {
 }
 
 // Two test cases written here in SteerSuite's schema: one agent walking 6 m to its goal (passes), and
-// one whose goal lies inside a closed box of obstacles (never reached), each with two seeds; and a
-// file that is not a test case.
+// one whose goal lies inside a closed box of obstacles (never reached), each with two seeds; a file
+// that is not a test case; and a map without agents, which imports with nothing to judge.
 TEST(Bench, SteerSuiteCasesJudged) {
     const std::string dir = temp_file("steersuite_cases");
     std::filesystem::create_directories(dir);
@@ -329,12 +329,13 @@ TEST(Bench, SteerSuiteCasesJudged) {
     write("b_boxed.xml",
           agent(6, 6) + box(4, 8, 3.5, 4) + box(4, 8, 8, 8.5) + box(3.5, 4, 3.5, 8.5) + box(8, 8.5, 3.5, 8.5));
     std::ofstream(dir + "/c_broken.xml") << "<SteerBenchTestCase>\n";
+    write("d_map.xml", box(4, 8, 3.5, 4));
     SteerSuiteOptions o;
     o.graph = kGraph;
-    o.cases = {dir + "/a_open.xml", dir + "/b_boxed.xml", dir + "/c_broken.xml"};
+    o.cases = {dir + "/a_open.xml", dir + "/b_boxed.xml", dir + "/c_broken.xml", dir + "/d_map.xml"};
     o.seeds = {1, 2};
     const SteerSuiteTable t = run_steersuite(o);
-    ASSERT_EQ(t.rows.size(), 6u);
+    ASSERT_EQ(t.rows.size(), 8u);
     for (int k : {0, 1}) {
         EXPECT_TRUE(t.rows[std::size_t(k)].verdict.passed) << t.rows[std::size_t(k)].verdict.reason;
         EXPECT_EQ(t.rows[std::size_t(k)].agents, 1);
@@ -344,13 +345,24 @@ TEST(Bench, SteerSuiteCasesJudged) {
         EXPECT_EQ(t.rows[std::size_t(k)].verdict.never, 1);
         EXPECT_EQ(t.rows[std::size_t(k)].metrics.contacts, 0u);
     }
-    for (int k : {4, 5}) EXPECT_NE(t.rows[std::size_t(k)].error.find("c_broken.xml"), std::string::npos);
-    EXPECT_EQ(t.cases, 3);
+    for (int k : {4, 5}) {
+        EXPECT_NE(t.rows[std::size_t(k)].error.find("c_broken.xml"), std::string::npos);
+        EXPECT_FALSE(t.rows[std::size_t(k)].imported);
+    }
+    for (int k : {6, 7}) {
+        EXPECT_TRUE(t.rows[std::size_t(k)].imported);
+        EXPECT_EQ(t.rows[std::size_t(k)].agents, 0);
+    }
+    EXPECT_EQ(t.cases, 3);  // the map has nothing to judge; the broken file fails
     EXPECT_EQ(t.cases_passed, 1);
+    EXPECT_EQ(t.empty, std::vector<std::string>{"d_map"});
+    EXPECT_EQ(t.targets.front().measured, 6);  // of 8 runs, the broken file's two do not import
     const nlohmann::json j = nlohmann::json::parse(steersuite_json(t));
     EXPECT_EQ(j["cases_passed"], 1);
+    EXPECT_EQ(j["cases_without_agents"][0], "d_map");
     EXPECT_EQ(j["rows"][2]["judge"]["never"], 1);
-    EXPECT_NE(steersuite_markdown(t).find("1 of 3 cases pass on every seed"), std::string::npos);
+    const std::string md = steersuite_markdown(t);
+    EXPECT_NE(md.find("1 of 3 cases pass on every seed. d_map imports without an agent"), std::string::npos);
     std::filesystem::remove_all(dir);
 }
 
