@@ -156,7 +156,7 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
 }
 
 // The held count and the counts by end frame, for items that left (-1) or entered (+1) the table.
-void BroadPhase::count(const std::vector<Placing>& items, int delta) {
+void BroadPhase::count(const Placings& items, int delta) {
     for (const Placing& p : items) {
         if (p.ix0 > p.ix1) continue;  // none
         live_ += std::size_t(delta);

@@ -108,6 +108,19 @@ private:
         Entry e;
         std::int64_t ix0 = 0, iy0 = 0, ix1 = -1, iy1 = -1;
     };
+    // Scratch of update() that grows and never shrinks: its first `size` items are the update's. (A vector
+    // resized to each update's count zeroes what it regrows, on the calling thread: a serial cost.)
+    struct Placings {
+        std::vector<Placing> buffer;
+        std::size_t size = 0;
+        void resize(std::size_t n) {
+            if (buffer.size() < n) buffer.resize(n);
+            size = n;
+        }
+        Placing& operator[](std::size_t k) { return buffer[k]; }
+        const Placing* begin() const { return buffer.data(); }
+        const Placing* end() const { return buffer.data() + size; }
+    };
     Entry entry(const SpaceTimeBox& box, int id, int owner) const {
         return {box, id, owner, std::int32_t(index_x(box.x0)), std::int32_t(index_y(box.y0))};
     }
@@ -126,7 +139,7 @@ private:
     bool enroll(int id, int owner, const SpaceTimeBox& box);
     Placing unplace(int id);
     Placing place(const Insertion& in);
-    void count(const std::vector<Placing>& items, int delta);
+    void count(const Placings& items, int delta);
     void update_hashed();
     Placing placing(const Entry& e) const {
         return {e, index_x(e.box.x0), index_y(e.box.y0), index_x(e.box.x1), index_y(e.box.y1)};
@@ -146,8 +159,8 @@ private:
     std::vector<Cell> flat_;
     std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;
-    std::vector<Placing> placing_;    // scratch of update(): the items inserted
-    std::vector<Placing> unplacing_;  // scratch of update(): the items removed
+    Placings placing_;    // scratch of update(): the items inserted
+    Placings unplacing_;  // scratch of update(): the items removed
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
     // Items held, by the frame they end at: counted in an array for frames [0, kFlatEnds) (a clip's end;
