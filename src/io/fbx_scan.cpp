@@ -44,10 +44,14 @@ public:
             const std::size_t props = name_at + name_length;
             if (props > next || length > next - props) return;
             if (name_length == 1 && b_[name_at] == 'C') connection(props, props + length);
+            arrays(props, props + std::size_t(length), count);
             records(props + std::size_t(length), std::size_t(next), depth + 1);
             at = std::size_t(next);
         }
     }
+
+    /// The largest length a zlib-compressed array declares beyond what its bytes can inflate to.
+    std::optional<std::uint64_t> oversized() const { return oversized_; }
 
 private:
     bool number(std::size_t at, std::uint64_t& out) const {
@@ -71,9 +75,46 @@ private:
         edges_.push_back({ids[0], ids[1]});
     }
 
+    // A record's `count` properties: a type code, then a value of that type's size, or a length and that
+    // many bytes (strings, raw data), or an array's (length, encoding, bytes) and its bytes. A zlib array
+    // (encoding 1) whose length takes more bytes than deflate can give its compressed ones is noted:
+    // Assimp allocates the length before it inflates (4 GB for a mutated length word; the plain arrays it
+    // checks against their bytes itself). Stops at a type it does not know: the rest is Assimp's to judge.
+    void arrays(std::size_t at, std::size_t end, std::uint64_t count) {
+        for (std::uint64_t k = 0; k < count && at < end; ++k) {
+            const char type = b_[at++];
+            std::uint32_t length = 0, encoding = 0, bytes = 0;
+            switch (type) {
+                case 'C': at += 1; break;
+                case 'Y': at += 2; break;
+                case 'I': case 'F': at += 4; break;
+                case 'D': case 'L': at += 8; break;
+                case 'S': case 'R':
+                    if (!read(b_, at, length)) return;
+                    at += 4 + std::size_t(length);
+                    break;
+                case 'f': case 'i': case 'd': case 'l': case 'b': case 'c':
+                    if (!read(b_, at, length) || !read(b_, at + 4, encoding) || !read(b_, at + 8, bytes)) return;
+                    if (encoding == 1 && std::uint64_t(length) * stride(type) > kMaxInflation * bytes + kZlibFrame)
+                        oversized_ = std::max(oversized_.value_or(0), std::uint64_t(length));
+                    at += 12 + std::size_t(bytes);
+                    break;
+                default: return;
+            }
+        }
+    }
+
+    static std::uint64_t stride(char type) { return type == 'd' || type == 'l' ? 8 : type == 'f' || type == 'i' ? 4 : 1; }
+
+    // Deflate gives at most 1,032 bytes per compressed byte (a 258-byte match in under two bits), after
+    // zlib's 2-byte header and 4-byte checksum.
+    static constexpr std::uint64_t kMaxInflation = 1032;
+    static constexpr std::uint64_t kZlibFrame = 6 * kMaxInflation;
+
     const std::string& b_;
     std::vector<Edge>& edges_;
     bool wide_ = false;
+    std::optional<std::uint64_t> oversized_;
 };
 
 // ASCII FBX: tokens as Assimp cuts them (whitespace and commas separate, ';' comments to the end of the
@@ -181,7 +222,12 @@ std::optional<std::int64_t> connection_cycle(const std::string& bytes) {
 }
 
 std::optional<std::uint64_t> impossible_array(const std::string& bytes) {
-    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) return std::nullopt;
+    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) {
+        std::vector<Edge> edges;
+        BinaryScan scan(bytes, edges);
+        scan.records(kBinaryHeader, bytes.size(), 0);
+        return scan.oversized();
+    }
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const char c = bytes[i];
         if (c == ';') {  // a comment, to the end of the line

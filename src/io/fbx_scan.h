@@ -13,10 +13,12 @@ namespace mobb::io::fbx {
 /// than Assimp reads, never less); other bytes are left to Assimp's own checks.
 std::optional<std::int64_t> connection_cycle(const std::string& bytes);
 
-/// The length an ASCII FBX array declares (`*N` after a key) where it exceeds the file's size in bytes -
-/// each value takes at least one - or nothing. Assimp reserves the declared length before it reads a value:
-/// a 1.5 KB file declaring 77,777,777,773 key times asked for 622 GB (found by fuzz/fbx_fuzz in CI). Binary
-/// FBX arrays state their byte length, which Assimp checks against the file.
+/// The length an FBX array declares where the file cannot hold it, or nothing. ASCII (`*N` after a key):
+/// N over the file's size in bytes, each value taking at least one (capped at that size + 1). Binary: a
+/// zlib-compressed array whose values take more bytes than deflate can give its compressed ones (1,032 to
+/// 1). Assimp allocates the declared length before it reads a value: a 1.5 KB ASCII file declaring
+/// 77,777,777,773 key times asked for 622 GB (found by fuzz/fbx_fuzz in CI), a binary length word up to
+/// 4 GB. Binary arrays stored plain state their byte length, which Assimp checks against the file.
 std::optional<std::uint64_t> impossible_array(const std::string& bytes);
 
 /// True when the file names the property `name` (e.g. "UnitScaleFactor") as a whole string: quoted in

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "ascii_fbx.h"
+#include "fbx_scan.h"
 #include "mobb/io/assimp_reader.h"
 #include "mobb/io/load.h"
 #include "test_util.h"
@@ -226,7 +227,35 @@ TEST_F(Fbx, MalformedFilesAreOneLineErrors) {
     const std::string oversized = dir_.write("oversized.fbx", huge);
     EXPECT_EQ(test::load_error([&] { load_clip(oversized); }),
               oversized + ": an FBX array declares more values than the file's " + std::to_string(huge.size()) +
-                  " bytes hold");
+                  " bytes can hold");
+}
+
+// A binary FBX 7400 of one record "KeyValueFloat" holding one array property (type 'd'): `length` values,
+// `encoding` (0 plain, 1 zlib), `bytes` bytes of data (zeros: only their count matters here).
+std::string binary_array(std::uint32_t length, std::uint32_t encoding, std::uint32_t bytes) {
+    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const std::string name = "KeyValueFloat";
+    const std::string props = "d" + u32(length) + u32(encoding) + u32(bytes) + std::string(bytes, '\0');
+    std::string out = std::string("Kaydara FBX Binary  \0\x1a\0", 23) + u32(7400);
+    const auto end = std::uint32_t(out.size() + 13 + name.size() + props.size());
+    out += u32(end) + u32(1) + u32(std::uint32_t(props.size())) + char(name.size()) + name + props;
+    return out + std::string(13, '\0');  // the null record closing the list
+}
+
+TEST_F(Fbx, ABinaryArrayDeflateCannotFillIsRefusedBeforeAssimpAllocatesIt) {
+    // A zlib array of 536,870,911 doubles (4 GB) in 10 compressed bytes: Assimp would allocate it all.
+    EXPECT_EQ(fbx::impossible_array(binary_array(0x1fffffff, 1, 10)), 0x1fffffffu);
+    // 1,000 doubles (8,000 bytes) from 10 compressed bytes is within deflate's 1,032 to 1 (and its frame).
+    EXPECT_FALSE(fbx::impossible_array(binary_array(1000, 1, 10)).has_value());
+    // A plain array's length Assimp checks against its bytes itself; an empty record list holds nothing.
+    EXPECT_FALSE(fbx::impossible_array(binary_array(0x1fffffff, 0, 10)).has_value());
+    EXPECT_FALSE(fbx::impossible_array(std::string("Kaydara FBX Binary  \0\x1a\0\xe8\x1c\0\0", 27)).has_value());
+
+    const std::string bomb = binary_array(0x1fffffff, 1, 10);
+    const std::string file = dir_.write("bomb.fbx", bomb);
+    EXPECT_EQ(test::load_error([&] { load_clip(file); }),
+              file + ": an FBX array declares more values than the file's " + std::to_string(bomb.size()) +
+                  " bytes can hold");
 }
 
 // Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
