@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Writes the FBX fuzzer's binary seed, corpus-fbx/walk_binary.fbx.seed: the two-joint walk of
-tests/support/ascii_fbx.h (hips with a keyed X translation, a hand 0.5 along X, 30 fps, metres) as a
-binary FBX 7400, so the fuzzer starts inside the binary tokenizer and the connection scan.
-(corpus-fbx/walk.fbx.seed is the ASCII file that header writes.) Run from fuzz/."""
+"""Writes the FBX fuzzer's binary seeds, corpus-fbx/walk_binary.fbx.seed and walk_binary_zlib.fbx.seed: the
+two-joint walk of tests/support/ascii_fbx.h (hips with a keyed X translation, a hand 0.5 along X, 30 fps,
+metres) as a binary FBX 7400, its key arrays stored plain and zlib-compressed, so the fuzzer starts inside
+the binary tokenizer, the connection scan and the compressed arrays. (corpus-fbx/walk.fbx.seed is the
+ASCII file that header writes.) Run from fuzz/."""
 import os
 import struct
+import zlib
 
 TICKS = 46186158000  # FBX time units per second
 
@@ -15,8 +17,11 @@ def prop(value):
         return b"S" + struct.pack("<I", len(v)) + v
     if kind in "ILD":
         return kind.encode() + struct.pack({"I": "<i", "L": "<q", "D": "<d"}[kind], v)
+    deflate = kind.endswith("z")  # "lz", "fz": the array zlib-compressed
+    kind = kind[0]
     data = struct.pack("<%d%s" % (len(v), {"l": "q", "f": "f"}[kind]), *v)
-    return kind.encode() + struct.pack("<III", len(v), 0, len(data)) + data
+    stored = zlib.compress(data) if deflate else data
+    return kind.encode() + struct.pack("<III", len(v), int(deflate), len(stored)) + stored
 
 
 def node(name, props=(), children=None, offset=0):
@@ -45,7 +50,9 @@ def p70(*entries):
     return n(b"Properties70", children=[n(b"P", e) for e in entries])
 
 
-def main():
+def walk(deflate):
+    """The file's bytes, its key arrays zlib-compressed when `deflate`."""
+    z = "z" if deflate else ""
     times = [0, TICKS // 20, TICKS // 10]
     top = [
         n(b"FBXHeaderExtension", children=[n(b"FBXHeaderVersion", [("I", 1003)]), n(b"FBXVersion", [("I", 7400)])]),
@@ -71,7 +78,7 @@ def main():
                 [s("d|Z"), s("Number"), s(""), s("A"), ("D", 0.0)])]),
             n(b"AnimationCurve", [("L", 3004), s(b"\0\x01AnimCurve"), s("")], [
                 n(b"Default", [("D", 0.0)]), n(b"KeyVer", [("I", 4009)]),
-                n(b"KeyTime", [("l", times)]), n(b"KeyValueFloat", [("f", [0.0, 0.1, 0.3])])]),
+                n(b"KeyTime", [("l" + z, times)]), n(b"KeyValueFloat", [("f" + z, [0.0, 0.1, 0.3])])]),
         ]),
         n(b"Connections", children=[n(b"C", [s("OP" if p else "OO"), ("L", a), ("L", b)] + ([s(p)] if p else []))
                                     for a, b, p in [(1001, 0, None), (2001, 1001, None), (1002, 1001, None),
@@ -81,10 +88,14 @@ def main():
     out = b"Kaydara FBX Binary  \0\x1a\0" + struct.pack("<I", 7400)
     for record in top:
         out += record(len(out))
-    out += b"\0" * 13
+    return out + b"\0" * 13
+
+
+def main():
     os.makedirs("corpus-fbx", exist_ok=True)
-    with open("corpus-fbx/walk_binary.fbx.seed", "wb") as f:
-        f.write(out)
+    for name, deflate in (("walk_binary", False), ("walk_binary_zlib", True)):
+        with open("corpus-fbx/%s.fbx.seed" % name, "wb") as f:
+            f.write(walk(deflate))
 
 
 if __name__ == "__main__":
