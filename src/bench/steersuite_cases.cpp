@@ -97,8 +97,7 @@ void count_cases(SteerSuiteTable& t) {
     t.targets.push_back(at_most("contact frames, every run", 0, contacts, "agent pairs x frames"));
     t.targets.push_back(at_least("% of the cases passing the judge on every seed", 90,
                                  t.cases ? 100.0 * t.cases_passed / t.cases : 0.0,
-                                 std::to_string(t.cases_passed) + " of " + std::to_string(t.cases) +
-                                     " with agents"));
+                                 std::to_string(t.cases_passed) + " of " + std::to_string(t.cases) + " with agents"));
     for (Target& g : t.targets) g.ratio = false;  // counts and shares
 }
 
@@ -170,12 +169,8 @@ std::string steersuite_json(const SteerSuiteTable& t) {
     J targets = J::array();
     for (const Target& g : t.targets)
         targets.push_back({{"target", g.what}, {"goal", g.goal}, {"measured", g.measured}, {"met", g.met()}});
-    const J j = {{"workload", "steersuite"},
-                 {"cases", t.cases},
-                 {"cases_passed", t.cases_passed},
-                 {"cases_without_agents", t.empty},
-                 {"rows", rows},
-                 {"targets", targets}};
+    const J j = {{"workload", "steersuite"},        {"cases", t.cases}, {"cases_passed", t.cases_passed},
+                 {"cases_without_agents", t.empty}, {"rows", rows},     {"targets", targets}};
     return util::readable_json(j);
 }
 

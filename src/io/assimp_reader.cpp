@@ -106,7 +106,8 @@ private:
         if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))
             fail("FBX connections form a cycle through object " + std::to_string(*id));
         if (fbx::impossible_array(bytes))
-            fail("an FBX array declares more values than the file's " + std::to_string(bytes.size()) + " bytes can hold");
+            fail("an FBX array declares more values than the file's " + std::to_string(bytes.size()) +
+                 " bytes can hold");
         const aiScene* scene = nullptr;
         std::string error;
         try {

@@ -84,27 +84,34 @@ private:
         for (std::uint64_t k = 0; k < count && at < end; ++k) {
             const char type = b_[at++];
             std::uint32_t length = 0, encoding = 0, bytes = 0;
-            switch (type) {
-                case 'C': at += 1; break;
-                case 'Y': at += 2; break;
-                case 'I': case 'F': at += 4; break;
-                case 'D': case 'L': at += 8; break;
-                case 'S': case 'R':
-                    if (!read(b_, at, length)) return;
-                    at += 4 + std::size_t(length);
-                    break;
-                case 'f': case 'i': case 'd': case 'l': case 'b': case 'c':
-                    if (!read(b_, at, length) || !read(b_, at + 4, encoding) || !read(b_, at + 8, bytes)) return;
-                    if (encoding == 1 && std::uint64_t(length) * stride(type) > kMaxInflation * bytes + kZlibFrame)
-                        oversized_ = std::max(oversized_.value_or(0), std::uint64_t(length));
-                    at += 12 + std::size_t(bytes);
-                    break;
-                default: return;
+            if (const std::size_t n = scalar_bytes(type)) {
+                at += n;
+            } else if (type == 'S' || type == 'R') {
+                if (!read(b_, at, length)) return;
+                at += 4 + std::size_t(length);
+            } else if (const std::uint64_t stride = array_stride(type)) {
+                if (!read(b_, at, length) || !read(b_, at + 4, encoding) || !read(b_, at + 8, bytes)) return;
+                if (encoding == 1 && length * stride > kMaxInflation * bytes + kZlibFrame)
+                    oversized_ = std::max(oversized_.value_or(0), std::uint64_t(length));
+                at += 12 + std::size_t(bytes);
+            } else {
+                return;
             }
         }
     }
 
-    static std::uint64_t stride(char type) { return type == 'd' || type == 'l' ? 8 : type == 'f' || type == 'i' ? 4 : 1; }
+    // Bytes of a scalar property's value (bool, int16, int32, float, double, int64); 0 for other types.
+    static std::size_t scalar_bytes(char type) {
+        for (const auto& [t, n] : {std::pair{'C', 1}, {'Y', 2}, {'I', 4}, {'F', 4}, {'D', 8}, {'L', 8}})
+            if (t == type) return std::size_t(n);
+        return 0;
+    }
+    // Bytes of an array property's value (float, int32, double, int64, bool, char); 0 for other types.
+    static std::uint64_t array_stride(char type) {
+        for (const auto& [t, n] : {std::pair{'f', 4}, {'i', 4}, {'d', 8}, {'l', 8}, {'b', 1}, {'c', 1}})
+            if (t == type) return std::uint64_t(n);
+        return 0;
+    }
 
     // Deflate gives at most 1,032 bytes per compressed byte (a 258-byte match in under two bits), after
     // zlib's 2-byte header and 4-byte checksum.

@@ -253,9 +253,9 @@ TEST_F(Fbx, ABinaryArrayDeflateCannotFillIsRefusedBeforeAssimpAllocatesIt) {
 
     const std::string bomb = binary_array(0x1fffffff, 1, 10);
     const std::string file = dir_.write("bomb.fbx", bomb);
-    EXPECT_EQ(test::load_error([&] { load_clip(file); }),
-              file + ": an FBX array declares more values than the file's " + std::to_string(bomb.size()) +
-                  " bytes can hold");
+    EXPECT_EQ(test::load_error([&] { load_clip(file); }), file +
+                                                              ": an FBX array declares more values than the file's " +
+                                                              std::to_string(bomb.size()) + " bytes can hold");
 }
 
 // Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
