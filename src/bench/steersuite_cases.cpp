@@ -75,21 +75,22 @@ CaseRow run_case(const crowd::MotionGraph& g, const crowd::NarrowPhase& narrow, 
 bool empty_run(const CaseRow& r) { return r.imported && r.agents == 0 && r.left_out == 0; }
 
 void count_cases(SteerSuiteTable& t) {
-    std::map<std::string, bool> passed, empty;
+    struct Case {
+        bool passed = true, empty = true;  // on every seed
+    };
+    std::map<std::string, Case> cases;
     for (const CaseRow& r : t.rows) {
-        const bool ok = r.error.empty() && r.verdict.passed;
-        const auto [it, fresh] = passed.emplace(r.name, ok);
-        if (!fresh) it->second = it->second && ok;
-        const auto [e, first] = empty.emplace(r.name, empty_run(r));
-        if (!first) e->second = e->second && empty_run(r);
+        Case& c = cases[r.name];
+        c.passed = c.passed && r.error.empty() && r.verdict.passed;
+        c.empty = c.empty && empty_run(r);
     }
-    for (const auto& [name, ok] : passed) {
-        if (empty.at(name)) {
+    for (const auto& [name, c] : cases) {
+        if (c.empty) {
             t.empty.push_back(name);
             continue;
         }
         ++t.cases;
-        t.cases_passed += ok;
+        t.cases_passed += c.passed;
     }
     int imported = 0, contacts = 0;
     for (const CaseRow& r : t.rows) imported += r.imported, contacts += int(r.metrics.contacts);

@@ -103,9 +103,9 @@ private:
         importer_.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);    // no made-up bones (Collada)
         std::string hint = std::filesystem::path(file_).extension().string();
         if (!hint.empty()) hint.erase(0, 1);
-        if (const std::optional<std::int64_t> id = fbx::connection_cycle(bytes))
-            fail("FBX connections form a cycle through object " + std::to_string(*id));
-        if (fbx::impossible_array(bytes))
+        const fbx::Hazards hazards = fbx::hazards(bytes);
+        if (hazards.cycle) fail("FBX connections form a cycle through object " + std::to_string(*hazards.cycle));
+        if (hazards.impossible_array)
             fail("an FBX array declares more values than the file's " + std::to_string(bytes.size()) +
                  " bytes can hold");
         const aiScene* scene = nullptr;

@@ -26,7 +26,7 @@ bool read(const std::string& b, std::size_t at, T& out) {
 // Binary FBX: records of (end offset, property count, property bytes, name, properties, nested records).
 class BinaryScan {
 public:
-    BinaryScan(const std::string& bytes, std::vector<Edge>& edges) : b_(bytes), edges_(edges) {
+    explicit BinaryScan(const std::string& bytes) : b_(bytes) {
         std::uint32_t version = 0;
         read(b_, 23, version);
         wide_ = version >= 7500;
@@ -50,6 +50,7 @@ public:
         }
     }
 
+    const std::vector<Edge>& edges() const { return edges_; }
     /// The largest length a zlib-compressed array declares beyond what its bytes can inflate to.
     std::optional<std::uint64_t> oversized() const { return oversized_; }
 
@@ -119,7 +120,7 @@ private:
     static constexpr std::uint64_t kZlibFrame = 6 * kMaxInflation;
 
     const std::string& b_;
-    std::vector<Edge>& edges_;
+    std::vector<Edge> edges_;
     bool wide_ = false;
     std::optional<std::uint64_t> oversized_;
 };
@@ -217,24 +218,9 @@ std::optional<std::int64_t> find_cycle(const std::vector<Edge>& edges) {
     return std::nullopt;
 }
 
-}  // namespace
-
-std::optional<std::int64_t> connection_cycle(const std::string& bytes) {
-    std::vector<Edge> edges;
-    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0)
-        BinaryScan(bytes, edges).records(kBinaryHeader, bytes.size(), 0);
-    else
-        ascii_scan(bytes, edges);
-    return find_cycle(edges);
-}
-
-std::optional<std::uint64_t> impossible_array(const std::string& bytes) {
-    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) {
-        std::vector<Edge> edges;
-        BinaryScan scan(bytes, edges);
-        scan.records(kBinaryHeader, bytes.size(), 0);
-        return scan.oversized();
-    }
+// ASCII FBX: the first `*N` (an array's length, after a key) over the file's size in bytes, each value taking
+// at least one; comments and strings skipped. N is capped at the size + 1: no overflow.
+std::optional<std::uint64_t> ascii_impossible_array(const std::string& bytes) {
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const char c = bytes[i];
         if (c == ';') {  // a comment, to the end of the line
@@ -244,13 +230,26 @@ std::optional<std::uint64_t> impossible_array(const std::string& bytes) {
             if (i == std::string::npos) break;
         } else if (c == '*') {
             std::uint64_t n = 0;
-            bool digits = false;  // capped at the file's size + 1: no overflow
+            bool digits = false;
             for (std::size_t k = i + 1; k < bytes.size() && bytes[k] >= '0' && bytes[k] <= '9'; ++k, digits = true)
                 n = std::min<std::uint64_t>(n * 10 + std::uint64_t(bytes[k] - '0'), bytes.size() + 1);
             if (digits && n > bytes.size()) return n;
         }
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+Hazards hazards(const std::string& bytes) {
+    if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) {
+        BinaryScan scan(bytes);
+        scan.records(kBinaryHeader, bytes.size(), 0);
+        return {find_cycle(scan.edges()), scan.oversized()};
+    }
+    std::vector<Edge> edges;
+    ascii_scan(bytes, edges);
+    return {find_cycle(edges), ascii_impossible_array(bytes)};
 }
 
 bool names_property(const std::string& bytes, const std::string& name) {

@@ -244,12 +244,13 @@ std::string binary_array(std::uint32_t length, std::uint32_t encoding, std::uint
 
 TEST_F(Fbx, ABinaryArrayDeflateCannotFillIsRefusedBeforeAssimpAllocatesIt) {
     // A zlib array of 536,870,911 doubles (4 GB) in 10 compressed bytes: Assimp would allocate it all.
-    EXPECT_EQ(fbx::impossible_array(binary_array(0x1fffffff, 1, 10)), 0x1fffffffu);
+    EXPECT_EQ(fbx::hazards(binary_array(0x1fffffff, 1, 10)).impossible_array, 0x1fffffffu);
     // 1,000 doubles (8,000 bytes) from 10 compressed bytes is within deflate's 1,032 to 1 (and its frame).
-    EXPECT_FALSE(fbx::impossible_array(binary_array(1000, 1, 10)).has_value());
+    EXPECT_FALSE(fbx::hazards(binary_array(1000, 1, 10)).impossible_array.has_value());
     // A plain array's length Assimp checks against its bytes itself; an empty record list holds nothing.
-    EXPECT_FALSE(fbx::impossible_array(binary_array(0x1fffffff, 0, 10)).has_value());
-    EXPECT_FALSE(fbx::impossible_array(std::string("Kaydara FBX Binary  \0\x1a\0\xe8\x1c\0\0", 27)).has_value());
+    EXPECT_FALSE(fbx::hazards(binary_array(0x1fffffff, 0, 10)).impossible_array.has_value());
+    EXPECT_FALSE(
+        fbx::hazards(std::string("Kaydara FBX Binary  \0\x1a\0\xe8\x1c\0\0", 27)).impossible_array.has_value());
 
     const std::string bomb = binary_array(0x1fffffff, 1, 10);
     const std::string file = dir_.write("bomb.fbx", bomb);
