@@ -122,8 +122,8 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
     // id may be removed and inserted again in one update; an inserted id still held leaves first too.
     constexpr std::size_t kGrain = 64;
     const std::size_t nr = removed.size();
-    // A few items are not worth waking the pool for: they go on the calling thread (the crowd's updates
-    // between two choice points it evaluates again are often a few hundred items).
+    // A few items are not worth waking the pool for: they go on the calling thread (fewer than one chunk
+    // of kGrain: the crowd's updates between two choice points it evaluates again are often more).
     const bool few = nr + inserted.size() < kFewItems;
     const auto each = [&](std::size_t n, auto&& f) {
         if (!few) return pool.for_each(n, f, kGrain);
@@ -136,13 +136,20 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
         unplacing_[nr + k] = unplace(inserted[k].id);
         placing_[k] = place(inserted[k]);
     });
-    count(unplacing_, -1);
-    count(placing_, +1);
-    update_hashed();
     // Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item).
-    // A cell's order does not matter (queries sort or order their answers).
+    // A cell's order does not matter (queries sort or order their answers). One more task beside them,
+    // first so that it does not end the step alone, counts the items and enters the hashed cells, which no
+    // band touches; a few items do it all in turn.
     const std::int64_t bands = pool.size() > 1 && !few ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
-    pool.for_each(std::size_t(bands), [&](std::size_t band, int) {
+    const auto counts_and_hashed = [&] {
+        count(unplacing_, -1);
+        count(placing_, +1);
+        update_hashed();
+    };
+    if (few) counts_and_hashed();
+    pool.for_each(std::size_t(few ? bands : bands + 1), [&](std::size_t task, int) {
+        if (!few && task == 0) return counts_and_hashed();
+        const std::size_t band = few ? task : task - 1;
         const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
         const auto each_cell = [&](const Placing& p, auto&& f) {
             const std::int64_t ix0 = std::max(lo, p.ix0), ix1 = std::min(hi - 1, p.ix1);

@@ -125,6 +125,46 @@ bool Simulation::current(std::size_t i) const {
     return !bounds || !moved_.any_between(*bounds, from, below) || !c.affected_by(moved_, from, below);
 }
 
+// current() of the positions from i on, worked out apart against moved_ and seen_ as they are: the
+// answers current() would give in turn, for any number of threads, as long as the caller brings them up
+// to date when moved_ grows (recheck) and drops them when a re-evaluation changes seen_. They go up to
+// the next position known to be stale (first evaluated, and touched by a plan chosen before it), where a
+// re-evaluation will drop the rest; in parallel when that is far enough to be worth a round of the pool.
+// With no box moved yet current() reads the lists alone, cheaper than a round.
+std::size_t Simulation::foresee(std::size_t i, std::size_t n) {
+    constexpr std::size_t kAhead = 512, kParallel = 64, kGrain = 16;
+    if (moved_.last_index() < 0) {
+        current_[i] = current(i);
+        return i + 1;
+    }
+    std::size_t end = i;
+    while (end < std::min(n, i + kAhead) && !(seen_[end] == 0 && touched_[end] >= 0)) ++end;
+    if (end == i) {  // stale: the caller evaluates it again
+        current_[i] = 0;
+        return i + 1;
+    }
+    if (end - i < kParallel) {
+        for (std::size_t k = i; k < end; ++k) current_[k] = current(k);
+        return end;
+    }
+    pool_.for_each(
+        end - i, [&](std::size_t k, int) { current_[i + k] = current(i + k); }, kGrain);
+    return end;
+}
+
+// Position i's boxes joined moved_: the positions after it worked out ahead that were current may not
+// be any more. Only those whose evaluation came before i and whose queries reach its boxes can change
+// (a moved box never makes a stale position current), and they are worked out again.
+void Simulation::recheck(std::size_t i, std::size_t known) {
+    if (boxes_.empty()) return;
+    SpaceTimeBox all = boxes_.front();
+    for (const SpaceTimeBox& b : boxes_) all.enclose(b);
+    for (std::size_t k = i + 1; k < known; ++k) {
+        const std::optional<SpaceTimeBox>& bounds = bounds_[k];
+        if (current_[k] && seen_[k] <= int(i) && bounds && bounds->overlaps(all)) current_[k] = current(k);
+    }
+}
+
 // The evaluation at position p is out of date: p is evaluated again against the state after the commits
 // before it, and with it, in parallel, the next kRound - 1 positions whose first evaluations only plans
 // committed already touched. Their new evaluations stay current unless a commit from p on touches them
@@ -171,19 +211,24 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         },
         8);
     seen_.assign(n, 0);
+    current_.resize(n);
     moved_.clear();
-    std::size_t from = 0;  // the first position not committed yet
+    std::size_t from = 0;   // the first position not committed yet
+    std::size_t known = 0;  // current_ holds current() for positions before this
     for (std::size_t i = 0; i < n; ++i) {
-        if (!current(i)) {
+        if (i >= known) known = foresee(i, n);
+        if (!current_[i]) {
             commit_run(from, i);
             from = i;
             reevaluate_from(i, n, s);
+            known = i + 1;  // seen_ changed for positions after it
         }
         if (seen_[i] > 0) {  // evaluated again
             ++out_.summary.reevaluated;
             boxes_.clear();
             slots_[i].boxes(boxes_);
             moved_.add(int(i), boxes_);
+            recheck(i, known);
         }
         if (!reroutes_[i]) continue;
         // It changes other agents' plans, which positions on either side may own: it commits alone.
@@ -211,6 +256,7 @@ void Simulation::release_batch() {
     spans_ = {};
     touched_ = {};
     reroutes_ = {};
+    current_ = {};
     bounds_ = {};
     seen_ = {};
     chosen_.release();

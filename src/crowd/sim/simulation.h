@@ -46,6 +46,8 @@ private:
     void gather(std::size_t n);
     void outline(std::size_t i);
     bool current(std::size_t i) const;
+    std::size_t foresee(std::size_t i, std::size_t n);
+    void recheck(std::size_t i, std::size_t known);
     void reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s);
     void release_batch();
     int add_piece(const Piece& piece);
@@ -110,6 +112,7 @@ private:
     std::vector<int> touched_;    // per position: the last one before whose first plan may change it, or -1
     std::vector<int> seen_;       // per position: the positions committed when last evaluated
     std::vector<char> reroutes_;  // per position: its plan reroutes other agents (commits alone)
+    std::vector<char> current_;   // per position: current(), as foresee() worked it out ahead of the commits
     std::vector<std::optional<SpaceTimeBox>> bounds_;  // per position: the union of what it queried
     std::vector<std::size_t> round_;                   // scratch: the positions evaluated again together
     BatchGrid moved_;  // boxes of the current batch's plans chosen again on re-evaluation, once committed

@@ -44,8 +44,10 @@ class BroadPhase {
 public:
     static constexpr std::int64_t kMaxFlatCells = std::int64_t(1) << 20;
     /// update() of fewer items (removed and inserted together) runs on the calling thread: waking the
-    /// pool would cost more than the items do. Its outcome is the same either way.
-    static constexpr std::size_t kFewItems = 256;
+    /// pool would cost more than the items do. Its outcome is the same either way. (256 until issue 46's
+    /// sixth stop: the updates before a re-evaluation, 64 to 256 items, were then 1.2 % of the frame step
+    /// on one thread alone; with 64, 2 threads run as fast at 10,000 and 100,000 agents - bench/results/log.md.)
+    static constexpr std::size_t kFewItems = 64;
 
     /// `cell`: side of a grid cell, metres. Throws std::invalid_argument unless cell > 0.
     explicit BroadPhase(double cell = 4.0);
