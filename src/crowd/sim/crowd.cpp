@@ -217,6 +217,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     std::size_t known = 0;  // current_ holds current() for positions before this
     for (std::size_t i = 0; i < n; ++i) {
         if (i >= known) known = foresee(i, n);
+        MOBB_ASSERT(bool(current_[i]) == current(i));  // worked out ahead, as it would be now
         if (!current_[i]) {
             commit_run(from, i);
             from = i;
