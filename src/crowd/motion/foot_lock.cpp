@@ -70,13 +70,7 @@ bool up_from(const FootTrack& t, int first, int frames) {
 
 Plant CrowdPoser::plant_at(int agent, std::int64_t k, int foot, bool carry) {
     AgentClipAt at;
-    if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
-        at = posed_;  // in the clip of the frame being posed: no search
-        at.sample -= int(posed_frame_ - k);
-    } else if (k < 0 || !agent_clip_at(record_, sources_->graph(), agent, k, at)) {
-        return Plant::Free;
-    }
-    return plant_in(at, k, foot, carry);
+    return played_at(agent, k, at) ? plant_in(at, k, foot, carry) : Plant::Free;
 }
 
 Plant CrowdPoser::plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool carry) {
@@ -140,12 +134,18 @@ bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
     return true;
 }
 
-void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first) const {
-    // The first planted point stays where it came down; a next one where the hold puts it then.
+void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const {
+    // The first planted point stays where it came down; a next one where the hold puts it then. Either
+    // glides towards the clip's own (FootLock::glide).
     if (first)
         h.point = planted_point(q.ankle, q.toe, plant);
     else if (plant != h.plant)
         h.point += planted_point(q.ankle, q.toe, plant) - planted_point(q.ankle, q.toe, h.plant);
+    if (own && !first) {
+        const glm::dvec3 to = *own - h.point;
+        const double d = glm::length(to), most = lock_.glide * record_.dt;
+        h.point += d > most ? to * (most / d) : to;
+    }
     h.plant = plant;
     h.ankle = q.ankle;
     h.target = h.point + (q.ankle - planted_point(q.ankle, q.toe, plant));
@@ -180,15 +180,18 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
     if (!window_ && h.start >= 0 && h.frame == k - 1) {
         FootFree q;
         if (!free && !foot_free(agent, k, foot, q)) return nullptr;
-        hold_step(h, free ? *free : q, plant, false);
+        AgentClipAt at;
+        glm::dvec3 own;
+        const bool has_own = played_at(agent, k, at) && own_point(at, foot, plant, own);
+        hold_step(h, free ? *free : q, plant, false, has_own ? &own : nullptr);
         h.frame = k;
         return &h;
     }
     // The contact's runs of equal plant, from frame k back to its start (latest first), across clips.
     const MotionGraph& g = sources_->graph();
     segments_.clear();
+    AgentClipAt at;
     for (std::int64_t cur = k; cur >= 0;) {
-        AgentClipAt at;
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
@@ -217,10 +220,37 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
             q = *free;
         else if (!foot_free(agent, m, foot, q))
             return nullptr;
-        hold_step(h, q, segments_[seg].plant, m == start);
+        const Plant p = segments_[seg].plant;
+        glm::dvec3 own;
+        const bool has_own = played_at(agent, m, at) && own_point(at, foot, p, own);
+        hold_step(h, q, p, m == start, has_own ? &own : nullptr);
         h.frame = m;
     }
     return &h;
+}
+
+bool CrowdPoser::played_at(int agent, std::int64_t k, AgentClipAt& at) const {
+    if (agent == posed_agent_ && k <= posed_frame_ && k >= posed_.placed->start) {
+        at = posed_;  // in the clip of the frame being posed: no search
+        at.sample -= int(posed_frame_ - k);
+        return true;
+    }
+    return k >= 0 && agent_clip_at(record_, sources_->graph(), agent, k, at);
+}
+
+bool CrowdPoser::own_point(const AgentClipAt& at, int foot, Plant plant, glm::dvec3& out) {
+    // Where the clip played has the planted point itself; none for a contact carried over.
+    if (!(lock_.glide > 0)) return false;
+    const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
+    const PoseSource& src = sources_->get(gc.source);
+    const FootTrack& t = src.feet[std::size_t(foot)];
+    if (!src.clip || std::size_t(at.sample) >= t.plant.size() || t.plant[std::size_t(at.sample)] != plant) return false;
+    if (own_.placed != at.placed) own_ = {at.placed, Rigid2::of(source_to_world(src, gc, at.placed->place))};
+    const RigLeg& leg = legs_[std::size_t(foot)];
+    const int j = rig_.source_joints[std::size_t(gc.source)][std::size_t(plant == Plant::Toe ? leg.toe : leg.ankle)];
+    const glm::dvec3 p = io::to_ground(src.clip->animation.at(at.sample, j), src.clip->up);
+    out = {own_.to_world.apply_x(p.x, p.y), own_.to_world.apply_y(p.x, p.y), p.z - src.floor};
+    return true;
 }
 
 bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,

@@ -43,10 +43,12 @@ const Record& record() {
     return r;
 }
 
-CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true, bool carry = true) {
+CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true, bool carry = true,
+                 double glide = FootLock{}.glide) {
     FootLock lock;
     lock.on = lock_feet;
     lock.carry = carry;
+    lock.glide = glide;
     return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend, lock);
 }
 
@@ -146,55 +148,95 @@ TEST(MotionMetrics, WalkingFeetArePlantedInContact) {
     EXPECT_TRUE(j["motion"]["blended"]["foot_sliding"].contains("walk"));
 }
 
-// A foot planted across a clip start stays where its heel came down, in the world, through the transition,
-// where the blended clips alone move it; it moves only where the hold says it was dragged (the leg could not
-// reach, or the disk), and most holds are never dragged.
-TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
-    MOBB_REQUIRE_MOCAP();
-    CrowdPoser locked = poser(), free = poser({}, RigJoints::All, false);
-    std::vector<glm::dvec3> pose, raw, unlocked, free_pose;
+// The heel runs of a foot planted across a clip start, frames [k0, k1] (feet found in the mocap), of every
+// agent of the test record.
+struct HeelRun {
+    int agent = 0, foot = 0;
+    std::int64_t k0 = 0, k1 = 0;
+};
+std::vector<HeelRun> heel_runs_across_starts(CrowdPoser& p) {
+    std::vector<glm::dvec3> pose, raw, unlocked;
     FeetAt feet;
-    int held = 0, reached = 0;
-    double free_moved = 0;
+    std::vector<HeelRun> out;
     for (int a = 0; a < int(record().tracks.size()); ++a)
         for (std::size_t c = 1; c < record().tracks[std::size_t(a)].clips.size(); ++c) {
             const std::int64_t start = record().tracks[std::size_t(a)].clips[c].start;
             for (int f = 0; f < 2; ++f) {
-                const std::size_t ankle = std::size_t(locked.legs()[std::size_t(f)].ankle);
-                // The heel's run around the clip start: frames [k0, k1].
                 const auto heel = [&](std::int64_t k) {
-                    return locked.pose(a, k, pose, raw, unlocked, &feet) && feet.plant[std::size_t(f)] == Plant::Heel;
+                    return p.pose(a, k, pose, raw, unlocked, &feet) && feet.plant[std::size_t(f)] == Plant::Heel;
                 };
                 if (!heel(start - 1) || !heel(start)) continue;
-                std::int64_t k0 = start - 1, k1 = start;
-                while (heel(k0 - 1)) --k0;
-                while (heel(k1 + 1)) ++k1;
-                ASSERT_TRUE(locked.pose(a, k0, pose, raw, unlocked, &feet));
-                glm::dvec3 last = pose[ankle];
-                const glm::dvec3 first = pose[ankle];
-                const glm::dvec3 free_first = unlocked[ankle];
-                double slack = feet.residual[std::size_t(f)];
-                bool exact = true;
-                for (std::int64_t k = k0 + 1; k <= k1; ++k) {
-                    ASSERT_TRUE(locked.pose(a, k, pose, raw, unlocked, &feet) && free.pose(a, k, free_pose));
-                    EXPECT_TRUE(feet.held[std::size_t(f)]);
-                    slack += feet.residual[std::size_t(f)] + feet.dragged[std::size_t(f)];
-                    EXPECT_LE(glm::length(pose[ankle] - last), slack + 1e-9) << "agent " << a << " frame " << k;
-                    slack = feet.residual[std::size_t(f)];
-                    last = pose[ankle];
-                    exact = exact && feet.residual[std::size_t(f)] < 1e-9 && feet.dragged[std::size_t(f)] == 0;
-                    // The free poser gives the unlocked pose.
-                    EXPECT_LT(glm::length(free_pose[ankle] - unlocked[ankle]), 1e-12);
-                    free_moved = std::max(
-                        free_moved, std::hypot(unlocked[ankle].x - free_first.x, unlocked[ankle].y - free_first.y));
-                }
-                ++held;
-                reached += exact && glm::length(pose[ankle] - first) < 1e-9;
+                HeelRun r{a, f, start - 1, start};
+                while (heel(r.k0 - 1)) --r.k0;
+                while (heel(r.k1 + 1)) ++r.k1;
+                out.push_back(r);
             }
         }
+    return out;
+}
+
+// A foot planted across a clip start stays where its heel came down, in the world, through the transition,
+// where the blended clips alone move it: each frame it moves at most FootLock::glide's step, plus what the
+// hold says it was dragged (the leg could not reach, or the disk); most holds are never dragged.
+TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser locked = poser(), free = poser({}, RigJoints::All, false);
+    const double glide = FootLock{}.glide * record().dt;
+    std::vector<glm::dvec3> pose, raw, unlocked, free_pose;
+    FeetAt feet;
+    int held = 0, undragged = 0;
+    double free_moved = 0;
+    for (const HeelRun& r : heel_runs_across_starts(locked)) {
+        const std::size_t f = std::size_t(r.foot), ankle = std::size_t(locked.legs()[f].ankle);
+        ASSERT_TRUE(locked.pose(r.agent, r.k0, pose, raw, unlocked, &feet));
+        glm::dvec3 last = pose[ankle];
+        const glm::dvec3 free_first = unlocked[ankle];
+        double slack = feet.residual[f];
+        bool exact = true;
+        for (std::int64_t k = r.k0 + 1; k <= r.k1; ++k) {
+            ASSERT_TRUE(locked.pose(r.agent, k, pose, raw, unlocked, &feet) && free.pose(r.agent, k, free_pose));
+            EXPECT_TRUE(feet.held[f]);
+            slack += feet.residual[f] + feet.dragged[f] + glide;
+            EXPECT_LE(glm::length(pose[ankle] - last), slack + 1e-9) << "agent " << r.agent << " frame " << k;
+            slack = feet.residual[f];
+            last = pose[ankle];
+            exact = exact && feet.residual[f] < 1e-9 && feet.dragged[f] == 0;
+            // The free poser gives the unlocked pose.
+            EXPECT_LT(glm::length(free_pose[ankle] - unlocked[ankle]), 1e-12);
+            free_moved =
+                std::max(free_moved, std::hypot(unlocked[ankle].x - free_first.x, unlocked[ankle].y - free_first.y));
+        }
+        ++held;
+        undragged += exact;
+    }
     EXPECT_GT(held, 20);
-    EXPECT_GT(reached, held / 2);  // most holds are exact: the foot does not move at all
-    EXPECT_GT(free_moved, 0.02);   // metres: without the lock the ankle slides through the transition
+    EXPECT_GT(undragged, held / 2);  // most holds never run out of leg or disk
+    EXPECT_GT(free_moved, 0.02);     // metres: without the lock the ankle slides through the transition
+}
+
+// Held still (glide 0) a foot stays exactly where it came down; gliding, it ends its contact nearer where
+// the clip played then has it than held still, having moved at most the glide's step a frame.
+TEST(FootLock, AHeldFootGlidesToTheClipsOwnFootprint) {
+    MOBB_REQUIRE_MOCAP();
+    CrowdPoser still = poser({}, RigJoints::All, true, true, 0.0), glides = poser();
+    std::vector<glm::dvec3> pose, raw, unlocked;
+    FeetAt feet;
+    double off_still = 0, off_glide = 0;
+    int runs = 0, exact = 0;
+    for (const HeelRun& r : heel_runs_across_starts(still)) {
+        const std::size_t ankle = std::size_t(still.legs()[std::size_t(r.foot)].ankle);
+        ASSERT_TRUE(still.pose(r.agent, r.k0, pose, raw, unlocked, &feet));
+        const glm::dvec3 first = pose[ankle];
+        ASSERT_TRUE(still.pose(r.agent, r.k1, pose, raw, unlocked, &feet));
+        exact += feet.dragged[std::size_t(r.foot)] == 0 && glm::length(pose[ankle] - first) < 1e-9;
+        off_still += glm::length(pose[ankle] - raw[ankle]);
+        ASSERT_TRUE(glides.pose(r.agent, r.k1, pose, raw, unlocked, &feet));
+        off_glide += glm::length(pose[ankle] - raw[ankle]);
+        ++runs;
+    }
+    EXPECT_GT(runs, 20);
+    EXPECT_GT(exact, runs / 2);
+    EXPECT_LT(off_glide, off_still);
 }
 
 // Where a clip ends with a foot planted and the next one has it up from its start, the blend eases out of

@@ -97,6 +97,15 @@ struct FootLock {
     /// m/s walk clips skated in 11.1 and 10.9 % of the contact steps on seed 1 (10.9 % at 1.5 m/s, 10.8 %
     /// kept whole).
     double release_speed = 1.5;
+    /// m/s; 0 holds the planted point still. While the clip played has the contact itself (not one carried
+    /// through a blend), the held point moves towards where that clip has the planted point at most this fast
+    /// (height included), so a foot that came down where a blend's offset put it, up to 20 cm from the clip's
+    /// own footprint, gets there during the contact instead of being dragged where the leg or the disk runs
+    /// out. 0.17 cm a frame at 30 Hz: a quarter of the mocap's own p99 slide. On the 100-agent wander (seeds
+    /// 1-3) and evacuation_exit, planted slide p99 walk / slow: held still 0.88 / 0.58-1.09 and 1.43 / 1.09
+    /// cm, 0.03 m/s 0.93 / 0.58-0.85 and 1.01 / 0.85, 0.05 m/s 0.92-0.95 / 0.58-0.86 and 0.82 / 0.86, 0.1 m/s
+    /// 0.97-0.99 / 0.59-0.82 and 0.85 / 0.82 (slow clips then skated 1 point more); bench/results/feet.md.
+    double glide = 0.05;
 };
 
 /// The leg after the two-joint IK: the new knee and ankle, and how far the ankle ends from the target
