@@ -67,6 +67,8 @@ std::array<FootTrack, 2> detect_contacts(const std::array<std::vector<glm::dvec3
     for (std::size_t f = 0; f < 2; ++f) {
         const std::vector<bool> h = joint_down(heel[f], dt, rule), t = joint_down(toe[f], dt, rule);
         FootTrack& track = out[f];
+        track.heel = heel[f];
+        track.toe = toe[f];
         track.plant.resize(h.size());
         for (std::size_t i = 0; i < h.size(); ++i)
             track.plant[i] = h[i] ? Plant::Heel : (i < t.size() && t[i] ? Plant::Toe : Plant::Free);

@@ -134,6 +134,14 @@ bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
     return true;
 }
 
+void CrowdPoser::glide_towards(glm::dvec3& point, const glm::dvec3& own) const {
+    // On the ground at most FootLock::glide, in height at most FootLock::glide_height.
+    const double dx = own.x - point.x, dy = own.y - point.y, d = std::hypot(dx, dy);
+    const double most = lock_.glide * record_.dt, f = d > most ? most / d : 1.0;
+    const double rise = lock_.glide_height * record_.dt;
+    point += glm::dvec3(dx * f, dy * f, std::clamp(own.z - point.z, -rise, rise));
+}
+
 void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const {
     // The first planted point stays where it came down; a next one where the hold puts it then. Either
     // glides towards the clip's own (FootLock::glide).
@@ -141,15 +149,11 @@ void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, 
         h.point = planted_point(q.ankle, q.toe, plant);
     else if (plant != h.plant)
         h.point += planted_point(q.ankle, q.toe, plant) - planted_point(q.ankle, q.toe, h.plant);
-    if (own && !first) {
-        const glm::dvec3 to = *own - h.point;
-        const double d = glm::length(to), most = lock_.glide * record_.dt;
-        h.point += d > most ? to * (most / d) : to;
-    }
+    if (own && !first) glide_towards(h.point, *own);
     h.plant = plant;
     h.ankle = q.ankle;
     h.target = h.point + (q.ankle - planted_point(q.ankle, q.toe, plant));
-    // Beyond the leg's reach (or the disk) the planted point is dragged along.
+    // Beyond the leg's reach (or the disk) the planted point is lifted or dragged along.
     const glm::dvec3 held = within_reach(h.target, q);
     h.dragged = glm::length(held - h.target);
     h.point += held - h.target;
@@ -157,15 +161,19 @@ void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, 
 }
 
 glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q) const {
-    // The leg stretched at most to lock_.reach of its length (or the free pose's own stretch), towards the
-    // hip; then on the ground inside the disk the collision answers used, towards the root.
+    // The leg stretched at most to lock_.reach of its length (or the free pose's own stretch): the target
+    // raised to where the leg reaches it (FootLock::lift), else towards the hip; then on the ground inside
+    // the disk the collision answers used, towards the root.
     const double leg = glm::length(q.knee - q.hip) + glm::length(q.ankle - q.knee);
     const double limit = std::min(leg, std::max(glm::length(q.ankle - q.hip), lock_.reach * leg));
-    const double d = glm::length(target - q.hip);
-    glm::dvec3 out = d > limit ? q.hip + (target - q.hip) * (limit / d) : target;
-    const double dx = out.x - q.root.x, dy = out.y - q.root.y, ground = std::hypot(dx, dy);
-    if (ground > q.disk) {
-        const double f = q.disk * (1 - 1e-12) / ground;
+    glm::dvec3 out = target;
+    const double ground = std::hypot(target.x - q.hip.x, target.y - q.hip.y);
+    if (lock_.lift && ground < limit) out.z = std::max(out.z, q.hip.z - std::sqrt(limit * limit - ground * ground));
+    const double d = glm::length(out - q.hip);
+    if (d > limit) out = q.hip + (out - q.hip) * (limit / d);
+    const double dx = out.x - q.root.x, dy = out.y - q.root.y, from_root = std::hypot(dx, dy);
+    if (from_root > q.disk) {
+        const double f = q.disk * (1 - 1e-12) / from_root;
         out = {q.root.x + dx * f, q.root.y + dy * f, out.z};
     }
     return out;
@@ -240,16 +248,15 @@ bool CrowdPoser::played_at(int agent, std::int64_t k, AgentClipAt& at) const {
 
 bool CrowdPoser::own_point(const AgentClipAt& at, int foot, Plant plant, glm::dvec3& out) {
     // Where the clip played has the planted point itself; none for a contact carried over.
-    if (!(lock_.glide > 0)) return false;
+    if (!(lock_.glide > 0 || lock_.glide_height > 0)) return false;
     const GraphClip& gc = sources_->graph().clips[std::size_t(at.placed->clip)];
     const PoseSource& src = sources_->get(gc.source);
     const FootTrack& t = src.feet[std::size_t(foot)];
-    if (!src.clip || std::size_t(at.sample) >= t.plant.size() || t.plant[std::size_t(at.sample)] != plant) return false;
+    const std::size_t i = std::size_t(at.sample);
+    if (i >= t.plant.size() || t.plant[i] != plant) return false;
     if (own_.placed != at.placed) own_ = {at.placed, Rigid2::of(source_to_world(src, gc, at.placed->place))};
-    const RigLeg& leg = legs_[std::size_t(foot)];
-    const int j = rig_.source_joints[std::size_t(gc.source)][std::size_t(plant == Plant::Toe ? leg.toe : leg.ankle)];
-    const glm::dvec3 p = io::to_ground(src.clip->animation.at(at.sample, j), src.clip->up);
-    out = {own_.to_world.apply_x(p.x, p.y), own_.to_world.apply_y(p.x, p.y), p.z - src.floor};
+    const glm::dvec3& p = plant == Plant::Toe ? t.toe[i] : t.heel[i];
+    out = {own_.to_world.apply_x(p.x, p.y), own_.to_world.apply_y(p.x, p.y), p.z};
     return true;
 }
 

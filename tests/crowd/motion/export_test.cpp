@@ -43,12 +43,11 @@ const Record& record() {
     return r;
 }
 
+// A poser of the test record; `lock` sets FootLock's other fields (glides, lift).
 CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool lock_feet = true, bool carry = true,
-                 double glide = FootLock{}.glide) {
-    FootLock lock;
+                 FootLock lock = {}) {
     lock.on = lock_feet;
     lock.carry = carry;
-    lock.glide = glide;
     return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend, lock);
 }
 
@@ -176,12 +175,13 @@ std::vector<HeelRun> heel_runs_across_starts(CrowdPoser& p) {
 }
 
 // A foot planted across a clip start stays where its heel came down, in the world, through the transition,
-// where the blended clips alone move it: each frame it moves at most FootLock::glide's step, plus what the
-// hold says it was dragged (the leg could not reach, or the disk); most holds are never dragged.
+// where the blended clips alone move it: each frame it moves at most FootLock::glide's step on the ground
+// and glide_height's in height, plus what the hold says it was lifted or dragged (the leg could not reach,
+// or the disk); most holds are never lifted nor dragged.
 TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
     MOBB_REQUIRE_MOCAP();
     CrowdPoser locked = poser(), free = poser({}, RigJoints::All, false);
-    const double glide = FootLock{}.glide * record().dt;
+    const double glide = FootLock{}.glide * record().dt, rise = FootLock{}.glide_height * record().dt;
     std::vector<glm::dvec3> pose, raw, unlocked, free_pose;
     FeetAt feet;
     int held = 0, undragged = 0;
@@ -196,8 +196,10 @@ TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
         for (std::int64_t k = r.k0 + 1; k <= r.k1; ++k) {
             ASSERT_TRUE(locked.pose(r.agent, k, pose, raw, unlocked, &feet) && free.pose(r.agent, k, free_pose));
             EXPECT_TRUE(feet.held[f]);
-            slack += feet.residual[f] + feet.dragged[f] + glide;
-            EXPECT_LE(glm::length(pose[ankle] - last), slack + 1e-9) << "agent " << r.agent << " frame " << k;
+            slack += feet.residual[f] + feet.dragged[f];
+            const glm::dvec3 moved = pose[ankle] - last;
+            EXPECT_LE(std::hypot(moved.x, moved.y), slack + glide + 1e-9) << "agent " << r.agent << " frame " << k;
+            EXPECT_LE(std::abs(moved.z), slack + rise + 1e-9) << "agent " << r.agent << " frame " << k;
             slack = feet.residual[f];
             last = pose[ankle];
             exact = exact && feet.residual[f] < 1e-9 && feet.dragged[f] == 0;
@@ -214,11 +216,13 @@ TEST(FootLock, APlantedFootStaysPutAcrossAClipStart) {
     EXPECT_GT(free_moved, 0.02);     // metres: without the lock the ankle slides through the transition
 }
 
-// Held still (glide 0) a foot stays exactly where it came down; gliding, it ends its contact nearer where
-// the clip played then has it than held still, having moved at most the glide's step a frame.
+// Held still (no glide) a foot stays exactly where it came down; gliding, it ends its contact nearer where
+// the clip played then has it than held still.
 TEST(FootLock, AHeldFootGlidesToTheClipsOwnFootprint) {
     MOBB_REQUIRE_MOCAP();
-    CrowdPoser still = poser({}, RigJoints::All, true, true, 0.0), glides = poser();
+    FootLock hold;
+    hold.glide = hold.glide_height = 0;
+    CrowdPoser still = poser({}, RigJoints::All, true, true, hold), glides = poser();
     std::vector<glm::dvec3> pose, raw, unlocked;
     FeetAt feet;
     double off_still = 0, off_glide = 0;
@@ -237,6 +241,32 @@ TEST(FootLock, AHeldFootGlidesToTheClipsOwnFootprint) {
     EXPECT_GT(runs, 20);
     EXPECT_GT(exact, runs / 2);
     EXPECT_LT(off_glide, off_still);
+}
+
+// Out of the leg's reach a held foot is lifted before it is dragged (FootLock::lift): over the heels planted
+// across clip starts it moves less on the ground than when it is dragged towards the hip at once.
+TEST(FootLock, AFootOutOfReachIsLiftedBeforeItIsDragged) {
+    MOBB_REQUIRE_MOCAP();
+    FootLock drag;
+    drag.lift = false;
+    CrowdPoser lifts = poser(), drags = poser({}, RigJoints::All, true, true, drag);
+    std::vector<glm::dvec3> pose, raw, unlocked;
+    const auto ground_moves = [&](CrowdPoser& p, const std::vector<HeelRun>& runs) {
+        double sum = 0;
+        for (const HeelRun& r : runs) {
+            const std::size_t ankle = std::size_t(p.legs()[std::size_t(r.foot)].ankle);
+            glm::dvec3 last{0.0};
+            for (std::int64_t k = r.k0; k <= r.k1; ++k) {
+                EXPECT_TRUE(p.pose(r.agent, k, pose));
+                if (k > r.k0) sum += std::hypot(pose[ankle].x - last.x, pose[ankle].y - last.y);
+                last = pose[ankle];
+            }
+        }
+        return sum;
+    };
+    const std::vector<HeelRun> runs = heel_runs_across_starts(lifts);
+    ASSERT_GT(runs.size(), 20U);
+    EXPECT_LT(ground_moves(lifts, runs), ground_moves(drags, runs));
 }
 
 // Where a clip ends with a foot planted and the next one has it up from its start, the blend eases out of

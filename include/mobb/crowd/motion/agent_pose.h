@@ -121,8 +121,8 @@ struct FeetAt {
     std::array<Plant, 2> hold{};
     std::array<bool, 2> held{};        ///< the ankle had a target (in contact, or releasing after one)
     std::array<double, 2> residual{};  ///< metres from the ankle to its target after the IK (and the disk)
-    /// Metres the planted point was dragged at this frame, where the leg could not reach it or it left the
-    /// disk (FootLock::reach); 0 while the hold holds.
+    /// Metres the planted point was lifted or dragged at this frame, where the leg could not reach it or it
+    /// left the disk (FootLock::reach, FootLock::lift); 0 while the hold holds (its glide aside).
     std::array<double, 2> dragged{};
 };
 
@@ -134,7 +134,7 @@ struct FeetAt {
 /// clip start where the clip before ends planted and the new one has the foot up: carried_plant) its
 /// planted point - the ankle while the heel is down, the toe while only the toe is - stays where it was
 /// in the world when the contact began (where the planted point changes, the new one's place follows from
-/// the old one's), gliding towards the clip's own planted point at FootLock::glide; the ankle's target is that point plus the pose's own ankle offset from it, and
+/// the old one's), gliding towards the clip's own planted point (FootLock::glide); the ankle's target is that point plus the pose's own ankle offset from it, and
 /// two_joint_ik bends the leg to reach it (the rig's joints below the hip follow their segments). After a contact the correction decays over
 /// FootLock::release. The root and every other joint are not touched; the leg is held inside the disk
 /// like blended joints (where that moves the ankle off its target, it shows as the residual).
@@ -214,6 +214,7 @@ private:
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const;
+    void glide_towards(glm::dvec3& point, const glm::dvec3& own) const;
     bool own_point(const AgentClipAt& at, int foot, Plant plant, glm::dvec3& out);
     bool played_at(int agent, std::int64_t k, AgentClipAt& at) const;
     glm::dvec3 within_reach(const glm::dvec3& target, const FootFree& q) const;

@@ -42,11 +42,13 @@ struct ContactRule {
     double min_contact = 0.1;       ///< seconds: shorter contacts are dropped (a toe brushing the floor)
 };
 
-/// One foot over a source's samples: its plant per sample, and per sample the first sample of the run of
-/// equal plants it is in (so the start of a contact is found without walking it).
+/// One foot over a source's samples: its plant per sample, per sample the first sample of the run of
+/// equal plants it is in (so the start of a contact is found without walking it), and the heel and toe
+/// positions it was found from (source ground coordinates, metres; kept for foot locking's glide).
 struct FootTrack {
     std::vector<Plant> plant;
     std::vector<int> run_begin;
+    std::vector<glm::dvec3> heel, toe;
 };
 
 /// A contact as a clip has it: samples [first, last] of its source (inside the clip's [first, exit)),
@@ -97,15 +99,26 @@ struct FootLock {
     /// m/s walk clips skated in 11.1 and 10.9 % of the contact steps on seed 1 (10.9 % at 1.5 m/s, 10.8 %
     /// kept whole).
     double release_speed = 1.5;
-    /// m/s; 0 holds the planted point still. While the clip played has the contact itself (not one carried
-    /// through a blend), the held point moves towards where that clip has the planted point at most this fast
-    /// (height included), so a foot that came down where a blend's offset put it, up to 20 cm from the clip's
-    /// own footprint, gets there during the contact instead of being dragged where the leg or the disk runs
-    /// out. 0.17 cm a frame at 30 Hz: a quarter of the mocap's own p99 slide. On the 100-agent wander (seeds
-    /// 1-3) and evacuation_exit, planted slide p99 walk / slow: held still 0.88 / 0.58-1.09 and 1.43 / 1.09
-    /// cm, 0.03 m/s 0.93 / 0.58-0.85 and 1.01 / 0.85, 0.05 m/s 0.92-0.95 / 0.58-0.86 and 0.82 / 0.86, 0.1 m/s
-    /// 0.97-0.99 / 0.59-0.82 and 0.85 / 0.82 (slow clips then skated 1 point more); bench/results/feet.md.
-    double glide = 0.05;
+    /// m/s, on the ground; 0 holds the planted point still. While the clip played has the contact itself
+    /// (not one carried through a blend), the held point moves towards where that clip has the planted point
+    /// at most this fast, so a foot that came down where a blend's offset put it, up to 20-30 cm from the
+    /// clip's own footprint, gets there during the contact instead of standing until the leg or the disk
+    /// runs out and dragging it. 0.5 cm a frame at 30 Hz, under the mocap's own p99 planted slide (0.65 cm).
+    /// With `lift` and `glide_height`: 0.05 m/s left feet 19 cm off at the disk's edge (planted slide p99
+    /// 1.04 cm on the 100-agent wander), 0.1 m/s 0.33-0.50 cm, 0.15 m/s 0.50, 0.2 m/s 0.67, the skating
+    /// share the same within 0.2 points (bench/results/feet.md).
+    double glide = 0.15;
+    /// m/s: the held point's height moves towards the clip's own as fast, so a foot the blend put down high
+    /// comes to the floor and counts as planted again (GMD's 5 cm); a lower foot beyond the leg's reach is
+    /// lifted (`lift`). 0 holds the height. At 0.3 and 1.0 m/s walk clips skated within 0.1 points of 0.5
+    /// m/s, in-place clips 0.3 points less and 0.9 more.
+    double glide_height = 0.5;
+    /// Beyond the leg's reach the planted point first rises until the leg reaches it (median 0.7 cm, p99 4
+    /// cm on the 100-agent wander), a heel coming up as the leg stretches, and is dragged along the ground
+    /// only where rising cannot bring it within reach; off, it is dragged towards the hip: with the glides
+    /// above, planted slide p99 1.59 cm on walk clips against 0.50 (100-agent wander), and walk clips
+    /// skated 0.2 points more.
+    bool lift = true;
 };
 
 /// The leg after the two-joint IK: the new knee and ankle, and how far the ankle ends from the target
