@@ -272,7 +272,7 @@ TEST(FootLock, AFootOutOfReachIsLiftedBeforeItIsDragged) {
 // Where a clip ends with a foot planted and the next one has it up from its start, the blend eases out of
 // the planted pose and carries the foot off while it is still low; the lock holds it (FootLock::carry)
 // through the blend, as planted as it was at the clip's last frame, moving only where the hold says it
-// was dragged. Without carry those frames are not held.
+// was lifted or dragged, and most never on the ground. Without carry those frames are not held.
 TEST(FootLock, AFootPlantedAtAClipsEndIsHeldThroughTheBlend) {
     MOBB_REQUIRE_MOCAP();
     CrowdPoser locked = poser(), uncarried = poser({}, RigJoints::All, true, false);
@@ -298,7 +298,7 @@ TEST(FootLock, AFootPlantedAtAClipsEndIsHeldThroughTheBlend) {
                     EXPECT_TRUE(feet.held[f]);
                     EXPECT_LE(glm::length(pose[j] - last), feet.dragged[f] + feet.residual[f] + 1e-9)
                         << "agent " << a << " frame " << k;
-                    moved = moved || feet.dragged[f] > 0;
+                    moved = moved || std::hypot(pose[j].x - last.x, pose[j].y - last.y) > 1e-9;
                     last = pose[j];
                     free_moved =
                         std::max(free_moved, std::hypot(unlocked[j].x - free_first.x, unlocked[j].y - free_first.y));
@@ -311,8 +311,8 @@ TEST(FootLock, AFootPlantedAtAClipsEndIsHeldThroughTheBlend) {
             }
         }
     EXPECT_GT(carried, 5);
-    EXPECT_GT(still, 0);          // some carried feet do not move at all
-    EXPECT_GT(free_moved, 0.02);  // metres: the blend alone carries them off
+    EXPECT_GT(still, carried / 2);  // most carried feet do not move on the ground (they may rise: FootLock::lift)
+    EXPECT_GT(free_moved, 0.02);    // metres: the blend alone carries them off
 }
 
 // After a contact the lock lets go over FootLock::release; while the free pose's toe is still on the ground

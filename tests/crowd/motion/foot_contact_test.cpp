@@ -107,14 +107,15 @@ TEST(FootContacts, ContactsHaveAStartAndAnEndAndShortTouchesAreDropped) {
 }
 
 TEST(FootContacts, HysteresisKeepsAFootHoveringBetweenTheThresholdsDown) {
-    // Down at 0 cm, then hovering at 2.5 cm (between height_on and height_off) and still: still down.
+    // Down at 0 cm, then hovering between height_on and height_off and still: still down.
+    const double hover = (ContactRule{}.height_on + ContactRule{}.height_off) / 2;
     std::vector<glm::dvec3> p(40, glm::dvec3(0.0, 0.0, 0.2));
-    for (int i = 5; i < 35; ++i) p[std::size_t(i)].z = i < 15 ? 0.0 : 0.025;
+    for (int i = 5; i < 35; ++i) p[std::size_t(i)].z = i < 15 ? 0.0 : hover;
     for (int i = 0; i < 5; ++i) p[std::size_t(i)].x = -0.1 * (5 - i);
     const auto feet = detect_contacts({p, p}, {p, p}, kDt);
     for (int i = 6; i < 35; ++i) EXPECT_NE(feet[0].plant[std::size_t(i)], Plant::Free) << i;
-    // Coming down to 2.5 cm after a lift does not count: above height_on.
-    std::vector<glm::dvec3> q(40, glm::dvec3(0.0, 0.0, 0.025));
+    // Coming down to the same height after a lift does not count: above height_on.
+    std::vector<glm::dvec3> q(40, glm::dvec3(0.0, 0.0, hover));
     for (int i = 0; i < 10; ++i) q[std::size_t(i)].z = i < 3 ? 0.0 : 0.2;  // on the ground, then lifted
     const auto hovering = detect_contacts({q, q}, {q, q}, kDt);
     EXPECT_EQ(hovering[0].plant[20], Plant::Free);
