@@ -188,18 +188,15 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
     if (!window_ && h.start >= 0 && h.frame == k - 1) {
         FootFree q;
         if (!free && !foot_free(agent, k, foot, q)) return nullptr;
-        AgentClipAt at;
-        glm::dvec3 own;
-        const bool has_own = played_at(agent, k, at) && own_point(at, foot, plant, own);
-        hold_step(h, free ? *free : q, plant, false, has_own ? &own : nullptr);
+        follow(h, agent, k, foot, free ? *free : q, plant, false);
         h.frame = k;
         return &h;
     }
     // The contact's runs of equal plant, from frame k back to its start (latest first), across clips.
     const MotionGraph& g = sources_->graph();
     segments_.clear();
-    AgentClipAt at;
     for (std::int64_t cur = k; cur >= 0;) {
+        AgentClipAt at;
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
@@ -228,13 +225,18 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
             q = *free;
         else if (!foot_free(agent, m, foot, q))
             return nullptr;
-        const Plant p = segments_[seg].plant;
-        glm::dvec3 own;
-        const bool has_own = played_at(agent, m, at) && own_point(at, foot, p, own);
-        hold_step(h, q, p, m == start, has_own ? &own : nullptr);
+        follow(h, agent, m, foot, q, segments_[seg].plant, m == start);
         h.frame = m;
     }
     return &h;
+}
+
+void CrowdPoser::follow(Hold& h, int agent, std::int64_t k, int foot, const FootFree& q, Plant plant, bool first) {
+    // A hold's first frame has nothing to glide from: no lookup of the clip's own point.
+    AgentClipAt at;
+    glm::dvec3 own;
+    const bool glides = !first && played_at(agent, k, at) && own_point(at, foot, plant, own);
+    hold_step(h, q, plant, first, glides ? &own : nullptr);
 }
 
 bool CrowdPoser::played_at(int agent, std::int64_t k, AgentClipAt& at) const {

@@ -134,8 +134,9 @@ struct FeetAt {
 /// clip start where the clip before ends planted and the new one has the foot up: carried_plant) its
 /// planted point - the ankle while the heel is down, the toe while only the toe is - stays where it was
 /// in the world when the contact began (where the planted point changes, the new one's place follows from
-/// the old one's), gliding towards the clip's own planted point (FootLock::glide); the ankle's target is that point plus the pose's own ankle offset from it, and
-/// two_joint_ik bends the leg to reach it (the rig's joints below the hip follow their segments). After a contact the correction decays over
+/// the old one's), gliding towards the clip's own planted point (FootLock::glide); the ankle's target is
+/// that point plus the pose's own ankle offset from it, and two_joint_ik bends the leg to reach it (the
+/// rig's joints below the hip follow their segments). After a contact the correction decays over
 /// FootLock::release. The root and every other joint are not touched; the leg is held inside the disk
 /// like blended joints (where that moves the ankle off its target, it shows as the residual).
 class CrowdPoser {
@@ -213,6 +214,7 @@ private:
     bool free_for(int agent, std::int64_t k, int foot, int frames);
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
+    void follow(Hold& h, int agent, std::int64_t k, int foot, const FootFree& q, Plant plant, bool first);
     void hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const;
     void glide_towards(glm::dvec3& point, const glm::dvec3& own) const;
     bool own_point(const AgentClipAt& at, int foot, Plant plant, glm::dvec3& out);
