@@ -209,7 +209,12 @@ std::array<RigLeg, 2> rig_legs(const Rig& rig) {
 
 CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> sources, RigJoints joints, PoseBlend blend,
                        FootLock lock)
-    : record_(record), sources_(std::move(sources)), blend_(blend), lock_(lock) {
+    : record_(record),
+      sources_(std::move(sources)),
+      blend_(blend),
+      lock_(lock),
+      release_frames_(int(std::lround(lock.release / record.dt))),
+      blend_frames_(blend.window > 0 ? std::int64_t(std::ceil(blend.window / record.dt)) : 0) {
     const MotionGraph& g = sources_->graph();
     if (std::abs(record.dt - g.dt()) > 1e-9)
         throw GraphError("record dt " + std::to_string(record.dt) + " s differs from its graph's " +
@@ -271,6 +276,14 @@ bool CrowdPoser::pose(int agent, std::int64_t k, std::vector<glm::dvec3>& out, s
     return true;
 }
 
+bool CrowdPoser::blends_into(const AgentClipAt& at) const {
+    // Only clips played back to back blend (the previous one ran to its exit).
+    if (at.index == 0) return false;
+    const PlacedClip& prev = at.placed[-1];  // the agent's clips are one vector: the clip before
+    const GraphClip& gp = sources_->graph().clips[std::size_t(prev.clip)];
+    return prev.start + (gp.exit - gp.first) == at.placed->start;
+}
+
 bool CrowdPoser::free_pose(int agent, std::int64_t k, const std::vector<int>& joints, std::vector<glm::dvec3>& out,
                            std::vector<glm::dvec3>& raw_out) {
     const MotionGraph& g = sources_->graph();
@@ -287,9 +300,7 @@ bool CrowdPoser::free_pose(int agent, std::int64_t k, const std::vector<int>& jo
         const GraphClip& gp = g.clips[std::size_t(prev.clip)];
         const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
         const AgentClipAt from{&prev, at.index - 1, gp.exit};
-        // Only clips played back to back blend (the previous one ran to its exit).
-        if (prev.start + (gp.exit - gp.first) == at.placed->start && raw(from, gp.exit, joints, a_) &&
-            raw(at, gc.first, joints, b_)) {
+        if (blends_into(at) && raw(from, gp.exit, joints, a_) && raw(at, gc.first, joints, b_)) {
             const double s = i / window, w = 1.0 - s * s * (3.0 - 2.0 * s);
             // Offsets in the ground relative to the root, heights as they are (the root is on the floor).
             for (int j : joints)

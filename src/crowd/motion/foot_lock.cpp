@@ -1,5 +1,6 @@
 // Foot locking in CrowdPoser (agent_pose.h): a planted foot held where its contact began, the leg bent to
-// reach it (two_joint_ik), the hold let go over FootLock::release after the contact.
+// reach it (two_joint_ik), the hold let go over FootLock::release after the contact; a foot low in a blend
+// with no contact pinned (FootLock::pin).
 #include <algorithm>
 #include <cmath>
 
@@ -82,7 +83,7 @@ Plant CrowdPoser::plant_in(const AgentClipAt& at, std::int64_t k, int foot, bool
     return carried_plant(at, k, foot);
 }
 
-bool CrowdPoser::in_blend(std::int64_t i) const { return blend_.window > 0 && double(i) < blend_.window / record_.dt; }
+bool CrowdPoser::in_blend(std::int64_t i) const { return i < blend_frames_; }
 
 Plant CrowdPoser::carried_plant(const AgentClipAt& at, std::int64_t k, int foot) {
     return at.index > 0 && in_blend(k - at.placed->start) ? carried_into(at, foot) : Plant::Free;
@@ -97,11 +98,10 @@ Plant CrowdPoser::carried_into(const AgentClipAt& at, int foot) {
     const GraphClip& gc = g.clips[std::size_t(at.placed->clip)];
     // The new clip keeps the foot up through the blend and the release after it, so the carried contact
     // lets go before the clip's own next one begins (one contact never stands in two places).
-    const int up = int(std::ceil(blend_.window / record_.dt)) + int(std::lround(lock_.release / record_.dt));
+    const int up = int(blend_frames_) + release_frames();
     if (!up_from(sources_->get(gc.source).feet[std::size_t(foot)], gc.first, up)) return c.plant;
-    const PlacedClip& prev = at.placed[-1];  // the agent's clips are one vector: the clip before
-    const GraphClip& gp = g.clips[std::size_t(prev.clip)];
-    if (prev.start + (gp.exit - gp.first) != at.placed->start) return c.plant;  // not back to back: no blend
+    if (!blends_into(at)) return c.plant;
+    const GraphClip& gp = g.clips[std::size_t(at.placed[-1].clip)];
     const FootTrack& t = sources_->get(gp.source).feet[std::size_t(foot)];
     if (gp.exit <= gp.first || std::size_t(gp.exit) >= t.plant.size()) return c.plant;
     // Planted at its last frame and at its exit, the pose the blend eases out of.
@@ -142,11 +142,12 @@ void CrowdPoser::glide_towards(glm::dvec3& point, const glm::dvec3& own) const {
     point += glm::dvec3(dx * f, dy * f, std::clamp(own.z - point.z, -rise, rise));
 }
 
-void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const {
-    // The first planted point stays where it came down; a next one where the hold puts it then. Either
-    // glides towards the clip's own (FootLock::glide).
+void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own,
+                           const glm::dvec3& from) const {
+    // The first planted point stays where it came down (`from` the free pose's); a next one where the hold
+    // puts it then. Either glides towards the clip's own (FootLock::glide).
     if (first)
-        h.point = planted_point(q.ankle, q.toe, plant);
+        h.point = planted_point(q.ankle, q.toe, plant) + from;
     else if (plant != h.plant)
         h.point += planted_point(q.ankle, q.toe, plant) - planted_point(q.ankle, q.toe, h.plant);
     if (own && !first) glide_towards(h.point, *own);
@@ -158,6 +159,7 @@ void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, 
     h.dragged = glm::length(held - h.target);
     h.point += held - h.target;
     h.target = held;
+    h.toe = held + (q.toe - q.ankle);
 }
 
 glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q) const {
@@ -192,9 +194,13 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
         h.frame = k;
         return &h;
     }
-    // The contact's runs of equal plant, from frame k back to its start (latest first), across clips.
+    return follow_contact(agent, k, foot, free, segments_, h) ? &h : nullptr;
+}
+
+void CrowdPoser::contact_runs(int agent, std::int64_t k, int foot, std::vector<Segment>& runs) {
+    // From frame k back to the contact's start (latest first), across clips.
     const MotionGraph& g = sources_->graph();
-    segments_.clear();
+    runs.clear();
     for (std::int64_t cur = k; cur >= 0;) {
         AgentClipAt at;
         if (!agent_clip_at(record_, g, agent, cur, at)) break;
@@ -206,29 +212,55 @@ const CrowdPoser::Hold* CrowdPoser::contact_target(int agent, std::int64_t k, in
         const std::int64_t begin = t.plant[std::size_t(at.sample)] == Plant::Free
                                        ? at.placed->start
                                        : cur - (at.sample - std::max(t.run_begin[std::size_t(at.sample)], gc.first));
-        if (!segments_.empty() && segments_.back().plant == p)
-            segments_.back().begin = begin;
+        if (!runs.empty() && runs.back().plant == p)
+            runs.back().begin = begin;
         else
-            segments_.push_back({begin, p});
+            runs.push_back({begin, p});
         cur = begin - 1;
     }
-    if (segments_.empty()) return nullptr;
-    // Followed frame by frame from the start, or on from where this agent's hold was left.
-    const std::int64_t start = segments_.back().begin;
-    // A window of samples (use_samples) may have moved since: its disks bound the hold, so start over.
-    if (window_ || h.start != start || h.frame > k || h.frame < start) h = {start, start - 1};
-    std::size_t seg = segments_.size() - 1;
+}
+
+bool CrowdPoser::follow_contact(int agent, std::int64_t k, int foot, const FootFree* free, std::vector<Segment>& runs,
+                                Hold& h) {
+    contact_runs(agent, k, foot, runs);
+    if (runs.empty()) return false;
+    // Followed frame by frame from the start, or on from where h was left.
+    const std::int64_t start = runs.back().begin;
+    // A window of samples (use_samples) may have moved since: its disks bound the hold, so start over. Where
+    // the foot comes down is read first: h may still be the hold let go just before.
+    if (window_ || h.start != start || h.frame > k || h.frame < start) {
+        glm::dvec3 from{0.0};
+        held_before(agent, start, foot, from);
+        h = {start, start - 1};
+        h.from = from;
+    }
+    std::size_t seg = runs.size() - 1;
     for (std::int64_t m = h.frame + 1; m <= k; ++m) {
-        while (seg > 0 && segments_[seg - 1].begin <= m) --seg;
+        while (seg > 0 && runs[seg - 1].begin <= m) --seg;
         FootFree q;
         if (m == k && free)
             q = *free;
         else if (!foot_free(agent, m, foot, q))
-            return nullptr;
-        follow(h, agent, m, foot, q, segments_[seg].plant, m == start);
+            return false;
+        follow(h, agent, m, foot, q, runs[seg].plant, m == start);
         h.frame = m;
     }
-    return &h;
+    return true;
+}
+
+bool CrowdPoser::hold_at(int agent, std::int64_t k, int foot, Hold& out) {
+    // The kept hold where it stands at frame k, else one followed apart: this may run inside contact_target,
+    // whose hold and runs it must leave alone.
+    if (!window_ && !holds_.empty()) {
+        const Hold& kept = holds_[std::size_t(agent)][std::size_t(foot)];
+        if (kept.start >= 0 && kept.frame == k) {
+            out = kept;
+            return true;
+        }
+    }
+    std::vector<Segment> runs;
+    out = {};
+    return follow_contact(agent, k, foot, nullptr, runs, out);
 }
 
 void CrowdPoser::follow(Hold& h, int agent, std::int64_t k, int foot, const FootFree& q, Plant plant, bool first) {
@@ -236,7 +268,7 @@ void CrowdPoser::follow(Hold& h, int agent, std::int64_t k, int foot, const Foot
     AgentClipAt at;
     glm::dvec3 own;
     const bool glides = !first && played_at(agent, k, at) && own_point(at, foot, plant, own);
-    hold_step(h, q, plant, first, glides ? &own : nullptr);
+    hold_step(h, q, plant, first, glides ? &own : nullptr, h.from);
 }
 
 bool CrowdPoser::played_at(int agent, std::int64_t k, AgentClipAt& at) const {
@@ -262,48 +294,173 @@ bool CrowdPoser::own_point(const AgentClipAt& at, int foot, Plant plant, glm::dv
     return true;
 }
 
-bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target,
-                              double& dragged) {
-    if (const Plant plant = plant_at(agent, k, foot, lock_.carry); plant != Plant::Free) {
-        const Hold* h = contact_target(agent, k, foot, plant, &free);
-        if (!h) return false;
-        target = h->target;
-        dragged = h->dragged;
+bool CrowdPoser::ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, AnkleTarget& out) {
+    // A contact first, then a pin (stepped at every frame, so that it follows on), then a release.
+    const Plant plant = plant_at(agent, k, foot, lock_.carry);
+    const Hold* h = plant != Plant::Free ? contact_target(agent, k, foot, plant, &free) : nullptr;
+    if (plant != Plant::Free && !h) return false;
+    const Pin* pin = lock_.pin ? pin_target(agent, k, foot, free, plant) : nullptr;
+    if (h) {
+        out = {h->target, h->dragged, false};
         return true;
     }
-    // Released: the correction at the contact's last frame, decaying (smoothstep) over the release.
-    const int release = int(std::lround(lock_.release / record_.dt));
+    if (pin) {
+        out = {free.ankle + pin->shift, pin->pinned ? pin->dragged : 0.0, pin->pinned};
+        return true;
+    }
+    out = {};
+    return released(agent, k, foot, free, out.at);
+}
+
+bool CrowdPoser::released(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target) {
+    // Let go over the release from where the contact's last frame held it.
+    const int release = release_frames();
     if (free_for(agent, k, foot, release)) return false;
     for (int d = 1; d <= release; ++d) {
         const Plant then = plant_at(agent, k - d, foot, lock_.carry);
         if (then == Plant::Free) continue;
         const Hold* h = contact_target(agent, k - d, foot, then, nullptr);
         if (!h) return false;
-        target = within_reach(free.ankle + release_shift(h->target - h->ankle, d, release, free), free);
+        target = within_reach(free.ankle + release_shift(h->toe, h->target - h->ankle, d, release, free), free);
         return true;
     }
     return false;
 }
 
-// The correction d frames after a contact's last frame: smoothstep down to 0 over the release. While the
-// toe is still on the ground (FootLock::release_height) its horizontal part stays as long as what is left can
-// be gone by the release's end at FootLock::release_speed, and leaves at that speed after.
-glm::dvec3 CrowdPoser::release_shift(const glm::dvec3& correction, int d, int release, const FootFree& free) const {
+// d frames into the release: smoothstep from the hold to the free pose. In the world (release_in_world), the
+// toe goes from where it was held to the free pose's; else the hold's last correction decays against the
+// free pose. Heights decay against the pose either way.
+glm::dvec3 CrowdPoser::release_shift(const glm::dvec3& toe, const glm::dvec3& correction, int d, int release,
+                                     const FootFree& free) const {
     const double s = double(d) / double(release + 1), w = 1.0 - s * s * (3.0 - 2.0 * s);
-    glm::dvec3 out = w * correction;
-    const double ground = std::hypot(correction.x, correction.y);
-    if (free.toe.z >= lock_.release_height || !(ground > 0)) return out;
-    const double in_time = double(release + 1 - d) * lock_.release_speed * record_.dt / ground;
-    const double kept = std::max(w, std::min(1.0, in_time));
-    out.x = kept * correction.x;
-    out.y = kept * correction.y;
-    return out;
+    if (!lock_.release_in_world) return w * correction;
+    return w * glm::dvec3(toe.x - free.toe.x, toe.y - free.toe.y, correction.z);
+}
+
+void CrowdPoser::start_pin(Pin& p, int agent, const PlacedClip* placed, int foot) {
+    // Before the clip's first frame: the last contact frame within a release of it.
+    p = {placed, placed->start - 1};
+    const int release = release_frames();
+    for (int d = 1; d <= release + 1 && p.contact < 0; ++d)
+        if (plant_at(agent, placed->start - d, foot, lock_.carry) != Plant::Free) p.contact = placed->start - d;
+}
+
+bool CrowdPoser::pin_at(Pin& p, int agent, std::int64_t k, int foot, const FootFree* free, const Plant* plant) {
+    // Only in the blend after a clip start and the release after it; followed on from frame k - 1, or from the
+    // clip's start over again.
+    AgentClipAt at;
+    const int release = release_frames();
+    if (!played_at(agent, k, at) || !in_blend(k - at.placed->start - release - 1) || !blends_into(at)) return false;
+    if (window_ || p.placed != at.placed || p.frame != k - 1 || p.frame < at.placed->start - 1)
+        start_pin(p, agent, at.placed, foot);
+    for (std::int64_t m = p.frame + 1; m <= k; ++m) {
+        FootFree q;
+        if (m == k && free)
+            q = *free;
+        else if (!foot_free(agent, m, foot, q))
+            return false;
+        pin_step(p, agent, m, foot, q, m == k && plant ? *plant : plant_at(agent, m, foot, lock_.carry));
+    }
+    return p.holds;
+}
+
+void CrowdPoser::pin_step(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant) {
+    // Let go as after a contact once no longer pinned.
+    p.frame = m;
+    if (plant != Plant::Free) p.contact = m;
+    if (pins(p, agent, m, foot, q, plant)) {
+        p.correction = {p.toe.x - q.toe.x, p.toe.y - q.toe.y, p.height};
+        const glm::dvec3 held = within_reach(q.ankle + p.correction, q);
+        p.dragged = glm::length(held - (q.ankle + p.correction));
+        p.shift = held - q.ankle;
+        p.holds = true;
+        return;
+    }
+    if (p.pinned) p.freed = m;
+    p.pinned = false;
+    const int release = release_frames();
+    p.holds = p.freed >= 0 && m - p.freed < release;
+    if (p.holds)
+        p.shift =
+            within_reach(q.ankle + release_shift(p.toe, p.correction, int(m - p.freed) + 1, release, q), q) - q.ankle;
+}
+
+bool CrowdPoser::pins(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant) {
+    // In the blend with the toe down and no contact: a contact that ended at m - 1 goes on pinned where it
+    // held the toe; else the toe is pinned where it came down, once per blend and not while a contact is
+    // let go (a pin let go and pinned again would start over where the free pose has it).
+    if (!in_blend(m - p.placed->start) || !(q.toe.z < lock_.toe_down) || plant != Plant::Free) return false;
+    if (own_toe_speed(p.placed, m - p.placed->start, foot) > lock_.pin_speed) return false;
+    if (p.pinned) return true;
+    const int release = release_frames();
+    if (p.contact >= 0 && p.contact == m - 1) {
+        Hold h;
+        if (!hold_at(agent, m - 1, foot, h)) return false;
+        p.toe = h.toe;
+        p.height = h.target.z - h.ankle.z;
+    } else if (p.freed >= 0 || (p.contact >= 0 && m - p.contact <= release)) {
+        return false;
+    } else {
+        p.toe = q.toe;
+        p.height = 0;
+    }
+    p.pinned = true;
+    p.freed = -1;
+    return true;
+}
+
+double CrowdPoser::own_toe_speed(const PlacedClip* placed, std::int64_t i, int foot) const {
+    // From the source's toe track (ground speed does not change with the placement).
+    const GraphClip& gc = sources_->graph().clips[std::size_t(placed->clip)];
+    const FootTrack& t = sources_->get(gc.source).feet[std::size_t(foot)];
+    const std::size_t s = std::size_t(gc.first + i);
+    if (s < 1 || s >= t.toe.size()) return 0;
+    return std::hypot(t.toe[s].x - t.toe[s - 1].x, t.toe[s].y - t.toe[s - 1].y) / record_.dt;
+}
+
+bool CrowdPoser::held_before(int agent, std::int64_t start, int foot, glm::dvec3& out) {
+    // A pin, or the release of a contact that ended up to `release` frames before.
+    if (lock_.pin && pin_offset(agent, start - 1, foot, out)) return true;
+    const int release = release_frames();
+    for (int d = 1; d <= release; ++d) {
+        if (plant_at(agent, start - 1 - d, foot, lock_.carry) == Plant::Free) continue;
+        Hold h;
+        FootFree q;
+        if (!hold_at(agent, start - 1 - d, foot, h) || !foot_free(agent, start - 1, foot, q)) return false;
+        const glm::dvec3 target = within_reach(q.ankle + release_shift(h.toe, h.target - h.ankle, d, release, q), q);
+        out = {target.x - q.ankle.x, target.y - q.ankle.y, 0.0};
+        return true;
+    }
+    return false;
+}
+
+bool CrowdPoser::pin_offset(int agent, std::int64_t k, int foot, glm::dvec3& out) {
+    // The kept pin where it stands at frame k, else one followed apart (this runs inside contact_target and
+    // pin_at, whose state it must leave alone).
+    const Pin* kept = pins_.empty() ? nullptr : &pins_[std::size_t(agent)][std::size_t(foot)];
+    Pin apart;
+    if (window_ || !kept || kept->frame != k || !kept->placed || k < kept->placed->start) {
+        if (!pin_at(apart, agent, k, foot, nullptr, nullptr)) return false;
+        kept = &apart;
+    }
+    if (!kept->holds) return false;
+    out = {kept->shift.x, kept->shift.y, 0.0};
+    return true;
+}
+
+const CrowdPoser::Pin* CrowdPoser::pin_target(int agent, std::int64_t k, int foot, const FootFree& free, Plant plant) {
+    // Most frames are outside every blend: answered from the clip posed.
+    if (agent == posed_agent_ && k == posed_frame_ &&
+        (posed_.index == 0 || k - posed_.placed->start > blend_frames_ + release_frames()))
+        return nullptr;
+    if (pins_.empty()) pins_.resize(record_.tracks.size());
+    Pin& p = pins_[std::size_t(agent)][std::size_t(foot)];
+    return pin_at(p, agent, k, foot, &free, &plant) ? &p : nullptr;
 }
 
 void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet) {
-    std::array<glm::dvec3, 2> targets{};
+    std::array<AnkleTarget, 2> targets{};
     std::array<bool, 2> held{};
-    std::array<double, 2> dragged{};
     const double disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
     for (int f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[std::size_t(f)];
@@ -314,10 +471,10 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
                             out[std::size_t(leg.toe)],
                             out[0],
                             disk};
-        held[std::size_t(f)] = ankle_target(agent, k, f, free, targets[std::size_t(f)], dragged[std::size_t(f)]);
+        held[std::size_t(f)] = ankle_target(agent, k, f, free, targets[std::size_t(f)]);
         if (!held[std::size_t(f)]) continue;
         const LegSolve s = two_joint_ik(out[std::size_t(leg.hip)], out[std::size_t(leg.knee)], free.ankle,
-                                        targets[std::size_t(f)], free.toe - free.ankle);
+                                        targets[std::size_t(f)].at, free.toe - free.ankle);
         bend_leg(leg, s, out);
     }
     // The bent legs inside the disk. Blended, free_pose held every joint inside this same disk, so a leg
@@ -327,8 +484,9 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
     if (!feet) return;
     for (std::size_t f = 0; f < 2; ++f) {
         feet->held[f] = held[f];
-        feet->dragged[f] = dragged[f];
-        if (held[f]) feet->residual[f] = glm::length(out[std::size_t(legs_[f].ankle)] - targets[f]);
+        feet->pinned[f] = held[f] && targets[f].pinned;
+        feet->dragged[f] = targets[f].dragged;
+        if (held[f]) feet->residual[f] = glm::length(out[std::size_t(legs_[f].ankle)] - targets[f].at);
     }
 }
 

@@ -119,10 +119,12 @@ struct FeetAt {
     /// The contact the lock holds: `plant`, or one carried through a blend from the clip before
     /// (FootLock::carry); `plant` where locking is off.
     std::array<Plant, 2> hold{};
-    std::array<bool, 2> held{};        ///< the ankle had a target (in contact, or releasing after one)
+    std::array<bool, 2> held{};  ///< the ankle had a target (in contact, pinned, or letting either go)
+    /// Pinned in a blend with no contact (FootLock::pin), not letting the pin go.
+    std::array<bool, 2> pinned{};
     std::array<double, 2> residual{};  ///< metres from the ankle to its target after the IK (and the disk)
-    /// Metres the planted point was lifted or dragged at this frame, where the leg could not reach it or it
-    /// left the disk (FootLock::reach, FootLock::lift); 0 while the hold holds (its glide aside).
+    /// Metres the planted (or pinned) point was lifted or dragged at this frame, where the leg could not reach
+    /// it or it left the disk (FootLock::reach, FootLock::lift); 0 while the hold holds (its glide aside).
     std::array<double, 2> dragged{};
 };
 
@@ -136,8 +138,9 @@ struct FeetAt {
 /// in the world when the contact began (where the planted point changes, the new one's place follows from
 /// the old one's), gliding towards the clip's own planted point (FootLock::glide); the ankle's target is
 /// that point plus the pose's own ankle offset from it, and two_joint_ik bends the leg to reach it (the
-/// rig's joints below the hip follow their segments). After a contact the correction decays over
-/// FootLock::release. The root and every other joint are not touched; the leg is held inside the disk
+/// rig's joints below the hip follow their segments). After a contact the foot is let go over
+/// FootLock::release; a foot low in a blend with no contact is pinned (FootLock::pin); a contact that begins
+/// while either still holds the foot comes down where it is (held_before). The root and every other joint are not touched; the leg is held inside the disk
 /// like blended joints (where that moves the ankle off its target, it shows as the residual).
 class CrowdPoser {
 public:
@@ -185,11 +188,29 @@ private:
         std::int64_t start = -1, frame = -1;
         Plant plant = Plant::Free;
         glm::dvec3 point{0.0}, target{0.0}, ankle{0.0};
-        double dragged = 0;  ///< metres, at `frame`
+        glm::dvec3 toe{0.0};   ///< where the held foot's toe is at `frame` (the release lets it go from there)
+        glm::dvec3 from{0.0};  ///< the ground offset from the free pose it came down at (held_before)
+        double dragged = 0;    ///< metres, at `frame`
+    };
+    /// A foot pinned in a blend (FootLock::pin), followed frame by frame from its clip's start like a Hold.
+    struct Pin {
+        const PlacedClip* placed = nullptr;  ///< the clip whose blend it is
+        std::int64_t frame = -1;             ///< the last frame followed
+        std::int64_t contact = -1;           ///< the last frame up to `frame` in a contact (-1: none near)
+        std::int64_t freed = -1;             ///< the first frame after the pin (-1: none yet)
+        bool pinned = false;                 ///< at `frame`
+        bool holds = false;                  ///< pinned or let go at `frame`: the ankle is moved by `shift`
+        double height = 0;                   ///< metres the ankle is held above the free pose's (a contact's)
+        glm::dvec3 toe{0.0};                 ///< where the toe is pinned
+        glm::dvec3 correction{0.0};          ///< the ankle's from the free pose at the last pinned frame
+        glm::dvec3 shift{0.0};               ///< the ankle's target from the free pose at `frame`
+        double dragged = 0;                  ///< metres the pinned point was lifted or dragged at `frame`
     };
     /// Source sample `sample` of the clip `at` names, placed as that clip (joint 0 on the floor), for rig
     /// joints `joints` (joint 0 among them; the others of `out` are left as they are).
     bool raw(const AgentClipAt& at, int sample, const std::vector<int>& joints, std::vector<glm::dvec3>& out);
+    /// Clip `at` starts where the clip before it reached its exit (back to back), so its start is blended.
+    bool blends_into(const AgentClipAt& at) const;
     /// The pose before foot locking (blended, held inside the disk), for `joints` only.
     bool free_pose(int agent, std::int64_t k, const std::vector<int>& joints, std::vector<glm::dvec3>& out,
                    std::vector<glm::dvec3>& raw_out);
@@ -209,19 +230,61 @@ private:
     Plant carried_into(const AgentClipAt& at, int foot);
     /// Frame i of a clip is blended (PoseBlend::window).
     bool in_blend(std::int64_t i) const;
+    /// FootLock::release in frames.
+    int release_frames() const { return release_frames_; }
     /// True where frame k (the frame being posed) and the `frames` frames before it are free in its clip:
     /// no release to look for (one lookup instead of one per frame back).
     bool free_for(int agent, std::int64_t k, int foot, int frames);
     bool foot_free(int agent, std::int64_t k, int foot, FootFree& out);
     const Hold* contact_target(int agent, std::int64_t k, int foot, Plant plant, const FootFree* free);
+    struct Segment {
+        std::int64_t begin;
+        Plant plant;
+    };
+    /// The runs of equal plant of the contact at frame k, from k back to its start (latest first).
+    void contact_runs(int agent, std::int64_t k, int foot, std::vector<Segment>& runs);
+    /// The hold of the contact at frame k, followed into `h` from the contact's start (or on from where h
+    /// stands in it); `runs` is scratch. False where a pose is missing.
+    bool follow_contact(int agent, std::int64_t k, int foot, const FootFree* free, std::vector<Segment>& runs, Hold& h);
+    /// The hold of the contact at frame k (without moving the kept holds).
+    bool hold_at(int agent, std::int64_t k, int foot, Hold& out);
     void follow(Hold& h, int agent, std::int64_t k, int foot, const FootFree& q, Plant plant, bool first);
-    void hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own) const;
+    void hold_step(Hold& h, const FootFree& q, Plant plant, bool first, const glm::dvec3* own,
+                   const glm::dvec3& from) const;
     void glide_towards(glm::dvec3& point, const glm::dvec3& own) const;
     bool own_point(const AgentClipAt& at, int foot, Plant plant, glm::dvec3& out);
     bool played_at(int agent, std::int64_t k, AgentClipAt& at) const;
     glm::dvec3 within_reach(const glm::dvec3& target, const FootFree& q) const;
-    glm::dvec3 release_shift(const glm::dvec3& correction, int d, int release, const FootFree& free) const;
-    bool ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target, double& dragged);
+    /// The ankle's shift from the free pose d frames into a release (1 <= d <= `release`) of a foot whose toe
+    /// was held at `toe`, the ankle `correction` off the free pose's then.
+    glm::dvec3 release_shift(const glm::dvec3& toe, const glm::dvec3& correction, int d, int release,
+                             const FootFree& free) const;
+    /// What the lock does with one ankle at one frame: its target, metres the planted or pinned point was
+    /// lifted or dragged to it, and whether a pin holds it.
+    struct AnkleTarget {
+        glm::dvec3 at{0.0};
+        double dragged = 0;
+        bool pinned = false;
+    };
+    bool ankle_target(int agent, std::int64_t k, int foot, const FootFree& free, AnkleTarget& out);
+    /// The ankle's target while letting go after a contact, or false.
+    bool released(int agent, std::int64_t k, int foot, const FootFree& free, glm::dvec3& target);
+    /// Pin `p` at frame k (k's clip's blend or the release after it), followed on or over from the clip's
+    /// start (`free`, `plant`: frame k's free pose and contact, where known); whether it holds the foot there.
+    bool pin_at(Pin& p, int agent, std::int64_t k, int foot, const FootFree* free, const Plant* plant);
+    void start_pin(Pin& p, int agent, const PlacedClip* placed, int foot);
+    void pin_step(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant);
+    /// m/s: how fast frame i of clip `placed` moves the foot's toe over the ground, as captured.
+    double own_toe_speed(const PlacedClip* placed, std::int64_t i, int foot) const;
+    /// Pin `p` holds the foot pinned at frame m (starting it where it starts).
+    bool pins(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant);
+    /// The ground offset from the free pose at which a pin or a release holds the ankle at frame start - 1,
+    /// where a contact begins at `start` (so it comes down where the foot is), or false.
+    bool held_before(int agent, std::int64_t start, int foot, glm::dvec3& out);
+    /// The ground offset from the free pose at which a pin (or its letting go) has the ankle at frame k.
+    bool pin_offset(int agent, std::int64_t k, int foot, glm::dvec3& out);
+    /// The kept pin at frame k (free pose and contact there given), or null where none holds the foot.
+    const Pin* pin_target(int agent, std::int64_t k, int foot, const FootFree& free, Plant plant);
     void lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet);
 
     const Record& record_;
@@ -235,15 +298,14 @@ private:
     std::array<std::vector<int>, 2> leg_joints_;  // per leg, the joints bending moves (root first)
     std::array<std::vector<int>, 2> foot_;        // per foot: root, hip, knee, ankle, toe
     std::vector<std::array<Hold, 2>> holds_;      // per agent and foot
+    std::vector<std::array<Pin, 2>> pins_;        // per agent and foot
+    int release_frames_ = 0;                      // FootLock::release in frames
+    std::int64_t blend_frames_ = 0;               // frames a clip start blends (in_blend): ceil(window / dt)
     double disk_ = 0;                             // e(k) of the last free_pose (with blending)
     AgentClipAt posed_;                           // the clip of the frame pose() poses (agent -1: none)
     int posed_agent_ = -1;
     std::int64_t posed_frame_ = 0;
     std::vector<glm::dvec3> a_, b_, c_, d_, e_, u_;
-    struct Segment {
-        std::int64_t begin;
-        Plant plant;
-    };
     std::vector<Segment> segments_;
     struct CarryCache {
         const PlacedClip* placed = nullptr;

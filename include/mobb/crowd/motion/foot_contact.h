@@ -78,8 +78,9 @@ std::vector<ContactSpan> clip_contacts(const std::array<FootTrack, 2>& feet, con
 /// at most `reach` of the leg's length (thigh + shin), or the free pose's own where that is more: a foot
 /// held beyond is dragged along towards the hip (the root path is never changed, so where two clips
 /// disagree on where a planted foot stands, it slides by what the leg cannot absorb); and how a lock lets
-/// go at a contact's end - the ankle's offset from where the free pose has it decays to zero over
-/// `release` seconds (smoothstep), as blending's offsets do.
+/// go at a contact's end - the toe goes from where the hold left it to where the free pose has it over
+/// `release` seconds (smoothstep), as blending's offsets ease out; and a foot low in a blend with no
+/// contact, pinned (`pin`).
 struct FootLock {
     bool on = true;
     double reach = 0.98;  ///< of the leg's length: a walker's knee at heel strike is nearly straight
@@ -92,18 +93,30 @@ struct FootLock {
     /// first frame but the clip before had it planted at its end: the blend eases out of a planted pose, so
     /// its foot stays low while the offset carries it towards the new clip's swing (it skated there).
     bool carry = true;
-    /// Metres; 0 turns it off. During the release the correction's horizontal part is kept while the free
-    /// pose's toe is below this height (GMD's contact height, motion_metrics.h) and what is left can still
-    /// go by the release's end at release_speed: a foot on the ground keeps its place and only its height
-    /// eases; once the toe lifts, the correction decays as above. Letting go while the toe was low moved it
-    /// faster than the clip does (on the 100-agent wander, seeds 1-3, walk clips skated in 11.3 / 11.0 /
-    /// 11.1 % of GMD's contact steps without it, 10.9 / 10.7 / 10.7 % with it).
-    double release_height = 0.05;
-    /// m/s: how fast a kept correction leaves a toe still down at the release's end (5 cm a frame at 30 Hz).
-    /// Kept whole to the end, the release dropped up to 53 cm in one frame on the test crowd; at 0.3 or 0.6
-    /// m/s walk clips skated in 11.1 and 10.9 % of the contact steps on seed 1 (10.9 % at 1.5 m/s, 10.8 %
-    /// kept whole).
-    double release_speed = 1.5;
+    /// The release moves the let-go foot in the world: its toe goes from where the hold left it to where the
+    /// free pose has it (smoothstep over `release`), so a foot that the blend or the clip moves over the
+    /// floor stays behind and catches up. Off, the correction decays against the free pose (Kovar et al.)
+    /// and the foot slides with the pose. On the 100-agent wander, seeds 1-3, % of GMD's contact steps that
+    /// skate, walk / slow clips: both this and `pin` off 8.9 / 8.5 / 8.7 and 11.1 / 11.2 / 11.3; this alone
+    /// 8.2 / 7.8 / 8.0 and 9.8 / 9.9 / 9.9; `pin` alone 8.5 / 8.1 / 8.2 and 10.5 / 10.6 / 10.6; both 7.7 /
+    /// 7.3 / 7.5 and 9.1 / 9.3 / 9.3 (the raw clips: 8.8 / 8.5 / 8.6 and 7.7 / 7.9 / 7.7; bench/results/feet.md).
+    bool release_in_world = true;
+    /// In the blend after a clip start, a foot in no contact whose toe the blended pose has below `toe_down`
+    /// and the clip itself moves slower than `pin_speed` is pinned: where a contact that just ended held it,
+    /// else where the toe came down (once per blend, not while a contact is let go). It is let go as after a
+    /// contact once the toe lifts or speeds up, a contact begins or the blend ends: the blend's decaying
+    /// offset would slide it over the floor (up to 6 times the offset per second). A contact that begins
+    /// while a pin or a release holds the foot comes down where they left it: on the 100-agent wander, seed
+    /// 1, the toe steps 4.5 cm at p99 in such a first frame, as before pins (4.6 cm); coming down where the
+    /// free pose has the foot, 23 cm at p99 (pins at any speed, seed 2).
+    bool pin = true;
+    /// m/s: a foot the clip itself moves faster than this (GMD's skating speed, FootContact::kSkateSpeed) is
+    /// swinging or sliding as captured, not pinned. Pinned at any speed, slow clips skated less (6.5 / 6.5 /
+    /// 6.6 % on the wander against 9.1 / 9.3 / 9.3), but a foot landing from a swing was held short of where it
+    /// lands and then dragged by the leg: planted slide p99 up to 5.2 cm in the goal scenarios (0.5-3.1 cm).
+    double pin_speed = 0.5;
+    /// Metres: a toe below this is on the floor (GMD's contact height, FootContact::kHeight).
+    double toe_down = 0.05;
     /// m/s, on the ground; 0 holds the planted point still. While the clip played has the contact itself
     /// (not one carried through a blend), the held point moves towards where that clip has the planted point
     /// at most this fast, so a foot that came down where a blend's offset put it, up to 20-30 cm from the
