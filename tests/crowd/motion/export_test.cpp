@@ -423,6 +423,44 @@ TEST(FootLock, AFootLowInABlendIsPinned) {
     EXPECT_LT(low_steps(FootLock{}, blended_low).moved, low_steps(off, blended_low).moved);
 }
 
+// The fastest the clip itself moves a pinned toe (the raw clip's step, within one clip), over the test crowd,
+// and how many frames are pinned.
+double fastest_pinned(FootLock lock, int& pinned) {
+    CrowdPoser p(record(), std::make_shared<PoseSources>(graph()), RigJoints::All, {}, lock);
+    std::vector<glm::dvec3> pose, raw, unlocked, last_raw;
+    FeetAt feet;
+    double fastest = 0;
+    pinned = 0;
+    for (int a = 0; a < int(record().tracks.size()); ++a)
+        for (std::int64_t k = 0; k < record().frames; ++k) {
+            AgentClipAt at;
+            if (!agent_clip_at(record(), *graph(), a, k, at) || !p.pose(a, k, pose, raw, unlocked, &feet)) continue;
+            const bool within = k > at.placed->start;  // frame k - 1 is the same clip's
+            for (std::size_t f = 0; f < 2 && within; ++f) {
+                if (!feet.pinned[f]) continue;
+                const std::size_t toe = std::size_t(p.legs()[f].toe);
+                ++pinned;
+                fastest = std::max(fastest, ground_step(last_raw[toe], raw[toe]) / record().dt);
+            }
+            last_raw = raw;
+        }
+    return fastest;
+}
+
+// A pin holds a foot the blend moves, not one the clip itself moves faster than FootLock::pin_speed (a swing
+// or a slide as captured). Pinned at any speed, the test crowd has more toes pinned, some of which the clip
+// moves at over twice that speed.
+TEST(FootLock, AFootTheClipMovesIsNotPinned) {
+    MOBB_REQUIRE_MOCAP();
+    int pinned = 0, any_speed_pinned = 0;
+    FootLock any_speed;
+    any_speed.pin_speed = 1e9;
+    EXPECT_LE(fastest_pinned(FootLock{}, pinned), FootLock{}.pin_speed + 1e-9);
+    EXPECT_GT(fastest_pinned(any_speed, any_speed_pinned), 2 * FootLock{}.pin_speed);
+    EXPECT_GT(pinned, 20);
+    EXPECT_GT(any_speed_pinned, pinned);
+}
+
 // A contact that begins while a pin or a release still holds the foot comes down where that left it: at its
 // first frame the ankle moves as the free pose's does (a leg out of reach aside), where it jumped to the
 // free pose's place before (136 such starts on the test crowd, the foot held up to 6 cm off the free pose).
