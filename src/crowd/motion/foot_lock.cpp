@@ -386,9 +386,10 @@ void CrowdPoser::pin_step(Pin& p, int agent, std::int64_t m, int foot, const Foo
 }
 
 bool CrowdPoser::pins(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant) {
-    // In the blend with the toe down and no contact: a contact that ended at m - 1 goes on pinned where it
-    // held the toe; else the toe is pinned where it came down, once per blend and not while a contact is
-    // let go (a pin let go and pinned again would start over where the free pose has it).
+    // In the blend with the toe down, no contact, and the clip itself moving the toe slower than pin_speed
+    // (else it is a swing as captured): a contact that ended at m - 1 goes on pinned where it held the toe;
+    // else the toe is pinned where it came down, once per blend and not while a contact is let go (a pin let
+    // go and pinned again would start over where the free pose has it).
     if (!in_blend(m - p.placed->start) || !(q.toe.z < lock_.toe_down) || plant != Plant::Free) return false;
     if (own_toe_speed(p.placed, m - p.placed->start, foot) > lock_.pin_speed) return false;
     if (p.pinned) return true;
