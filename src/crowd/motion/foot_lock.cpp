@@ -136,7 +136,7 @@ bool CrowdPoser::foot_free(int agent, std::int64_t k, int foot, FootFree& out) {
 
 void CrowdPoser::glide_towards(glm::dvec3& point, const glm::dvec3& own) const {
     // On the ground at most FootLock::glide, in height at most FootLock::glide_height.
-    const double dx = own.x - point.x, dy = own.y - point.y, d = std::hypot(dx, dy);
+    const double dx = own.x - point.x, dy = own.y - point.y, d = std::sqrt(dx * dx + dy * dy);
     const double most = lock_.glide * record_.dt, f = d > most ? most / d : 1.0;
     const double rise = lock_.glide_height * record_.dt;
     point += glm::dvec3(dx * f, dy * f, std::clamp(own.z - point.z, -rise, rise));
@@ -169,11 +169,11 @@ glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q)
     const double leg = glm::length(q.knee - q.hip) + glm::length(q.ankle - q.knee);
     const double limit = std::min(leg, std::max(glm::length(q.ankle - q.hip), lock_.reach * leg));
     glm::dvec3 out = target;
-    const double ground = std::hypot(target.x - q.hip.x, target.y - q.hip.y);
+    const double gx = target.x - q.hip.x, gy = target.y - q.hip.y, ground = std::sqrt(gx * gx + gy * gy);
     if (lock_.lift && ground < limit) out.z = std::max(out.z, q.hip.z - std::sqrt(limit * limit - ground * ground));
     const double d = glm::length(out - q.hip);
     if (d > limit) out = q.hip + (out - q.hip) * (limit / d);
-    const double dx = out.x - q.root.x, dy = out.y - q.root.y, from_root = std::hypot(dx, dy);
+    const double dx = out.x - q.root.x, dy = out.y - q.root.y, from_root = std::sqrt(dx * dx + dy * dy);
     if (from_root > q.disk) {
         const double f = q.disk * (1 - 1e-12) / from_root;
         out = {q.root.x + dx * f, q.root.y + dy * f, out.z};
@@ -386,12 +386,13 @@ void CrowdPoser::pin_step(Pin& p, int agent, std::int64_t m, int foot, const Foo
 }
 
 bool CrowdPoser::pins(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant) {
-    // In the blend with the toe down, no contact, and the clip itself moving the toe slower than pin_speed
-    // (else it is a swing as captured): a contact that ended at m - 1 goes on pinned where it held the toe;
+    // In the blend with the toe down, no contact, and, in a walk, the clip itself moving the toe slower than
+    // pin_speed (else it is a swing as captured): a contact that ended at m - 1 goes on pinned where it held the toe;
     // else the toe is pinned where it came down, once per blend and not while a contact is let go (a pin let
     // go and pinned again would start over where the free pose has it).
     if (!in_blend(m - p.placed->start) || !(q.toe.z < lock_.toe_down) || plant != Plant::Free) return false;
-    if (own_toe_speed(p.placed, m - p.placed->start, foot) > lock_.pin_speed) return false;
+    const bool shuffles = lock_.pin_shuffles && !walks_[std::size_t(p.placed->clip)];
+    if (!shuffles && own_toe_speed(p.placed, m - p.placed->start, foot) > lock_.pin_speed) return false;
     if (p.pinned) return true;
     const int release = release_frames();
     if (p.contact >= 0 && p.contact == m - 1) {

@@ -422,9 +422,9 @@ TEST(FootLock, AFootLowInABlendIsPinned) {
     EXPECT_LT(low_steps(FootLock{}, blended_low).moved, low_steps(off, blended_low).moved);
 }
 
-// The fastest the clip itself moves a pinned toe (the raw clip's step, within one clip), over the test crowd,
-// and how many frames are pinned.
-double fastest_pinned(FootLock lock, int& pinned) {
+// The fastest the clip itself moves a pinned toe (the raw clip's step, within one clip) in walk clips or in the
+// others, over the test crowd, and how many frames of those are pinned.
+double fastest_pinned(FootLock lock, bool walks, int& pinned) {
     CrowdPoser p(record(), std::make_shared<PoseSources>(graph()), RigJoints::All, {}, lock);
     double fastest = 0;
     pinned = 0;
@@ -432,6 +432,8 @@ double fastest_pinned(FootLock lock, int& pinned) {
         AgentClipAt at;
         // Frame k - 1 must be the same clip's for the raw step to be the clip's own.
         if (!now.feet.pinned[f] || !agent_clip_at(record(), *graph(), a, k, at) || k == at.placed->start) return;
+        const int clip = at.placed->clip;
+        if ((kind_of(graph()->clips[std::size_t(clip)], clip) == ClipKind::Walk) != walks) return;
         const std::size_t toe = std::size_t(p.legs()[f].toe);
         ++pinned;
         fastest = std::max(fastest, ground_step(before.raw[toe], now.raw[toe]) / record().dt);
@@ -439,18 +441,24 @@ double fastest_pinned(FootLock lock, int& pinned) {
     return fastest;
 }
 
-// A pin holds a foot the blend moves, not one the clip itself moves faster than FootLock::pin_speed (a swing
-// or a slide as captured). Pinned at any speed, the test crowd has more toes pinned, some of which the clip
-// moves at over twice that speed.
-TEST(FootLock, AFootTheClipMovesIsNotPinned) {
+// In a walk a pin holds a foot the blend moves, not one the clip itself moves faster than FootLock::pin_speed
+// (a swing or a slide as captured); in the other clips (FootLock::pin_shuffles) a low foot is pinned at any
+// speed. Pinned at any speed in walks too, the test crowd has more walking toes pinned, some of which the clip
+// moves at over twice that speed; without pin_shuffles no toe is pinned faster than pin_speed.
+TEST(FootLock, AFootTheClipMovesIsPinnedOnlyOutsideWalks) {
     MOBB_REQUIRE_MOCAP();
-    int pinned = 0, any_speed_pinned = 0;
-    FootLock any_speed;
+    const double limit = FootLock{}.pin_speed;
+    int walking = 0, any_speed_walking = 0, shuffling = 0, not_shuffling = 0;
+    FootLock any_speed, no_shuffles;
     any_speed.pin_speed = 1e9;
-    EXPECT_LE(fastest_pinned(FootLock{}, pinned), FootLock{}.pin_speed + 1e-9);
-    EXPECT_GT(fastest_pinned(any_speed, any_speed_pinned), 2 * FootLock{}.pin_speed);
-    EXPECT_GT(pinned, 20);
-    EXPECT_GT(any_speed_pinned, pinned);
+    no_shuffles.pin_shuffles = false;
+    EXPECT_LE(fastest_pinned(FootLock{}, true, walking), limit + 1e-9);
+    EXPECT_GT(fastest_pinned(any_speed, true, any_speed_walking), 2 * limit);
+    EXPECT_GT(walking, 20);
+    EXPECT_GT(any_speed_walking, walking);
+    EXPECT_GT(fastest_pinned(FootLock{}, false, shuffling), 2 * limit);
+    EXPECT_LE(fastest_pinned(no_shuffles, false, not_shuffling), limit + 1e-9);
+    EXPECT_GT(shuffling, not_shuffling);
 }
 
 // A contact that begins while a pin or a release still holds the foot comes down where that left it: at its

@@ -110,11 +110,19 @@ struct FootLock {
     /// 1, the toe steps 4.5 cm at p99 in such a first frame, as before pins (4.6 cm); coming down where the
     /// free pose has the foot, 23 cm at p99 (pins at any speed, seed 2).
     bool pin = true;
-    /// m/s: a foot the clip itself moves faster than this (GMD's skating speed, FootContact::kSkateSpeed) is
-    /// swinging or sliding as captured, not pinned. Pinned at any speed, slow clips skated less (6.5 / 6.5 /
+    /// m/s: in a walk clip, a foot the clip itself moves faster than this (GMD's skating speed,
+    /// FootContact::kSkateSpeed) is swinging or sliding as captured, not pinned. Pinned at any speed, slow clips skated less (6.5 / 6.5 /
     /// 6.6 % on the wander against 9.1 / 9.3 / 9.3), but a foot landing from a swing was held short of where it
     /// lands and then dragged by the leg: planted slide p99 up to 5.2 cm in the goal scenarios (0.5-3.1 cm).
     double pin_speed = 0.5;
+    /// In clips that are not walks (slow: starting, stopping; in place: turning on the spot; idle) a low foot
+    /// is pinned whatever speed the clip itself moves it at: there a foot the capture moves while its toe is
+    /// down shuffles or pivots, it does not land from a swing, and a pin has no landing to drag. On the
+    /// 100-agent wander, seeds 1-3, slow clips then skate in 6.5 / 6.5 / 6.6 % of GMD's contact steps (9.1 /
+    /// 9.3 / 9.3 off; the raw clips 7.7 / 7.9 / 7.7), walk clips as off; planted slide p99 of slow clips 0.50
+    /// / 0.75 / 0.61 cm (0.50 / 0.61 / 0.50 off). Pinning at any speed in walks as well dragged landing feet
+    /// (above).
+    bool pin_shuffles = true;
     /// Metres: a toe below this is on the floor (GMD's contact height, FootContact::kHeight).
     double toe_down = 0.05;
     /// m/s, on the ground; 0 holds the planted point still. While the clip played has the contact itself
