@@ -120,7 +120,7 @@ bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_
     return true;
 }
 
-const PoseSource& PoseSources::get(int source) {
+const PoseSource& PoseSources::load(int source) {
     if (sources_.empty()) sources_.resize(graph_->sources.size());
     auto& slot = sources_.at(std::size_t(source));
     if (!slot) {

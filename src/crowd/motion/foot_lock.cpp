@@ -277,6 +277,14 @@ bool CrowdPoser::played_at(int agent, std::int64_t k, AgentClipAt& at) const {
         at.sample -= int(posed_frame_ - k);
         return true;
     }
+    if (agent == posed_agent_ && posed_.index > 0 && k < posed_.placed->start && k >= (posed_.placed - 1)->start) {
+        // In the clip before it (a blend's and a release's lookups back): no search either.
+        const PlacedClip* before = posed_.placed - 1;
+        const GraphClip& gc = sources_->graph().clips[std::size_t(before->clip)];
+        if (k - before->start >= std::int64_t(gc.exit - gc.first)) return false;
+        at = {before, posed_.index - 1, gc.first + int(k - before->start)};
+        return true;
+    }
     return k >= 0 && agent_clip_at(record_, sources_->graph(), agent, k, at);
 }
 

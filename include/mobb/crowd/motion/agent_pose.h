@@ -55,7 +55,13 @@ bool agent_clip_at(const Record& r, const MotionGraph& g, int agent, std::int64_
 class PoseSources {
 public:
     explicit PoseSources(std::shared_ptr<const MotionGraph> graph) : graph_(std::move(graph)) {}
-    const PoseSource& get(int source);
+    /// Graph source `source`, loaded on first use. Throws std::out_of_range for a source the graph lacks.
+    const PoseSource& get(int source) {
+        // Loaded already: no call (the foot lock asks for a clip's source several times a frame).
+        if (std::size_t(source) < sources_.size() && sources_[std::size_t(source)])
+            return *sources_[std::size_t(source)];
+        return load(source);
+    }
     /// The foot contacts of graph clip `clip` (clip_contacts; loads its source; empty when it cannot be).
     const std::vector<ContactSpan>& contacts(int clip);
     /// The first load failure met so far ("" when none).
@@ -65,6 +71,7 @@ public:
 
 private:
     std::shared_ptr<const MotionGraph> graph_;
+    const PoseSource& load(int source);
     std::vector<std::unique_ptr<PoseSource>> sources_;
     std::vector<std::vector<ContactSpan>> contacts_;  ///< per clip, filled as its source loads
     std::string error_;
