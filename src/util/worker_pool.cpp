@@ -12,30 +12,13 @@ namespace {
 // no faster on 2 threads than on 1.)
 constexpr auto kSpin = std::chrono::microseconds(3000);
 
-// A spinning core's hint that it waits (x86 `pause`, Arm `yield`): it frees the core's other hardware thread
-// and costs no system call, where std::this_thread::yield is one (sched_yield; under gVisor, a trap into its
-// kernel: 464 s of system time in a million-agent run on 16 threads).
-inline void relax() {
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#elif defined(__aarch64__)
-    asm volatile("yield");
-#endif
-}
-
-// Yields the thread only every 64th check (about every 10 us), so a machine with more threads than cores
-// still runs the thread the spinner waits for.
 template <class Ready>
 bool spin_until(Ready&& ready) {
     const auto end = std::chrono::steady_clock::now() + kSpin;
     for (int k = 0;; ++k) {
         if (ready()) return true;
-        if ((k & 63) == 63) {
-            if (std::chrono::steady_clock::now() > end) return false;
-            std::this_thread::yield();
-        } else {
-            relax();
-        }
+        if ((k & 63) == 63 && std::chrono::steady_clock::now() > end) return false;
+        std::this_thread::yield();
     }
 }
 
