@@ -25,6 +25,12 @@ ClipKind kind_of(const GraphClip& c, int id) {
     return exit / c.path.duration() < kWalking ? ClipKind::Slow : ClipKind::Walk;
 }
 
+std::vector<ClipKind> kinds_of(const MotionGraph& graph) {
+    std::vector<ClipKind> kinds;
+    for (std::size_t c = 0; c < graph.clips.size(); ++c) kinds.push_back(kind_of(graph.clips[c], int(c)));
+    return kinds;
+}
+
 const char* to_string(ClipKind kind) {
     switch (kind) {
         case ClipKind::Walk: return "walk";

@@ -223,7 +223,7 @@ CrowdPoser::CrowdPoser(const Record& record, std::shared_ptr<PoseSources> source
     rig_ = crowd_rig(*sources_, joints);
     legs_ = rig_legs(rig_);
     for (int j = 0; j < rig_.size(); ++j) all_.push_back(j);
-    for (std::size_t c = 0; c < g.clips.size(); ++c) walks_.push_back(kind_of(g.clips[c], int(c)) == ClipKind::Walk);
+    kinds_ = kinds_of(g);
     for (std::size_t f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[f];
         if (!leg.complete()) continue;

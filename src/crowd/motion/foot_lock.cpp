@@ -395,11 +395,11 @@ void CrowdPoser::pin_step(Pin& p, int agent, std::int64_t m, int foot, const Foo
 
 bool CrowdPoser::pins(Pin& p, int agent, std::int64_t m, int foot, const FootFree& q, Plant plant) {
     // In the blend with the toe down, no contact, and, in a walk, the clip itself moving the toe slower than
-    // pin_speed (else it is a swing as captured): a contact that ended at m - 1 goes on pinned where it held the toe;
-    // else the toe is pinned where it came down, once per blend and not while a contact is let go (a pin let
-    // go and pinned again would start over where the free pose has it).
+    // pin_speed (else it is a swing as captured): a contact that ended at m - 1 goes on pinned where it held
+    // the toe; else the toe is pinned where it came down, once per blend and not while a contact is let go (a
+    // pin let go and pinned again would start over where the free pose has it).
     if (!in_blend(m - p.placed->start) || !(q.toe.z < lock_.toe_down) || plant != Plant::Free) return false;
-    const bool shuffles = lock_.pin_shuffles && !walks_[std::size_t(p.placed->clip)];
+    const bool shuffles = lock_.pin_shuffles && kinds_[std::size_t(p.placed->clip)] != ClipKind::Walk;
     if (!shuffles && own_toe_speed(p.placed, m - p.placed->start, foot) > lock_.pin_speed) return false;
     if (p.pinned) return true;
     const int release = release_frames();

@@ -225,8 +225,7 @@ CrowdMotion motion_metrics(CrowdPoser& poser, const std::vector<int>& agents, st
                            std::int64_t frame_end, int threads) {
     const auto t0 = std::chrono::steady_clock::now();
     const MotionGraph& g = poser.sources().graph();
-    std::vector<ClipKind> kinds;
-    for (std::size_t c = 0; c < g.clips.size(); ++c) kinds.push_back(kind_of(g.clips[c], int(c)));
+    const std::vector<ClipKind> kinds = kinds_of(g);
     std::vector<AgentTally> tallies(agents.size());
     // Each worker poses with its own copy (a poser's scratch is its own; the loaded sources are shared).
     util::WorkerPool pool(std::max(1, std::min(threads, int(agents.size()))));

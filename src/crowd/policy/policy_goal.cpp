@@ -32,7 +32,7 @@ public:
           tuning_(c.tuning),
           radius_(c.goal_radius),
           grid_(c.world, c.tuning.goal.nav_clearance, nav_cell(c.world, distinct_goals(c.goals))) {
-        for (int k = 0; k < int(graph_.clips.size()); ++k) kinds_.push_back(kind_of(graph_.clips[std::size_t(k)], k));
+        kinds_ = kinds_of(graph_);
         // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
         // stops that much inside the goal radius so that it stays within it to the end.
         double sway = 0;

@@ -90,6 +90,9 @@ struct MotionGraph {
     }
 };
 
+/// kind_of() of every clip of `graph`, by clip id.
+std::vector<ClipKind> kinds_of(const MotionGraph& graph);
+
 struct GraphBuildOptions {
     double fps = 30;          ///< resample every input (the paper's clips: 63 frames in 2.1 s); 1 to 1000
     double threshold = 0.12;  ///< metres, RMS pose distance

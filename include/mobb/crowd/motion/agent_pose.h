@@ -306,7 +306,7 @@ private:
     std::array<std::vector<int>, 2> foot_;        // per foot: root, hip, knee, ankle, toe
     std::vector<std::array<Hold, 2>> holds_;      // per agent and foot
     std::vector<std::array<Pin, 2>> pins_;        // per agent and foot
-    std::vector<bool> walks_;                     // per graph clip: ClipKind::Walk (FootLock::pin_shuffles)
+    std::vector<ClipKind> kinds_;                 // per graph clip (FootLock::pin_shuffles)
     int release_frames_ = 0;                      // FootLock::release in frames
     std::int64_t blend_frames_ = 0;               // frames a clip start blends (in_blend): ceil(window / dt)
     double disk_ = 0;                             // e(k) of the last free_pose (with blending)

@@ -111,9 +111,9 @@ struct FootLock {
     /// free pose has the foot, 23 cm at p99 (pins at any speed, seed 2).
     bool pin = true;
     /// m/s: in a walk clip, a foot the clip itself moves faster than this (GMD's skating speed,
-    /// FootContact::kSkateSpeed) is swinging or sliding as captured, not pinned. Pinned at any speed, slow clips skated less (6.5 / 6.5 /
-    /// 6.6 % on the wander against 9.1 / 9.3 / 9.3), but a foot landing from a swing was held short of where it
-    /// lands and then dragged by the leg: planted slide p99 up to 5.2 cm in the goal scenarios (0.5-3.1 cm).
+    /// FootContact::kSkateSpeed) is swinging or sliding as captured, not pinned. Pinned at any speed in walks
+    /// too, a foot landing from a swing was held short of where it lands and then dragged by the leg: planted
+    /// slide p99 up to 5.2 cm in the goal scenarios (0.5-3.1 cm).
     double pin_speed = 0.5;
     /// In clips that are not walks (slow: starting, stopping; in place: turning on the spot; idle) a low foot
     /// is pinned whatever speed the clip itself moves it at: there a foot the capture moves while its toe is
