@@ -98,16 +98,24 @@ private:
     [[noreturn]] void fail(const std::string& message) const { throw LoadError(file_ + ": " + message); }
     void warn(const std::string& message) { result_.warnings.push_back(file_ + ": " + message); }
 
-    void import(const std::string& bytes) {
-        importer_.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
-        importer_.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);    // no made-up bones (Collada)
-        std::string hint = std::filesystem::path(file_).extension().string();
-        if (!hint.empty()) hint.erase(0, 1);
+    // What would take Assimp down rather than make it throw (fbx_scan.h).
+    void refuse_hazards(const std::string& bytes) const {
         const fbx::Hazards hazards = fbx::hazards(bytes);
         if (hazards.cycle) fail("FBX connections form a cycle through object " + std::to_string(*hazards.cycle));
         if (hazards.impossible_array)
             fail("an FBX array declares more values than the file's " + std::to_string(bytes.size()) +
                  " bytes can hold");
+        if (hazards.overrun)
+            fail("the FBX record at byte " + std::to_string(*hazards.overrun) +
+                 " declares more property bytes than the file holds");
+    }
+
+    void import(const std::string& bytes) {
+        importer_.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);  // no $AssimpFbx$ helper nodes
+        importer_.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);    // no made-up bones (Collada)
+        std::string hint = std::filesystem::path(file_).extension().string();
+        if (!hint.empty()) hint.erase(0, 1);
+        refuse_hazards(bytes);
         const aiScene* scene = nullptr;
         std::string error;
         try {

@@ -42,6 +42,7 @@ public:
             const std::size_t name_at = at + 3 * word + 1;
             if (next <= at || next > end || !read(b_, name_at - 1, name_length)) return;
             const std::size_t props = name_at + name_length;
+            if (props <= b_.size() && length > b_.size() - props) overrun_ = at;
             if (props > next || length > next - props) return;
             if (name_length == 1 && b_[name_at] == 'C') connection(props, props + length);
             arrays(props, props + std::size_t(length), count);
@@ -53,6 +54,8 @@ public:
     const std::vector<Edge>& edges() const { return edges_; }
     /// The largest length a zlib-compressed array declares beyond what its bytes can inflate to.
     std::optional<std::uint64_t> oversized() const { return oversized_; }
+    /// The record whose property bytes run past the file's end, if any.
+    std::optional<std::size_t> overrun() const { return overrun_; }
 
 private:
     bool number(std::size_t at, std::uint64_t& out) const {
@@ -123,6 +126,7 @@ private:
     std::vector<Edge> edges_;
     bool wide_ = false;
     std::optional<std::uint64_t> oversized_;
+    std::optional<std::size_t> overrun_;
 };
 
 // ASCII FBX: tokens as Assimp cuts them (whitespace and commas separate, ';' comments to the end of the
@@ -245,11 +249,11 @@ Hazards hazards(const std::string& bytes) {
     if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) {
         BinaryScan scan(bytes);
         scan.records(kBinaryHeader, bytes.size(), 0);
-        return {find_cycle(scan.edges()), scan.oversized()};
+        return {find_cycle(scan.edges()), scan.oversized(), scan.overrun()};
     }
     std::vector<Edge> edges;
     ascii_scan(bytes, edges);
-    return {find_cycle(edges), ascii_impossible_array(bytes)};
+    return {find_cycle(edges), ascii_impossible_array(bytes), std::nullopt};
 }
 
 bool names_property(const std::string& bytes, const std::string& name) {

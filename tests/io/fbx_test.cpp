@@ -259,6 +259,33 @@ TEST_F(Fbx, ABinaryArrayDeflateCannotFillIsRefusedBeforeAssimpAllocatesIt) {
                                                               std::to_string(bomb.size()) + " bytes can hold");
 }
 
+// A binary FBX 7500 (64-bit record words) of one record whose property list declares `length` bytes and
+// holds none.
+std::string binary_overrun(std::uint64_t length) {
+    const auto u64 = [](std::uint64_t v) { return std::string(reinterpret_cast<const char*>(&v), 8); };
+    const std::uint32_t version = 7500;
+    const std::string name = "KeyVer";
+    std::string out =
+        std::string("Kaydara FBX Binary  \0\x1a\0", 23) + std::string(reinterpret_cast<const char*>(&version), 4);
+    const std::uint64_t end = out.size() + 25 + name.size();
+    out += u64(end) + u64(1) + u64(length) + char(name.size()) + name;
+    return out + std::string(25, '\0');  // the null record closing the list
+}
+
+TEST_F(Fbx, ABinaryRecordRunningPastTheFileIsRefusedBeforeAssimpReadsIt) {
+    // A length near 2^64 wraps Assimp's pointer past the end, and its assertion aborts (found by
+    // fuzz/fbx_fuzz in CI); a shorter overrun is refused the same way; the 27-byte header holds no record.
+    EXPECT_EQ(fbx::hazards(binary_overrun(0xffffffff6c756166)).overrun, 27u);
+    EXPECT_EQ(fbx::hazards(binary_overrun(1000)).overrun, 27u);
+    EXPECT_FALSE(fbx::hazards(binary_overrun(0)).overrun.has_value());
+    EXPECT_FALSE(fbx::hazards(binary_array(1000, 1, 10)).overrun.has_value());
+
+    const std::string wrap = binary_overrun(0xffffffff6c756166);
+    const std::string file = dir_.write("wrap.fbx", wrap);
+    EXPECT_EQ(test::load_error([&] { load_clip(file); }),
+              file + ": the FBX record at byte 27 declares more property bytes than the file holds");
+}
+
 // Collada through the same reader: a Z-up file in centimetres (Assimp turns it Y-up and to metres), two
 // joints under an armature node, the hips' X keyed at 30 Hz.
 TEST_F(Fbx, ColladaGoesThroughTheSameReader) {
