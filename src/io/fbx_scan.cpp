@@ -12,8 +12,8 @@ namespace {
 
 using Edge = std::pair<std::int64_t, std::int64_t>;
 
-constexpr char kBinaryMagic[] = "Kaydara FBX Binary  ";
-constexpr std::size_t kBinaryHeader = 27;  // magic, 0x00 0x1a 0x00, version (uint32)
+constexpr char kBinaryMagic[] = "Kaydara FBX Binary";  // all Assimp compares (the two spaces after it not)
+constexpr std::size_t kBinaryHeader = 27;              // magic, 0x00 0x1a 0x00, version (uint32)
 constexpr int kMaxDepth = 256;
 
 template <typename T>

@@ -279,6 +279,10 @@ TEST_F(Fbx, ABinaryRecordRunningPastTheFileIsRefusedBeforeAssimpReadsIt) {
     EXPECT_EQ(fbx::hazards(binary_overrun(1000)).overrun, 27u);
     EXPECT_FALSE(fbx::hazards(binary_overrun(0)).overrun.has_value());
     EXPECT_FALSE(fbx::hazards(binary_array(1000, 1, 10)).overrun.has_value());
+    // Assimp reads a file as binary on the magic's first 18 bytes (found by fuzz/fbx_fuzz: a mutated space).
+    std::string unspaced = binary_overrun(0xffffffff6c756166);
+    unspaced[18] = '\x1b';
+    EXPECT_EQ(fbx::hazards(unspaced).overrun, 27u);
 
     const std::string wrap = binary_overrun(0xffffffff6c756166);
     const std::string file = dir_.write("wrap.fbx", wrap);
