@@ -470,7 +470,7 @@ const CrowdPoser::Pin* CrowdPoser::pin_target(int agent, std::int64_t k, int foo
 
 void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet) {
     std::array<AnkleTarget, 2> targets{};
-    std::array<bool, 2> held{};
+    std::array<bool, 2> held{}, bent{};
     const double disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
     for (int f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[std::size_t(f)];
@@ -482,7 +482,10 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
                             out[0],
                             disk};
         held[std::size_t(f)] = ankle_target(agent, k, f, free, targets[std::size_t(f)]);
-        if (!held[std::size_t(f)]) continue;
+        // A target on the free ankle (over a third of held frames: a hold's first frame, a pin's) leaves the
+        // leg as it is: no IK.
+        if (!held[std::size_t(f)] || targets[std::size_t(f)].at == free.ankle) continue;
+        bent[std::size_t(f)] = true;
         const LegSolve s = two_joint_ik(out[std::size_t(leg.hip)], out[std::size_t(leg.knee)], free.ankle,
                                         targets[std::size_t(f)].at, free.toe - free.ankle);
         bend_leg(leg, s, out);
@@ -490,7 +493,7 @@ void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& o
     // The bent legs inside the disk. Blended, free_pose held every joint inside this same disk, so a leg
     // that was not bent is inside already; unblended it was not, and both legs are held in.
     for (std::size_t f = 0; f < 2; ++f)
-        if (held[f] || (!(blend_.window > 0) && (held[0] || held[1]))) hold_inside(leg_joints_[f], disk, out);
+        if (bent[f] || (!(blend_.window > 0) && (held[0] || held[1]))) hold_inside(leg_joints_[f], disk, out);
     if (!feet) return;
     for (std::size_t f = 0; f < 2; ++f) {
         feet->held[f] = held[f];
