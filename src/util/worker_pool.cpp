@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 
 namespace {
 
@@ -32,10 +33,8 @@ WorkerPool::WorkerPool(int threads) {
 }
 
 WorkerPool::~WorkerPool() {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        stop_ = true;
-    }
+    stop_ = true;
+    { std::lock_guard<std::mutex> lock(mutex_); }  // a worker between its check and its wait gets the wake
     start_.notify_all();
     for (std::thread& t : threads_) t.join();
 }
@@ -44,46 +43,68 @@ int WorkerPool::hardware_threads() { return std::max(1, int(std::thread::hardwar
 
 void WorkerPool::for_each(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain) {
     if (n == 0) return;
-    auto job = std::make_shared<Job>();
-    job->f = &f;
-    job->n = n;
-    job->grain = std::max<std::size_t>(1, grain);
-    // A single chunk is not worth waking anybody (a frame with one choice point is common).
-    if (!threads_.empty() && n > job->grain) {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            job_ = job;
-            posted_.store(++generation_, std::memory_order_release);
-        }
+    open(n, f, grain);
+    work(0);
+    const auto done = [&] { return job_.finished.load() == n; };
+    if (!spin_until(done)) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        done_.wait(lock, done);
+    }
+    if (job_.error) std::rethrow_exception(std::exchange(job_.error, nullptr));
+}
+
+// Closes the last job, waits until no worker is inside it, sets up the next and, unless it is a single
+// chunk (a frame with one choice point is common: not worth waking anybody), opens it to the workers.
+void WorkerPool::open(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain) {
+    posted_ = kClosed;
+    while (job_.inside.load() != 0) std::this_thread::yield();  // a worker that joined late leaves at once
+    job_.f = &f;
+    job_.n = n;
+    job_.grain = std::max<std::size_t>(1, grain);
+    job_.next = 0;
+    job_.finished = 0;
+    if (threads_.empty() || n <= job_.grain) return;
+    posted_ = ++generation_;
+    if (sleepers_.load() > 0) {
+        { std::lock_guard<std::mutex> lock(mutex_); }
         start_.notify_all();
     }
-    work(*job, 0);
-    if (!spin_until([&] { return job->finished.load() == n; })) {
-        std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [&] { return job->finished.load() == n; });
-    }
-    if (job->error) std::rethrow_exception(job->error);
 }
 
 void WorkerPool::loop(int worker) {
-    std::uint64_t seen = 0;
-    for (;;) {
-        std::shared_ptr<Job> job;
-        spin_until([&] { return posted_.load(std::memory_order_acquire) != seen; });
-        {
+    std::uint64_t seen = kClosed;
+    const auto ready = [&] {
+        const std::uint64_t g = posted_.load();
+        return stop_.load() || (g != kClosed && g != seen);
+    };
+    while (!stop_.load()) {
+        if (!spin_until(ready)) {
             std::unique_lock<std::mutex> lock(mutex_);
-            start_.wait(lock, [&] { return stop_ || generation_ != seen; });
-            if (stop_) return;
-            seen = generation_;
-            job = job_;
+            ++sleepers_;
+            start_.wait(lock, ready);
+            --sleepers_;
         }
-        work(*job, worker);
+        if (!stop_.load()) join(worker, seen);
     }
+}
+
+// Joins the open job if it is still the one seen open: counted inside first, so the caller cannot set up
+// the next job under it.
+void WorkerPool::join(int worker, std::uint64_t& seen) {
+    const std::uint64_t g = posted_.load();
+    if (g == kClosed || g == seen) return;
+    ++job_.inside;
+    if (posted_.load() == g) {
+        seen = g;
+        work(worker);
+    }
+    --job_.inside;
 }
 
 // Claims chunks until none is left. f is called only for a claimed index, which the caller of
 // for_each still waits for, so f is alive then.
-void WorkerPool::work(Job& job, int worker) {
+void WorkerPool::work(int worker) {
+    Job& job = job_;
     for (;;) {
         const std::size_t first = job.next.fetch_add(job.grain);
         if (first >= job.n) return;

@@ -48,6 +48,20 @@ TEST(WorkerPool, RunsEveryIndexOnceAndRethrowsTheLowestError) {
     EXPECT_THROW(WorkerPool(0), std::invalid_argument);
 }
 
+// Many small jobs back to back, some after the workers went to sleep: each index runs once per job, and no
+// worker joins a job after the next one was set up (a late one would run an index of the wrong job twice).
+TEST(WorkerPool, BackToBackJobsRunEachIndexOnce) {
+    WorkerPool pool(3);
+    std::vector<std::atomic<int>> runs(9);
+    for (int job = 0; job < 20000; ++job) {
+        const std::size_t n = 2 + std::size_t(job % 8);
+        for (std::size_t i = 0; i < n; ++i) runs[i] = 0;
+        pool.for_each(n, [&](std::size_t i, int) { ++runs[i]; });
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(runs[i].load(), 1) << "job " << job << " index " << i;
+        if (job % 5000 == 4999) std::this_thread::sleep_for(std::chrono::milliseconds(10));  // past the spin
+    }
+}
+
 // Tasks run one at a time in the order posted, off the posting thread; a full queue makes post() wait
 // (the tasks waiting never exceed its room); the first task that throws stops those after it, and the
 // poster hears of it; the queue's end runs what still waits.

@@ -35,25 +35,33 @@ public:
     static int hardware_threads();
 
 private:
-    // One for_each call. Workers that wake late keep it alive and find no index left, so the caller
-    // never waits for a thread that was not scheduled in time (the machine may be shared).
+    // The pool's one job (for_each is not reentrant). Workers join it without a lock: a worker that sees
+    // generation g open counts itself `inside`, then checks g is still open; the caller closes the job
+    // (posted_ = kClosed) and waits for `inside` to reach 0 before it sets up the next one (Dekker's check,
+    // sequentially consistent). Workers that join late find no index left.
     struct Job {
         const std::function<void(std::size_t, int)>* f = nullptr;
         std::size_t n = 0, grain = 1;
         std::atomic<std::size_t> next{0}, finished{0};
+        std::atomic<int> inside{0};
         std::exception_ptr error;  // guarded by the pool's mutex
         std::size_t error_index = 0;
     };
+    static constexpr std::uint64_t kClosed = 0;
+
     void loop(int worker);
-    void work(Job& job, int worker);
+    void join(int worker, std::uint64_t& seen);
+    void open(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain);
+    void work(int worker);
 
     std::vector<std::thread> threads_;
-    std::mutex mutex_;
+    std::mutex mutex_;  // for sleeping and waking, and a job's error
     std::condition_variable start_, done_;
-    std::shared_ptr<Job> job_;              // the latest job, guarded by mutex_
-    std::uint64_t generation_ = 0;          // one per job that wakes the threads
-    std::atomic<std::uint64_t> posted_{0};  // generation_, readable without the lock (spinning)
-    bool stop_ = false;
+    Job job_;
+    std::uint64_t generation_ = kClosed;          // the latest job's
+    std::atomic<std::uint64_t> posted_{kClosed};  // the job workers may join, or kClosed
+    std::atomic<int> sleepers_{0};                // workers waiting on start_
+    std::atomic<bool> stop_{false};
 };
 
 }  // namespace mobb::util
