@@ -43,6 +43,7 @@ int WorkerPool::hardware_threads() { return std::max(1, int(std::thread::hardwar
 
 void WorkerPool::for_each(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain) {
     if (n == 0) return;
+    if (busy_.exchange(true)) throw std::logic_error("worker pool: for_each called again before it returned");
     open(n, f, grain);
     work(0);
     const auto done = [&] { return job_.finished.load() == n; };
@@ -50,6 +51,7 @@ void WorkerPool::for_each(std::size_t n, const std::function<void(std::size_t, i
         std::unique_lock<std::mutex> lock(mutex_);
         done_.wait(lock, done);
     }
+    busy_ = false;
     if (job_.error) std::rethrow_exception(std::exchange(job_.error, nullptr));
 }
 

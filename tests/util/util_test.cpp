@@ -44,6 +44,18 @@ TEST(WorkerPool, RunsEveryIndexOnceAndRethrowsTheLowestError) {
             EXPECT_STREQ(e.what(), "7");
         }
         pool.for_each(0, [](std::size_t, int) { ADD_FAILURE(); });
+        // A loop started from inside another is refused, and the outer one still runs every index.
+        std::atomic<int> refused{0}, ran{0};
+        pool.for_each(8, [&](std::size_t, int) {
+            ++ran;
+            try {
+                pool.for_each(4, [](std::size_t, int) {});
+            } catch (const std::logic_error&) {
+                ++refused;
+            }
+        });
+        EXPECT_EQ(ran.load(), 8);
+        EXPECT_EQ(refused.load(), 8);
     }
     EXPECT_THROW(WorkerPool(0), std::invalid_argument);
 }

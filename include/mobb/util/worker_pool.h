@@ -28,7 +28,8 @@ public:
     /// Calls f(index, worker) once for every index in [0, n), indices handed out in chunks of `grain`
     /// to workers 0 .. size() - 1, and returns when every call has returned. Which worker runs which
     /// index is not deterministic; callers write results by index. If calls throw, the exception of
-    /// the lowest index is rethrown after all calls finished. Not reentrant: call from one thread.
+    /// the lowest index is rethrown after all calls finished. Not reentrant: call from one thread; a call
+    /// made before the last returned (from f, or from another thread) throws std::logic_error.
     void for_each(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain = 1);
 
     /// std::thread::hardware_concurrency(), at least 1.
@@ -62,6 +63,7 @@ private:
     std::atomic<std::uint64_t> posted_{kClosed};  // the job workers may join, or kClosed
     std::atomic<int> sleepers_{0};                // workers waiting on start_
     std::atomic<bool> stop_{false};
+    std::atomic<bool> busy_{false};  // a for_each is running
 };
 
 }  // namespace mobb::util
