@@ -247,8 +247,10 @@ std::optional<std::uint64_t> ascii_impossible_array(const std::string& bytes) {
 
 Hazards hazards(const std::string& bytes) {
     if (bytes.compare(0, sizeof kBinaryMagic - 1, kBinaryMagic) == 0) {
-        BinaryScan scan(bytes);
-        scan.records(kBinaryHeader, bytes.size(), 0);
+        // The bytes as Assimp tokenizes them: the file and a NUL after it (a record may end on that NUL).
+        const std::string read = bytes + '\0';
+        BinaryScan scan(read);
+        scan.records(kBinaryHeader, read.size(), 0);
         return {find_cycle(scan.edges()), scan.oversized(), scan.overrun()};
     }
     std::vector<Edge> edges;

@@ -22,7 +22,8 @@ struct Hazards {
     /// declaring 77,777,777,773 key times asked for 622 GB (found by fuzz/fbx_fuzz in CI), a binary length
     /// word up to 4 GB. Binary arrays stored plain state their byte length, which Assimp checks itself.
     std::optional<std::uint64_t> impossible_array;
-    /// The offset of a binary record whose property bytes run past the end of the file, or nothing.
+    /// The offset of a binary record whose property bytes run past the end of the file (and the NUL Assimp
+    /// reads after it), or nothing.
     /// Assimp 5.2 adds that length (64 bits from version 7500) to a pointer before it compares it with the
     /// end: a length near 2^64 wraps, and an assertion aborts the process (found by fuzz/fbx_fuzz in CI).
     /// Shorter overruns Assimp refuses itself; refusing them here changes only the message.
