@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -47,6 +48,12 @@ void add_graph(CLI::App& app, int& exit_code) {
     cmd->add_option("--target-clip", o->target_clip, "Preferred clip length (s)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    const std::map<std::string, io::PathCentre> centres{{"root", io::PathCentre::Root},
+                                                        {"enclosing", io::PathCentre::Enclosing}};
+    cmd->add_option("--centre", o->centre,
+                    "Centre of the clips' disks: root (the paper's) or enclosing (the smallest disk holding the body)")
+        ->transform(CLI::CheckedTransformer(centres, CLI::ignore_case))
+        ->default_str("root");
     cmd->callback([=, &exit_code] {
         exit_code = guarded([&](std::ostream& out) {
             const auto start = std::chrono::steady_clock::now();
@@ -57,6 +64,7 @@ void add_graph(CLI::App& app, int& exit_code) {
             opts << " --out " << *out_file << " --threshold " << o->threshold << " --fps " << o->fps << " --window "
                  << o->window << " --hubs " << o->hubs << " --min-clip " << o->min_clip << " --max-clip " << o->max_clip
                  << " --target-clip " << o->target_clip;
+            if (o->centre == io::PathCentre::Enclosing) opts << " --centre enclosing";
             g.command += opts.str();
             crowd::save_graph(g, *out_file);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -351,6 +351,9 @@ TEST(CrowdCli, ErrorsAndExitCodes) {
     r = run("graph build /nonexistent/a.bvh --out /tmp/never.json");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("/nonexistent/a.bvh"), std::string::npos);
+    r = run("graph build /nonexistent/a.bvh --out /tmp/never.json --centre middle");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--centre"), std::string::npos) << r.err;
     r = run("bench");
     EXPECT_EQ(r.code, 2);
 }

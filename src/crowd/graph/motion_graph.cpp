@@ -17,8 +17,10 @@ double reach_of(const Path& p) {
     return d;
 }
 
+double root_reach_of(const GraphClip& c) { return c.root_reach ? *c.root_reach : reach_of(c.path); }
+
 ClipKind kind_of(const GraphClip& c, int id) {
-    const double reach = reach_of(c.path), exit = std::hypot(c.exit_x, c.exit_y);
+    const double reach = root_reach_of(c), exit = std::hypot(c.exit_x, c.exit_y);
     const bool loops = std::find(c.successors.begin(), c.successors.end(), id) != c.successors.end();
     if (loops && reach <= kIdleReach && c.exit_x == 0 && c.exit_y == 0 && c.exit_heading == 0) return ClipKind::Idle;
     if (reach <= kInPlaceReach && exit <= kInPlaceExit) return ClipKind::InPlace;

@@ -8,7 +8,6 @@
 #include <limits>
 #include <ostream>
 
-#include "graph/clip_reach.h"
 #include "mobb/core/angle.h"
 #include "mobb/crowd/graph/pose_distance.h"
 #include "mobb/io/load.h"
@@ -56,7 +55,7 @@ io::Clip load_source(const std::string& file, const GraphBuildOptions& o, GraphS
 // An idle clip (ClipKind::Idle, before its snap) loops in place: its exit becomes the identity.
 void snap_idle(GraphClip& c, int id) {
     const bool loops = std::find(c.successors.begin(), c.successors.end(), id) != c.successors.end();
-    if (!loops || reach_of(c.path) > kIdleReach || std::hypot(c.exit_x, c.exit_y) > kIdleExit ||
+    if (!loops || root_reach_of(c) > kIdleReach || std::hypot(c.exit_x, c.exit_y) > kIdleExit ||
         std::abs(c.exit_heading) > kIdleTurn)
         return;
     c.idle_drift = util::rounded(std::hypot(c.exit_x, c.exit_y));
@@ -214,8 +213,9 @@ std::vector<int> components(const std::vector<std::vector<int>>& succ, int& coun
     return comp;
 }
 
-// The clip's path in its own frame, and the exit transform.
-void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
+// The clip's path in its own frame (its disks from `disks`, the source's path centred as the graph asks),
+// how far its root goes, and the exit transform.
+void localise(GraphClip& c, const io::Clip& clip, const Path& disks, io::PathCentre centre, const PoseTrack& track) {
     const glm::dvec2 o = track.root[std::size_t(c.first)];
     const double h = track.heading[std::size_t(c.first)];
     const double cs = std::cos(h), sn = std::sin(h);
@@ -226,13 +226,17 @@ void localise(GraphClip& c, const io::Clip& clip, const PoseTrack& track) {
     };
     c.path.dt = clip.path.dt;
     c.path.samples.clear();
+    double reach = 0;
     for (int i = c.first; i < c.exit; ++i) {
-        const Sample& s = clip.path.samples[std::size_t(i)];
+        const Sample& s = disks.samples[std::size_t(i)];
         Sample l;
         local(s.x, s.y, l.x, l.y);
         l.r = util::rounded(s.r);
         c.path.samples.push_back(l);
+        const Sample& root = clip.path.samples[std::size_t(i)];
+        reach = std::max(reach, std::hypot(root.x - o.x, root.y - o.y));
     }
+    if (centre != io::PathCentre::Root) c.root_reach = util::rounded(reach);
     const Sample& e = clip.path.samples[std::size_t(c.exit)];
     local(e.x, e.y, c.exit_x, c.exit_y);
     c.exit_heading = util::rounded(wrap_angle(track.heading[std::size_t(c.exit)] - h), 9);
@@ -249,6 +253,7 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
     g.fps = o.fps;
     g.threshold = o.threshold;
     g.window = o.window;
+    g.centre = o.centre;
     std::vector<io::Clip> clips;
     std::vector<PoseTrack> tracks;
     for (const std::string& input : files) {
@@ -291,6 +296,10 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
         }
     }
     g.clips_cut = int(all.size());
+    std::vector<Path> disks;  // each source's path as the clips' disks are centred
+    disks.reserve(clips.size());
+    for (const io::Clip& clip : clips)
+        disks.push_back(o.centre == io::PathCentre::Root ? clip.path : io::path_of(clip.animation, clip.up, o.centre));
 
     std::vector<std::vector<int>> succ(all.size());
     std::vector<std::vector<double>> dist(all.size());
@@ -324,7 +333,8 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
                 c.successors.push_back(id[std::size_t(succ[u][k])]);
                 c.distances.push_back(util::rounded(dist[u][k], 9));
             }
-        localise(c, clips[std::size_t(c.source)], tracks[std::size_t(c.source)]);
+        localise(c, clips[std::size_t(c.source)], disks[std::size_t(c.source)], g.centre,
+                 tracks[std::size_t(c.source)]);
         snap_idle(c, id[u]);
     }
     if (g.clips.size() < 2) throw GraphError("graph build: no two clips connect; raise --threshold");

@@ -34,6 +34,10 @@ std::string graph_to_text(const MotionGraph& g) {
     j["threshold"] = g.threshold;
     j["window"] = g.window;
     j["heading"] = "facing direction: perpendicular to left-minus-right of thighs and upper arms, mean over +-2 frames";
+    if (g.centre == io::PathCentre::Enclosing)
+        j["centre"] =
+            "enclosing: a path's disks are the smallest holding the body; root_reach: how far the root "
+            "goes from its start over the clip, metres";
     j["joints"] = g.joints;
     J sources = J::array();
     for (const GraphSource& s : g.sources)
@@ -71,6 +75,7 @@ std::string graph_to_text(const MotionGraph& g) {
                   {"duration", util::rounded(c.path.duration(), 6)},
                   {"exit", {c.exit_x, c.exit_y, c.exit_heading}}};
         if (c.idle_drift != 0 || c.idle_turn != 0) clip["idle_snap"] = {c.idle_drift, c.idle_turn};
+        if (c.root_reach) clip["root_reach"] = *c.root_reach;
         clip["successors"] = c.successors;
         clip["distances"] = c.distances;
         clip["path"] = path;
@@ -254,9 +259,9 @@ void read_edges(const json& c, double threshold, GraphClip& out, const std::stri
     }
 }
 
-// "path": exit - first samples [x, y, r], finite, r >= 0, the first at the origin (the clip's own frame);
-// "duration", when given, their duration.
-void read_path(const json& c, double dt, GraphClip& out, const std::string& where) {
+// "path": exit - first samples [x, y, r], finite, r >= 0, the first at the origin (the clip's own frame)
+// or, for disks centred on the body, holding it; "duration", when given, their duration.
+void read_path(const json& c, double dt, io::PathCentre centre, GraphClip& out, const std::string& where) {
     out.path.dt = dt;
     const auto& path = field(c, "path", where);
     if (!path.is_array() || path.empty()) fail(where + ".path", "expected [[x, y, r], ...]");
@@ -274,9 +279,12 @@ void read_path(const json& c, double dt, GraphClip& out, const std::string& wher
         out.path.samples.push_back(x);
     }
     const Sample& p0 = out.path.samples.front();
-    if (std::abs(p0.x) > 1e-6 || std::abs(p0.y) > 1e-6)
+    if (centre == io::PathCentre::Root && (std::abs(p0.x) > 1e-6 || std::abs(p0.y) > 1e-6))
         fail(where + ".path[0]",
              "the first sample is the origin of the clip's frame, not (" + num(p0.x) + ", " + num(p0.y) + ")");
+    if (centre == io::PathCentre::Enclosing && std::hypot(p0.x, p0.y) > p0.r + 1e-6)
+        fail(where + ".path[0]", "the first disk does not hold the root at the origin: (" + num(p0.x) + ", " +
+                                     num(p0.y) + ") is farther than its radius " + num(p0.r));
     try {
         validate(out.path);
     } catch (const std::invalid_argument& e) {
@@ -311,7 +319,11 @@ GraphClip clip_from_json(const json& c, const MotionGraph& g, std::size_t id, co
     read_ranges(c, g.sources[std::size_t(out.source)], out, where);
     read_exit(c, out, where);
     read_edges(c, g.threshold, out, where);
-    read_path(c, g.dt(), out, where);
+    read_path(c, g.dt(), g.centre, out, where);
+    if (g.centre == io::PathCentre::Enclosing) {
+        out.root_reach = finite(field(c, "root_reach", where), where + ".root_reach");
+        if (*out.root_reach < 0) fail(where + ".root_reach", num(*out.root_reach) + ": a distance is not negative");
+    }
     return out;
 }
 
@@ -366,6 +378,12 @@ MotionGraph graph_from_json(const json& j, const std::string& where) {
     if (j.contains("command")) {
         if (!j["command"].is_string()) fail(where + ".command", "expected a string");
         g.command = j["command"].get<std::string>();
+    }
+    if (j.contains("centre")) {
+        const auto& c = j["centre"];
+        if (!c.is_string() || c.get<std::string>().rfind("enclosing", 0) != 0)
+            fail(where + ".centre", "expected \"enclosing: ...\" (absent: disks centred on the root)");
+        g.centre = io::PathCentre::Enclosing;
     }
     if (j.contains("joints")) {
         if (!j["joints"].is_array()) fail(where + ".joints", "expected an array of joint names");

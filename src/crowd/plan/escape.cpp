@@ -10,11 +10,11 @@ namespace mobb::crowd {
 
 namespace {
 
-// Footprint of a path in its own frame: how far any disk reaches from the first root position.
+// Footprint of a path in its own frame: how far any disk reaches from the first root position, the origin
+// (the first disk's centre too when disks are centred on the root).
 double footprint_of(const Path& p) {
     double f = 0;
-    const Sample& o = p.samples.front();
-    for (const Sample& s : p.samples) f = std::max(f, std::hypot(s.x - o.x, s.y - o.y) + s.r);
+    for (const Sample& s : p.samples) f = std::max(f, std::hypot(s.x, s.y) + s.r);
     return f;
 }
 

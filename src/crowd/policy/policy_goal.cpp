@@ -33,14 +33,14 @@ public:
           radius_(c.goal_radius),
           grid_(c.world, c.tuning.goal.nav_clearance, nav_cell(c.world, distinct_goals(c.goals))) {
         kinds_ = kinds_of(graph_);
-        // An agent stops by standing where its clip ends, then sways within its idle clips' reach: it
-        // stops that much inside the goal radius so that it stays within it to the end.
+        // An agent stops by standing where its clip ends, then sways within its idle clips' reach (of their
+        // disks' centres from the root where the idle clip starts, the origin): it stops that much inside the
+        // goal radius so that it stays within it to the end.
         double sway = 0;
         for (int k = 0; k < int(graph_.clips.size()); ++k) {
             if (kinds_[std::size_t(k)] != ClipKind::Idle) continue;
             const auto& samples = graph_.clips[std::size_t(k)].path.samples;
-            for (const Sample& x : samples)
-                sway = std::max(sway, std::hypot(x.x - samples.front().x, x.y - samples.front().y));
+            for (const Sample& x : samples) sway = std::max(sway, std::hypot(x.x, x.y));
         }
         stop_radius_ = radius_ - sway;
         const GoalTuning& k = c.tuning.goal;

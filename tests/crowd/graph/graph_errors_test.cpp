@@ -194,6 +194,32 @@ TEST(GraphErrors, EveryBadFieldIsNamed) {
     }
 }
 
+// A graph whose disks are centred on the body: its first disks hold the root, and each clip says how far
+// its root goes.
+TEST(GraphErrors, EnclosingGraphFieldsAreNamed) {
+    std::ifstream in(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json");
+    const json body = json::parse(in);
+    auto error = [&](const std::function<void(json&)>& edit) {
+        json j = body;
+        edit(j);
+        try {
+            graph_from_json(j, "g.json: graph");
+        } catch (const GraphError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error([](json&) {}), "");
+    EXPECT_EQ(error([](json& j) { j["clips"][3].erase("root_reach"); }).rfind("g.json: graph.clips[3]: ", 0), 0u);
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["root_reach"] = -1; }).rfind("g.json: graph.clips[3].root_reach: ", 0),
+              0u);
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["path"][0][0] = 2.0; }).rfind("g.json: graph.clips[3].path[0]: ", 0),
+              0u);
+    EXPECT_EQ(error([](json& j) { j["centre"] = "middle"; }).rfind("g.json: graph.centre: ", 0), 0u);
+    // Without "centre" its disks off the root are refused as the root's.
+    EXPECT_EQ(error([](json& j) { j.erase("centre"); }).rfind("g.json: graph.clips[0].path[0]: ", 0), 0u);
+}
+
 // From a file: the file named first, one line, GraphError.
 TEST(GraphErrors, FilesNameTheFileAndTheField) {
     const std::string file = test::temp_file("graph_zero_dt.json");

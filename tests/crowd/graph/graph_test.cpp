@@ -15,6 +15,7 @@ namespace mobb::crowd {
 namespace {
 
 const std::string kGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion.json";
+const std::string kEnclosingGraph = std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json";
 
 TEST(MotionGraph, CommittedGraphIsWellFormed) {
     const MotionGraph g = load_graph(kGraph);
@@ -100,6 +101,57 @@ TEST(MotionGraph, PathsMatchTheMocapInTheClipFrame) {
         }
     }
     EXPECT_THROW(load_graph_source(g, int(g.sources.size())), std::out_of_range);
+}
+
+// The same takes with each disk the smallest holding the body: the same clips, edges, exits and kinds
+// (read from the root's reach), every disk no wider than the root's, 16 % narrower on average.
+TEST(MotionGraph, EnclosingGraphKeepsTheClipsAndNarrowsTheirDisks) {
+    const MotionGraph root = load_graph(kGraph), body = load_graph(kEnclosingGraph);
+    EXPECT_EQ(root.centre, io::PathCentre::Root);
+    ASSERT_EQ(body.centre, io::PathCentre::Enclosing);
+    ASSERT_EQ(root.clips.size(), body.clips.size());
+    EXPECT_EQ(kinds_of(root), kinds_of(body));
+    double sum_root = 0, sum_body = 0;
+    for (std::size_t k = 0; k < root.clips.size(); ++k) {
+        const GraphClip &a = root.clips[k], &b = body.clips[k];
+        SCOPED_TRACE("clip " + std::to_string(k));
+        EXPECT_EQ(a.successors, b.successors);
+        EXPECT_EQ(a.exit_x, b.exit_x);
+        EXPECT_EQ(a.exit_heading, b.exit_heading);
+        EXPECT_FALSE(a.root_reach.has_value());
+        ASSERT_TRUE(b.root_reach.has_value());
+        EXPECT_NEAR(*b.root_reach, root_reach_of(a), 2e-6);
+        ASSERT_EQ(a.path.size(), b.path.size());
+        for (std::size_t i = 0; i < a.path.size(); ++i) {
+            EXPECT_LE(b.path.samples[i].r, a.path.samples[i].r + 1e-6);
+            sum_root += a.path.samples[i].r;
+            sum_body += b.path.samples[i].r;
+        }
+        EXPECT_LE(std::hypot(b.path.samples[0].x, b.path.samples[0].y), b.path.samples[0].r) << "holds the root";
+    }
+    EXPECT_LT(sum_body, 0.9 * sum_root);
+}
+
+// Its disks are those of io::path_of(..., PathCentre::Enclosing) in the clip's frame.
+TEST(MotionGraph, EnclosingPathsMatchTheMocapInTheClipFrame) {
+    MOBB_REQUIRE_MOCAP();
+    const MotionGraph g = load_graph(kEnclosingGraph);
+    std::map<int, std::pair<io::Clip, Path>> sources;
+    for (const GraphClip& c : g.clips) {
+        if (!sources.count(c.source)) {
+            io::Clip clip = load_graph_source(g, c.source);
+            Path body = io::path_of(clip.animation, clip.up, io::PathCentre::Enclosing);
+            sources.emplace(c.source, std::make_pair(std::move(clip), std::move(body)));
+        }
+        const auto& [clip, body] = sources.at(c.source);
+        const Sample& root0 = clip.path.samples[std::size_t(c.first)];
+        for (std::size_t i = 0; i < c.path.size(); ++i) {
+            const Sample& a = body.samples[std::size_t(c.first) + i];
+            const Sample& l = c.path.samples[i];
+            ASSERT_NEAR(std::hypot(a.x - root0.x, a.y - root0.y), std::hypot(l.x, l.y), 1e-5);
+            ASSERT_NEAR(a.r, l.r, 1e-6);
+        }
+    }
 }
 
 // The clips an agent stops with: idle clips stand still and loop on themselves (exit snapped to the
@@ -191,6 +243,21 @@ TEST(MotionGraph, BuildsFromWalksTrimsTheStrayFrameAndConnects) {
         EXPECT_GT(c.exit_x, 1.0) << "a walk goes forward, along +x";
     }
     EXPECT_EQ(graph_from_json(nlohmann::json::parse(graph_to_text(g)), "g").clips.size(), g.clips.size());
+    // The same walks with the disks centred on the body: the same clips and exits, no disk wider, and the
+    // centre and each root's reach kept through the file.
+    o.centre = io::PathCentre::Enclosing;
+    const MotionGraph body = build_motion_graph(files, o);
+    ASSERT_EQ(body.clips.size(), g.clips.size());
+    for (std::size_t k = 0; k < g.clips.size(); ++k) {
+        EXPECT_EQ(body.clips[k].exit_x, g.clips[k].exit_x);
+        EXPECT_NEAR(root_reach_of(body.clips[k]), root_reach_of(g.clips[k]), 2e-6);
+        for (std::size_t i = 0; i < g.clips[k].path.size(); ++i)
+            EXPECT_LE(body.clips[k].path.samples[i].r, g.clips[k].path.samples[i].r + 1e-6);
+    }
+    const MotionGraph read = graph_from_json(nlohmann::json::parse(graph_to_text(body)), "g");
+    EXPECT_EQ(read.centre, io::PathCentre::Enclosing);
+    EXPECT_EQ(read.clips[1].root_reach, body.clips[1].root_reach);
+    EXPECT_EQ(kinds_of(read), kinds_of(g));
 }
 
 TEST(MotionGraph, BuildRejectsBadInput) {

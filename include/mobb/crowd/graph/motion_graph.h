@@ -2,6 +2,7 @@
 // Pighin 2002; Gleicher et al.'s Snap-Together Motion). The crowd of the paper's section 5 plays its clips.
 #pragma once
 #include <iosfwd>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,8 +37,12 @@ struct GraphClip {
     int first = 0, exit = 0;              ///< sample indices at the graph's fps
     int frame_first = 0, frame_exit = 0;  ///< the same, as frames of the file
     /// The path in the clip's own frame: root at sample `first` at the origin, its heading along +x
-    /// (heading: see PoseTrack). Metres.
+    /// (heading: see PoseTrack). Metres. Its disks are centred as the graph's `centre` says: on the root
+    /// (the first sample then at the origin) or on the smallest disk holding the body.
     Path path;
+    /// How far the root goes from its start over the clip (metres), when the disks are not centred on it;
+    /// empty: the path's own reach (root_reach_of).
+    std::optional<double> root_reach;
     /// Root position and heading change (radians, counter-clockwise) of sample `exit` in that frame:
     /// where and how a successor starts.
     double exit_x = 0, exit_y = 0, exit_heading = 0;
@@ -48,7 +53,7 @@ struct GraphClip {
     double idle_drift = 0, idle_turn = 0;
 };
 
-/// What a clip does, from its path and its exit alone (kind_of).
+/// What a clip does, from its root's reach and its exit alone (kind_of).
 enum class ClipKind {
     Walk,     ///< moves: from its start to its exit at least kWalking metres per second
     Slow,     ///< moves slower: starting, stopping
@@ -61,17 +66,21 @@ inline constexpr double kInPlaceReach = 0.25, kInPlaceExit = 0.2;  // metres
 inline constexpr double kIdleReach = 0.15, kIdleExit = 0.05;       // metres (exit: before the snap)
 inline constexpr double kIdleTurn = 0.1;                           // radians (before the snap)
 ClipKind kind_of(const GraphClip& clip, int id);
+/// The largest ground distance of the clip's root from where it starts (metres): `root_reach`, else the
+/// path's samples' from the first.
+double root_reach_of(const GraphClip& clip);
 const char* to_string(ClipKind kind);
 
 /// The rates a graph may have (frames per second): those of motion capture.
 inline constexpr double kMinGraphFps = 1, kMaxGraphFps = 1000;
 
 struct MotionGraph {
-    double fps = 30;                  ///< every clip shares dt = 1 / fps, kMinGraphFps..kMaxGraphFps
-    double threshold = 0;             ///< pose distance (metres, RMS) for transitions and edges
-    int window = 5;                   ///< frames in a pose-distance window
-    std::vector<std::string> joints;  ///< joint names compared (first source's skeleton)
-    std::string command;              ///< the command that built it
+    double fps = 30;                               ///< every clip shares dt = 1 / fps, kMinGraphFps..kMaxGraphFps
+    double threshold = 0;                          ///< pose distance (metres, RMS) for transitions and edges
+    int window = 5;                                ///< frames in a pose-distance window
+    std::vector<std::string> joints;               ///< joint names compared (first source's skeleton)
+    std::string command;                           ///< the command that built it
+    io::PathCentre centre = io::PathCentre::Root;  ///< where the clips' disks are centred
     std::vector<GraphSource> sources;
     std::vector<GraphClip> clips;
     int transitions = 0;  ///< transition points found (build statistics)
@@ -100,6 +109,7 @@ struct GraphBuildOptions {
     double min_clip = 1.0, max_clip = 4.0, target_clip = 2.0;  ///< clip lengths, seconds
     double trim_jump = 0.5;  ///< drop frame 0 when the root jumps more than this (metres) to frame 1
     int hubs = 2;            ///< hub poses whose matches are the transition points (Snap-Together Motion)
+    io::PathCentre centre = io::PathCentre::Root;  ///< --centre root|enclosing: the clips' disks
 };
 
 /// Builds the graph from inputs "FILE", or "FILE:A:B" for frames [A, B) of the file: pose distances
