@@ -25,7 +25,8 @@ environment), then reads R.json (layout: include/mobb/crowd/record/record.h) and
            computed from the record's graph file (path length / duration, mean over clips), else 1.0 m/s
            assumed; the header says which.
   idle %   of agent time from start_time until the agent is first within 1 m of its goal (or the end): frames where the
-           root moved under 0.1 m/s over a 0.5 s window (15 frames at 30 fps) round the frame.
+           root moved under 0.1 m/s over a 0.5 s window (15 frames at 30 fps) round the frame (the clips' roots placed
+           from the record where its graph centres the disks on the body).
   wall s   wall-clock seconds of the mobb run.
 """
 import os
@@ -56,18 +57,50 @@ DEADLINE_SPEED = 1.3  # m/s
 SPEED_LINE = re.compile(r"of the graph's mean clip speed \(([-+0-9.eE]+) m/s\)")
 
 
-def graph_speed_from_file(path):
-    """The graph's mean clip speed (path length / duration, mean over clips), or None."""
+def graph_clips(path):
+    """The clips of the record's graph file, or None when it cannot be read."""
     try:
         with open(path if os.path.isabs(path) else os.path.join(ROOT, path)) as f:
-            clips = json.load(f)["clips"]
-        speeds = []
-        for c in clips:
-            p = np.asarray(c["path"], dtype=float)[:, :2]
-            speeds.append(float(np.hypot(*np.diff(p, axis=0).T).sum()) / c["duration"])
-        return sum(speeds) / len(speeds) if speeds else None
-    except (OSError, KeyError, ValueError, IndexError, ZeroDivisionError):
+            return json.load(f)["clips"]
+    except (OSError, KeyError, ValueError):
         return None
+
+
+def clip_root(c):
+    """A clip's root on the ground per sample, [n, 2]: its "root" where its disks are centred on the body."""
+    return np.asarray(c["root"] if "root" in c else [p[:2] for p in c["path"]], dtype=float)
+
+
+def graph_speed_from_file(path):
+    """The graph's mean clip speed (root path length / duration, mean over clips), or None."""
+    clips = graph_clips(path)
+    try:
+        speeds = [float(np.hypot(*np.diff(clip_root(c), axis=0).T).sum()) / c["duration"] for c in clips]
+        return sum(speeds) / len(speeds) if speeds else None
+    except (TypeError, KeyError, ValueError, IndexError, ZeroDivisionError):
+        return None
+
+
+def root_tracks(rec, x, y):
+    """Each agent's root per frame ([n, frames] x and y): the samples' centres, or, where the record's graph
+    centres its disks on the body, its clips' roots placed as the disks are."""
+    clips = graph_clips(rec.get("graph", ""))
+    if not clips or not any("root" in c for c in clips):
+        return x, y
+    rx, ry = np.full(x.shape, np.nan), np.full(y.shape, np.nan)
+    for a, t in enumerate(rec["tracks"]):
+        n = len(t["samples"])
+        placed = t["clips"]
+        for k, pc in enumerate(placed):
+            f0, f1 = pc["start"], min(n, placed[k + 1]["start"] if k + 1 < len(placed) else n)
+            if f1 <= f0:
+                continue
+            root = clip_root(clips[pc["clip"]])[:f1 - f0]
+            px, py, theta = pc["place"][:3]
+            c, s = math.cos(theta), math.sin(theta)
+            rx[a, f0:f1] = px + c * root[:, 0] - s * root[:, 1]
+            ry[a, f0:f1] = py + s * root[:, 0] + c * root[:, 1]
+    return rx, ry
 
 
 def polygon_hits(poly, x, y, r):
@@ -102,6 +135,7 @@ def judge(record_path, scenario, stdout):
         if t["samples"]:
             s[a, :len(t["samples"])] = np.asarray(t["samples"], dtype=float)
     x, y, r = s[:, :, 1], s[:, :, 2], s[:, :, 3]
+    rx, ry = root_tracks(rec, x, y)  # how an agent moves is its root's; where it stands, its disk's
     reasons, kinds = [], []
 
     # Agent pairs: every frame, every pair (frame-major blocks of the N x N distance matrix).
@@ -216,7 +250,7 @@ def judge(record_path, scenario, stdout):
             else:
                 never.append(a)
         if end > first_frame:
-            moved = np.hypot(x[a, hi_i] - x[a, lo_i], y[a, hi_i] - y[a, lo_i]) / span
+            moved = np.hypot(rx[a, hi_i] - rx[a, lo_i], ry[a, hi_i] - ry[a, lo_i]) / span
             idle += int((moved[first_frame:end] < IDLE_SPEED).sum())
             counted += end - first_frame
     goal_fail = []

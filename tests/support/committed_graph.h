@@ -14,4 +14,13 @@ inline const crowd::MotionGraph& committed_graph() {
     return g;
 }
 
+/// The same takes with each disk the smallest holding the body (`mobb graph build --centre enclosing`).
+inline const std::string kBodyCentredGraph =
+    std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json";
+
+inline const crowd::MotionGraph& body_centred_graph() {
+    static const crowd::MotionGraph g = crowd::load_graph(kBodyCentredGraph);
+    return g;
+}
+
 }  // namespace mobb::test

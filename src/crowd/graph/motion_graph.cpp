@@ -6,18 +6,19 @@
 #include <cmath>
 #include <filesystem>
 
-#include "graph/clip_reach.h"
 #include "mobb/io/load.h"
 
 namespace mobb::crowd {
 
-double reach_of(const Path& p) {
+double root_reach_of(const GraphClip& c) {
+    const glm::dvec2 o = root_at(c, 0);
     double d = 0;
-    for (const Sample& s : p.samples) d = std::max(d, std::hypot(s.x - p.samples[0].x, s.y - p.samples[0].y));
+    for (std::size_t i = 0; i < c.path.size(); ++i) {
+        const glm::dvec2 p = root_at(c, i);
+        d = std::max(d, std::hypot(p.x - o.x, p.y - o.y));
+    }
     return d;
 }
-
-double root_reach_of(const GraphClip& c) { return c.root_reach ? *c.root_reach : reach_of(c.path); }
 
 ClipKind kind_of(const GraphClip& c, int id) {
     const double reach = root_reach_of(c), exit = std::hypot(c.exit_x, c.exit_y);

@@ -214,7 +214,7 @@ std::vector<int> components(const std::vector<std::vector<int>>& succ, int& coun
 }
 
 // The clip's path in its own frame (its disks from `disks`, the source's path centred as the graph asks),
-// how far its root goes, and the exit transform.
+// its root there when the disks are not centred on it, and the exit transform.
 void localise(GraphClip& c, const io::Clip& clip, const Path& disks, io::PathCentre centre, const PoseTrack& track) {
     const glm::dvec2 o = track.root[std::size_t(c.first)];
     const double h = track.heading[std::size_t(c.first)];
@@ -226,17 +226,18 @@ void localise(GraphClip& c, const io::Clip& clip, const Path& disks, io::PathCen
     };
     c.path.dt = clip.path.dt;
     c.path.samples.clear();
-    double reach = 0;
+    c.root.clear();
     for (int i = c.first; i < c.exit; ++i) {
         const Sample& s = disks.samples[std::size_t(i)];
         Sample l;
         local(s.x, s.y, l.x, l.y);
         l.r = util::rounded(s.r);
         c.path.samples.push_back(l);
+        if (centre == io::PathCentre::Root) continue;
         const Sample& root = clip.path.samples[std::size_t(i)];
-        reach = std::max(reach, std::hypot(root.x - o.x, root.y - o.y));
+        glm::dvec2& r = c.root.emplace_back();
+        local(root.x, root.y, r.x, r.y);
     }
-    if (centre != io::PathCentre::Root) c.root_reach = util::rounded(reach);
     const Sample& e = clip.path.samples[std::size_t(c.exit)];
     local(e.x, e.y, c.exit_x, c.exit_y);
     c.exit_heading = util::rounded(wrap_angle(track.heading[std::size_t(c.exit)] - h), 9);
@@ -296,10 +297,9 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
         }
     }
     g.clips_cut = int(all.size());
-    std::vector<Path> disks;  // each source's path as the clips' disks are centred
-    disks.reserve(clips.size());
-    for (const io::Clip& clip : clips)
-        disks.push_back(o.centre == io::PathCentre::Root ? clip.path : io::path_of(clip.animation, clip.up, o.centre));
+    std::vector<Path> bodies;  // each source's disks centred on the body, when the graph centres them there
+    if (o.centre != io::PathCentre::Root)
+        for (const io::Clip& clip : clips) bodies.push_back(io::path_of(clip.animation, clip.up, o.centre));
 
     std::vector<std::vector<int>> succ(all.size());
     std::vector<std::vector<double>> dist(all.size());
@@ -333,7 +333,8 @@ MotionGraph build_motion_graph(const std::vector<std::string>& files, const Grap
                 c.successors.push_back(id[std::size_t(succ[u][k])]);
                 c.distances.push_back(util::rounded(dist[u][k], 9));
             }
-        localise(c, clips[std::size_t(c.source)], disks[std::size_t(c.source)], g.centre,
+        const io::Clip& source = clips[std::size_t(c.source)];
+        localise(c, source, bodies.empty() ? source.path : bodies[std::size_t(c.source)], g.centre,
                  tracks[std::size_t(c.source)]);
         snap_idle(c, id[u]);
     }

@@ -36,8 +36,8 @@ std::string graph_to_text(const MotionGraph& g) {
     j["heading"] = "facing direction: perpendicular to left-minus-right of thighs and upper arms, mean over +-2 frames";
     if (g.centre == io::PathCentre::Enclosing)
         j["centre"] =
-            "enclosing: a path's disks are the smallest holding the body; root_reach: how far the root "
-            "goes from its start over the clip, metres";
+            "enclosing: a path's disks are the smallest holding the body; root: the root on the ground at each "
+            "sample, [x, y] in the clip's frame, metres";
     j["joints"] = g.joints;
     J sources = J::array();
     for (const GraphSource& s : g.sources)
@@ -75,10 +75,14 @@ std::string graph_to_text(const MotionGraph& g) {
                   {"duration", util::rounded(c.path.duration(), 6)},
                   {"exit", {c.exit_x, c.exit_y, c.exit_heading}}};
         if (c.idle_drift != 0 || c.idle_turn != 0) clip["idle_snap"] = {c.idle_drift, c.idle_turn};
-        if (c.root_reach) clip["root_reach"] = *c.root_reach;
         clip["successors"] = c.successors;
         clip["distances"] = c.distances;
         clip["path"] = path;
+        if (!c.root.empty()) {
+            J root = J::array();
+            for (const glm::dvec2& p : c.root) root.push_back({p.x, p.y});
+            clip["root"] = root;
+        }
         clips.push_back(clip);
     }
     j["clips"] = clips;
@@ -260,7 +264,7 @@ void read_edges(const json& c, double threshold, GraphClip& out, const std::stri
 }
 
 // "path": exit - first samples [x, y, r], finite, r >= 0, the first at the origin (the clip's own frame)
-// or, for disks centred on the body, holding it; "duration", when given, their duration.
+// unless the disks are centred on the body (read_root); "duration", when given, their duration.
 void read_path(const json& c, double dt, io::PathCentre centre, GraphClip& out, const std::string& where) {
     out.path.dt = dt;
     const auto& path = field(c, "path", where);
@@ -282,9 +286,6 @@ void read_path(const json& c, double dt, io::PathCentre centre, GraphClip& out, 
     if (centre == io::PathCentre::Root && (std::abs(p0.x) > 1e-6 || std::abs(p0.y) > 1e-6))
         fail(where + ".path[0]",
              "the first sample is the origin of the clip's frame, not (" + num(p0.x) + ", " + num(p0.y) + ")");
-    if (centre == io::PathCentre::Enclosing && std::hypot(p0.x, p0.y) > p0.r + 1e-6)
-        fail(where + ".path[0]", "the first disk does not hold the root at the origin: (" + num(p0.x) + ", " +
-                                     num(p0.y) + ") is farther than its radius " + num(p0.r));
     try {
         validate(out.path);
     } catch (const std::invalid_argument& e) {
@@ -295,6 +296,27 @@ void read_path(const json& c, double dt, io::PathCentre centre, GraphClip& out, 
         if (std::abs(d - out.path.duration()) > 1e-6 + 1e-9 * out.path.duration())
             fail(where + ".duration", num(d) + " s, its " + std::to_string(out.path.size()) + " samples last " +
                                           num(out.path.duration()) + " s");
+    }
+}
+
+// "root", for disks centred on the body: a point [x, y] per sample, the first at the origin (the clip's
+// frame), each inside its sample's disk (the disk holds the body, the root too).
+void read_root(const json& c, GraphClip& out, const std::string& where) {
+    const auto& root = field(c, "root", where);
+    if (!root.is_array() || root.size() != out.path.size())
+        fail(where + ".root",
+             "expected [[x, y], ...], a point per sample of \"path\" (" + std::to_string(out.path.size()) + ")");
+    for (std::size_t k = 0; k < root.size(); ++k) {
+        const auto& p = root[k];
+        const std::string place = where + ".root[" + std::to_string(k) + "]";
+        if (!p.is_array() || p.size() != 2) fail(place, "expected [x, y]");
+        const glm::dvec2 x{coordinate(p[0], place + "[0]"), coordinate(p[1], place + "[1]")};
+        const Sample& s = out.path.samples[k];
+        if (k == 0 && (std::abs(x.x) > 1e-6 || std::abs(x.y) > 1e-6))
+            fail(place, "the first root is the origin of the clip's frame, not (" + num(x.x) + ", " + num(x.y) + ")");
+        if (std::hypot(x.x - s.x, x.y - s.y) > s.r + 1e-6)
+            fail(place, "the root (" + num(x.x) + ", " + num(x.y) + ") is outside its sample's disk");
+        out.root.push_back(x);
     }
 }
 
@@ -320,10 +342,7 @@ GraphClip clip_from_json(const json& c, const MotionGraph& g, std::size_t id, co
     read_exit(c, out, where);
     read_edges(c, g.threshold, out, where);
     read_path(c, g.dt(), g.centre, out, where);
-    if (g.centre == io::PathCentre::Enclosing) {
-        out.root_reach = finite(field(c, "root_reach", where), where + ".root_reach");
-        if (*out.root_reach < 0) fail(where + ".root_reach", num(*out.root_reach) + ": a distance is not negative");
-    }
+    if (g.centre == io::PathCentre::Enclosing) read_root(c, out, where);
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "metrics/agent_sums.h"
+#include "mobb/core/assert.h"
 #include "mobb/util/json_text.h"
 #include "world/planar.h"
 
@@ -20,6 +21,25 @@ namespace {
 using Samples = std::vector<std::array<double, 4>>;
 
 double step(const Samples& s, std::size_t f) { return planar_distance(s[f + 1][1] - s[f][1], s[f + 1][2] - s[f][2]); }
+
+// Where the agent's root is at each of its frames, [t, x, y, r] as its samples: placed from its clips as
+// the samples are (the core's transform), for a graph whose disks are centred on the body.
+Samples roots_of(const AgentTrack& t, const MotionGraph& g) {
+    Samples out;
+    out.reserve(t.samples.size());
+    std::size_t k = 0;
+    Rigid2 m = Rigid2::of(t.clips.at(0).place);
+    for (std::size_t f = 0; f < t.samples.size(); ++f) {
+        if (k + 1 < t.clips.size() && t.clips[k + 1].start <= std::int64_t(f)) m = Rigid2::of(t.clips[++k].place);
+        const PlacedClip& c = t.clips[k];
+        const GraphClip& clip = g.clips.at(std::size_t(c.clip));
+        const auto i = std::size_t(std::int64_t(f) - c.start);
+        MOBB_ASSERT(i < clip.path.size());
+        const glm::dvec2 p = root_at(clip, i);
+        out.push_back({t.samples[f][0], m.apply_x(p.x, p.y), m.apply_y(p.x, p.y), t.samples[f][3]});
+    }
+    return out;
+}
 
 // The first frame within `radius` of the last goal after coming within it of each goal before in turn,
 // or -1.
@@ -35,8 +55,8 @@ std::int64_t arrival(const AgentTrack& t, double radius) {
 }
 
 // The straight lines from the start through the goals in turn, metres.
-double straight_length(const AgentTrack& t) {
-    double length = 0, x = t.samples[0][1], y = t.samples[0][2];
+double straight_length(const AgentTrack& t, const Samples& root) {
+    double length = 0, x = root[0][1], y = root[0][2];
     for (const auto& g : t.goals) {
         length += planar_distance(g[0] - x, g[1] - y);
         x = g[0], y = g[1];
@@ -150,9 +170,10 @@ namespace {
 // Root path length over duration (m/s).
 double clip_speed(const GraphClip& c) {
     double length = 0;
-    for (std::size_t i = 0; i + 1 < c.path.size(); ++i)
-        length += planar_distance(c.path.samples[i + 1].x - c.path.samples[i].x,
-                                  c.path.samples[i + 1].y - c.path.samples[i].y);
+    for (std::size_t i = 0; i + 1 < c.path.size(); ++i) {
+        const glm::dvec2 p = root_at(c, i), q = root_at(c, i + 1);
+        length += planar_distance(q.x - p.x, q.y - p.y);
+    }
     return length / c.path.duration();
 }
 
@@ -190,9 +211,12 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
     for (std::size_t a = 0; a < r.tracks.size(); ++a) {
         const AgentTrack& t = r.tracks[a];
         const Samples& s = t.samples;
+        // How the agent moves is its root's; its disk is where it stands (contacts, goals, the world).
+        const Samples body_roots = graph.centre == io::PathCentre::Root || s.empty() ? Samples() : roots_of(t, graph);
+        const Samples& root = body_roots.empty() ? s : body_roots;
         double length = 0;
         for (std::size_t f = 0; f + 1 < s.size(); ++f) {
-            length += step(s, f);
+            length += step(root, f);
             if (!r.world.inside(s[f][1], s[f][2])) ++m.samples_outside;
         }
         if (!s.empty() && !r.world.inside(s.back()[1], s.back()[2])) ++m.samples_outside;
@@ -200,14 +224,14 @@ CrowdMetrics crowd_metrics(const Record& r, const MotionGraph& graph, double goa
         o.speed = s.size() > 1 ? length / (double(s.size() - 1) * dt) : 0.0;
         o.reached = arrival(t, goal_radius);
         o.counted = o.reached >= 0 ? o.reached : std::int64_t(s.size());
-        o.longest_idle = double(idle_frames(s, o.counted, dt, idle)) * dt;
+        o.longest_idle = double(idle_frames(root, o.counted, dt, idle)) * dt;
         for (std::int64_t f = 0; f < o.counted && std::size_t(f) + 1 < s.size(); ++f)
-            o.to_goal += step(s, std::size_t(f));
+            o.to_goal += step(root, std::size_t(f));
         o.has_goals = !t.goals.empty();
         o.left = t.left_frame.has_value();
-        if (o.reached >= 0) o.straight = straight_length(t);
+        if (o.reached >= 0) o.straight = straight_length(t, root);
         o.enabled = o.reached >= 0 ? double(o.reached) * dt : run;
-        std::tie(o.energy, o.acceleration) = effort(s, dt, o.enabled);
+        std::tie(o.energy, o.acceleration) = effort(root, dt, o.enabled);
         o.collisions = collisions[a];
         sums.add(o, dt, m);
     }

@@ -51,19 +51,21 @@ void MetricsStream::contacts(std::int64_t f, const std::array<double, 4>* disks,
 }
 
 void MetricsStream::frames(std::int64_t first, std::int64_t count, const std::array<double, 4>* disks,
-                           util::WorkerPool& pool) {
+                           const std::array<double, 2>* roots, util::WorkerPool& pool) {
     constexpr std::size_t kAgents = 512;  // agents per task: enough work to share, little to wait for at the end
     const std::size_t n = tracks_.size();
     std::vector<Counts> counts(std::size_t(pool.size()));
     pool.for_each((n + kAgents - 1) / kAgents, [&](std::size_t task, int worker) {
         for (std::size_t a = task * kAgents; a < std::min(n, (task + 1) * kAgents); ++a)
             for (std::int64_t k = 0; k < count && !tracks_[a].ended; ++k) {
-                const std::array<double, 4>& disk = disks[std::size_t(k) * n + a];
+                const std::size_t at = std::size_t(k) * n + a;
+                const std::array<double, 4>& disk = disks[at];
                 if (std::isnan(disk[0])) {
                     tracks_[a].left = true;
                     end(a, counts[std::size_t(worker)]);
                 } else {
-                    sample(a, first + k, disk, counts[std::size_t(worker)]);
+                    const std::array<double, 2> root = roots ? roots[at] : std::array<double, 2>{disk[1], disk[2]};
+                    sample(a, first + k, disk, root, counts[std::size_t(worker)]);
                 }
             }
     });
@@ -76,10 +78,11 @@ void MetricsStream::add(const Counts& counts) {
     idle_ += counts.idle;
 }
 
-void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts) {
+void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s,
+                           const std::array<double, 2>& root, Counts& counts) {
     Track& t = tracks_[a];
     const double x = s[1], y = s[2];
-    if (t.n == 0) t.start = {x, y};
+    if (t.n == 0) t.start = root;
     // Within the radius of each goal in turn (metrics.cpp's `arrival`): a frame may reach several.
     const auto& goals = header_.tracks[a].goals;
     while (t.reached < 0 && t.goal < goals.size() &&
@@ -91,12 +94,12 @@ void MetricsStream::sample(std::size_t a, std::int64_t f, const std::array<doubl
     }
     if (t.n > 0) {
         const auto& p = at(a, f - 1);
-        const double step = planar_distance(x - p[0], y - p[1]);
+        const double step = planar_distance(root[0] - p[0], root[1] - p[1]);
         t.length += step;
         if (t.reached < 0 || f - 1 < t.reached) t.to_goal += step;
     }
     if (!header_.world.inside(x, y)) ++counts.samples_outside;
-    ring_[a * ring_size_ + std::size_t(f) % ring_size_] = {x, y};
+    ring_[a * ring_size_ + std::size_t(f) % ring_size_] = root;
     t.n = f + 1;
     solid(a, f, s, counts);
     idle(a, t, counts);

@@ -24,9 +24,12 @@ public:
     /// every agent's disk [t, x, y, r] (NaN from the frame it left on).
     void contacts(std::int64_t frame, const std::array<double, 4>* disks, const Contact* contacts, std::size_t count);
     /// Frames first .. first + count - 1, once contacts() had them: every agent's disks, frame-major
-    /// (disks[k * agents + a] at frame first + k). The agents are measured in parallel by `pool`'s
-    /// workers: each one's state is its own, and the counts they share are integers (summed in any order).
-    void frames(std::int64_t first, std::int64_t count, const std::array<double, 4>* disks, util::WorkerPool& pool);
+    /// (disks[k * agents + a] at frame first + k), and its root [x, y] there the same way where the graph
+    /// centres its disks on the body (null: the disks' centres are the roots). The agents are measured in
+    /// parallel by `pool`'s workers: each one's state is its own, and the counts they share are integers
+    /// (summed in any order).
+    void frames(std::int64_t first, std::int64_t count, const std::array<double, 4>* disks,
+                const std::array<double, 2>* roots, util::WorkerPool& pool);
     /// After the run's last frame: the metrics, with the run's choice points and fallbacks (CrowdSummary).
     CrowdMetrics finish(std::uint64_t choice_points, std::uint64_t fallbacks);
 
@@ -51,7 +54,8 @@ private:
         std::uint64_t samples_outside = 0, obstacle_contacts = 0, idle = 0;
     };
 
-    void sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts);
+    void sample(std::size_t a, std::int64_t f, const std::array<double, 4>& s, const std::array<double, 2>& root,
+                Counts& counts);
     void solid(std::size_t a, std::int64_t f, const std::array<double, 4>& s, Counts& counts);
     void idle(std::size_t a, Track& t, Counts& counts);
     void effort(std::size_t a, Track& t);
@@ -70,7 +74,7 @@ private:
     std::vector<std::array<double, 4>> boxes_;
     std::vector<Track> tracks_;
     std::size_t ring_size_;
-    std::vector<std::array<double, 2>> ring_;  // per agent its last ring_size_ positions
+    std::vector<std::array<double, 2>> ring_;  // per agent its root's last ring_size_ positions
     std::uint64_t idle_ = 0;
     std::map<std::pair<int, int>, std::int64_t> last_contact_;  // pairs in contact at the last frame
 };

@@ -30,6 +30,7 @@ FrameStream::FrameStream(const MotionGraph& graph, const Record& header, RecordS
       block_(block_frames(header.tracks.size())),
       group_(group_frames(header.tracks.size())),
       disks_(std::size_t(group_) * tracks_.size()),
+      roots_(graph.centre == io::PathCentre::Root ? 0 : disks_.size()),
       fallback_(disks_.size()) {
     sink_.begin(header_);
 }
@@ -67,7 +68,7 @@ void FrameStream::emit(std::int64_t count) {
     });
     for (std::int64_t k = 0; k < count; ++k)
         count_contacts(next_ + k, &disks_[std::size_t(k) * n], &fallback_[std::size_t(k) * n], found_[std::size_t(k)]);
-    metrics_.frames(next_, count, disks_.data(), pool);
+    metrics_.frames(next_, count, disks_.data(), roots_.empty() ? nullptr : roots_.data(), pool);
     seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
     // The sink's blocks are the record's, whatever the group: the file's time counts as the record's.
     for (std::int64_t k = 0; k < count; k += block_) {
@@ -100,11 +101,15 @@ void FrameStream::place(std::int64_t count, util::WorkerPool& pool) {
                 }
                 while (t.k + 1 < t.clips.size() && t.clips[t.k + 1].start <= f) t.m = Rigid2::of(t.clips[++t.k].place);
                 const PlacedClip& c = t.clips[t.k];
-                const Path& path = g_.clips[std::size_t(c.clip)].path;
-                MOBB_ASSERT(f >= c.start && std::size_t(f - c.start) < path.size());  // final: its clips cover it
-                const Sample& s = path.samples[std::size_t(f - c.start)];
+                const GraphClip& clip = g_.clips[std::size_t(c.clip)];
+                const auto i = std::size_t(f - c.start);
+                MOBB_ASSERT(f >= c.start && i < clip.path.size());  // final: its clips cover it
+                const Sample& s = clip.path.samples[i];
                 disks_[at] = {double(f) * g_.dt(), t.m.apply_x(s.x, s.y), t.m.apply_y(s.x, s.y), s.r};
                 fallback_[at] = c.fallback;
+                if (roots_.empty()) continue;
+                const glm::dvec2 root = root_at(clip, i);
+                roots_[at] = {t.m.apply_x(root.x, root.y), t.m.apply_y(root.x, root.y)};
             }
             t.clips.erase(t.clips.begin(), t.clips.begin() + std::ptrdiff_t(t.k));
             t.k = 0;

@@ -78,6 +78,7 @@ private:
     const std::int64_t block_;
     const std::int64_t group_;                  // frames emitted at a time: whole blocks
     std::vector<std::array<double, 4>> disks_;  // a group, frame-major
+    std::vector<std::array<double, 2>> roots_;  // the same frames' roots, for disks centred on the body
     std::vector<char> fallback_;                // per disk: a fallback clip plays then
     std::vector<CheckScratch> scratch_;         // per worker
     std::vector<std::vector<Contact>> found_;   // per frame of the group: its contacts

@@ -194,8 +194,8 @@ TEST(GraphErrors, EveryBadFieldIsNamed) {
     }
 }
 
-// A graph whose disks are centred on the body: its first disks hold the root, and each clip says how far
-// its root goes.
+// A graph whose disks are centred on the body: each clip gives its root at every sample, the first at the
+// origin, each inside its disk.
 TEST(GraphErrors, EnclosingGraphFieldsAreNamed) {
     std::ifstream in(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json");
     const json body = json::parse(in);
@@ -210,10 +210,16 @@ TEST(GraphErrors, EnclosingGraphFieldsAreNamed) {
         return std::string();
     };
     EXPECT_EQ(error([](json&) {}), "");
-    EXPECT_EQ(error([](json& j) { j["clips"][3].erase("root_reach"); }).rfind("g.json: graph.clips[3]: ", 0), 0u);
-    EXPECT_EQ(error([](json& j) { j["clips"][3]["root_reach"] = -1; }).rfind("g.json: graph.clips[3].root_reach: ", 0),
+    EXPECT_EQ(error([](json& j) { j["clips"][3].erase("root"); }).rfind("g.json: graph.clips[3]: ", 0), 0u);
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["root"].erase(0); }).rfind("g.json: graph.clips[3].root: ", 0), 0u);
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["root"][2] = {0.1}; }).rfind("g.json: graph.clips[3].root[2]: ", 0),
               0u);
-    EXPECT_EQ(error([](json& j) { j["clips"][3]["path"][0][0] = 2.0; }).rfind("g.json: graph.clips[3].path[0]: ", 0),
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["root"][0][0] = 0.01; }).rfind("g.json: graph.clips[3].root[0]: ", 0),
+              0u);
+    const std::string outside = error([](json& j) { j["clips"][3]["root"][5] = {3.0, 0.0}; });
+    EXPECT_EQ(outside.rfind("g.json: graph.clips[3].root[5]: ", 0), 0u) << outside;
+    EXPECT_NE(outside.find("outside its sample's disk"), std::string::npos) << outside;
+    EXPECT_EQ(error([](json& j) { j["clips"][3]["path"][0][0] = 2.0; }).rfind("g.json: graph.clips[3].root[0]: ", 0),
               0u);
     EXPECT_EQ(error([](json& j) { j["centre"] = "middle"; }).rfind("g.json: graph.centre: ", 0), 0u);
     // Without "centre" its disks off the root are refused as the root's.

@@ -118,10 +118,14 @@ TEST(MotionGraph, EnclosingGraphKeepsTheClipsAndNarrowsTheirDisks) {
         EXPECT_EQ(a.successors, b.successors);
         EXPECT_EQ(a.exit_x, b.exit_x);
         EXPECT_EQ(a.exit_heading, b.exit_heading);
-        EXPECT_FALSE(a.root_reach.has_value());
-        ASSERT_TRUE(b.root_reach.has_value());
-        EXPECT_NEAR(*b.root_reach, root_reach_of(a), 2e-6);
+        EXPECT_TRUE(a.root.empty());
         ASSERT_EQ(a.path.size(), b.path.size());
+        ASSERT_EQ(b.root.size(), b.path.size());
+        for (std::size_t i = 0; i < a.path.size(); ++i) {
+            EXPECT_NEAR(root_at(b, i).x, root_at(a, i).x, 2e-6) << "the root graph's centres are the root";
+            EXPECT_NEAR(root_at(b, i).y, root_at(a, i).y, 2e-6);
+        }
+        EXPECT_NEAR(root_reach_of(b), root_reach_of(a), 2e-6);
         for (std::size_t i = 0; i < a.path.size(); ++i) {
             EXPECT_LE(b.path.samples[i].r, a.path.samples[i].r + 1e-6);
             sum_root += a.path.samples[i].r;
@@ -256,7 +260,7 @@ TEST(MotionGraph, BuildsFromWalksTrimsTheStrayFrameAndConnects) {
     }
     const MotionGraph read = graph_from_json(nlohmann::json::parse(graph_to_text(body)), "g");
     EXPECT_EQ(read.centre, io::PathCentre::Enclosing);
-    EXPECT_EQ(read.clips[1].root_reach, body.clips[1].root_reach);
+    EXPECT_EQ(read.clips[1].root, body.clips[1].root);
     EXPECT_EQ(kinds_of(read), kinds_of(g));
 }
 

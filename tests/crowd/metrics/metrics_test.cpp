@@ -85,6 +85,61 @@ TEST(Metrics, FallbacksExcuseTheirContactsAndWallsCount) {
     EXPECT_TRUE(crowd_metrics(ok, g).passed);
 }
 
+// A graph whose disks are centred on the body, made by hand: clip 0's root walks along +x at 0.6 m/s while
+// its disk swings 0.1 m to either side every frame; clip 1's root stands while its disk drifts along +x
+// at 0.3 m/s (a body turning on the spot). 60 samples at 30 Hz each; every disk holds its root.
+MotionGraph swaying_graph() {
+    MotionGraph g;
+    g.fps = 30;
+    g.centre = io::PathCentre::Enclosing;
+    g.clips.resize(2);
+    for (int k = 0; k < 2; ++k) {
+        GraphClip& c = g.clips[std::size_t(k)];
+        c.exit = 60;
+        c.successors = {k};
+        c.distances = {0};
+        c.path.dt = g.dt();
+        for (int i = 0; i < 60; ++i) {
+            const glm::dvec2 root = k == 0 ? glm::dvec2(0.02 * i, 0) : glm::dvec2(0, 0);
+            const Sample disk = k == 0 ? Sample{0.02 * i, i % 2 ? 0.1 : -0.1, 0.3} : Sample{0.01 * i, 0, 0.7};
+            c.path.samples.push_back(disk);
+            c.root.push_back(root);
+        }
+    }
+    return g;
+}
+
+// Where the disks are centred on the body, how an agent moves is its root's: speed, idle, path length and
+// SteerSuite's effort follow the root (placed as its clips are), not its disk's centre.
+TEST(Metrics, MotionFollowsTheRootWhereDisksAreCentredOnTheBody) {
+    const MotionGraph g = swaying_graph();
+    Record r;
+    r.dt = g.dt();
+    r.frames = 60;
+    r.world = {0, 0, 10, 10, false, {}};
+    r.tracks.resize(2);
+    for (int a = 0; a < 2; ++a) {
+        AgentTrack& t = r.tracks[std::size_t(a)];
+        const Placement place{1.0 + 5 * a, 2.0 + 5 * a, 0.5, 0};
+        t.clips.push_back({a, 0, place, false, -1});
+        const Rigid2 m = Rigid2::of(place);
+        for (const Sample& s : g.clips[std::size_t(a)].path.samples)
+            t.samples.push_back({double(t.samples.size()) * r.dt, m.apply_x(s.x, s.y), m.apply_y(s.x, s.y), s.r});
+    }
+    const CrowdMetrics m = crowd_metrics(r, g);
+    EXPECT_NEAR(m.graph_speed, (0.02 * 59 / 2.0 + 0) / 2, 1e-9) << "the clips' roots: 1.18 m in 2 s, and none";
+    EXPECT_NEAR(m.mean_speed, (0.6 + 0) / 2, 1e-9) << "the disks' centres would give (6.03 + 0.3) / 2";
+    EXPECT_NEAR(m.idle_share, 0.5, 1e-12) << "agent 1's root stands all along; its disk drifts at 0.3 m/s";
+    EXPECT_NEAR(m.longest_idle, 2.0, 1e-9);
+    // The same record read as root-centred disks moves as the disks do.
+    MotionGraph as_root = g;
+    as_root.centre = io::PathCentre::Root;
+    for (GraphClip& c : as_root.clips) c.root.clear();
+    const CrowdMetrics d = crowd_metrics(r, as_root);
+    EXPECT_GT(d.mean_speed, 3.0);
+    EXPECT_EQ(d.idle_share, 0.0);
+}
+
 TEST(Metrics, JsonHasEveryFigure) {
     const std::string j = metrics_json(crowd_metrics(passing(false), load_graph(kGraph)));
     for (const char* key :

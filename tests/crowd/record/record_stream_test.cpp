@@ -21,15 +21,15 @@ using test::temp_file;
 
 const MotionGraph& graph() { return test::committed_graph(); }
 
-TEST(RecordStream, MetricsOnTheStreamEqualTheWholeRecords) {
-    bool contacts = false, reached = false, left = false;
+// The metrics of a run on `g`, streamed and on the whole record, bit for bit; what they covered.
+void expect_stream_equals_whole(const MotionGraph& g, bool& contacts, bool& reached, bool& left) {
     for (const CrowdOptions& o : {test::random_mode_crowd(), test::crowd_beside_obstacle(10), test::leaving_crowd()}) {
-        const CrowdRun whole = run_crowd(graph(), NarrowPhase::sweep(graph()), o);
-        const CrowdMetrics expected = crowd_metrics(whole.record, graph(), o.goal_radius);
+        const CrowdRun whole = run_crowd(g, NarrowPhase::sweep(g), o);
+        const CrowdMetrics expected = crowd_metrics(whole.record, g, o.goal_radius);
         CrowdOptions s = o;
         RecordSink nowhere;
         s.sink = &nowhere;
-        const CrowdRun run = run_crowd(graph(), NarrowPhase::sweep(graph()), s);
+        const CrowdRun run = run_crowd(g, NarrowPhase::sweep(g), s);
         ASSERT_TRUE(run.metrics.has_value());
         const CrowdMetrics& m = *run.metrics;
         EXPECT_EQ(metrics_json(m), metrics_json(expected));
@@ -44,7 +44,20 @@ TEST(RecordStream, MetricsOnTheStreamEqualTheWholeRecords) {
         reached = reached || m.reached > 0;
         left = left || m.left > 0;
     }
+}
+
+TEST(RecordStream, MetricsOnTheStreamEqualTheWholeRecords) {
+    bool contacts = false, reached = false, left = false;
+    expect_stream_equals_whole(graph(), contacts, reached, left);
     EXPECT_TRUE(contacts && reached && left);  // the runs cover what the metrics count
+}
+
+// With disks centred on the body the motion metrics follow the root (metrics_test.cpp): the stream places
+// the roots as the whole record's clips do.
+TEST(RecordStream, MetricsOnTheStreamFollowTheRootAsTheWholeRecords) {
+    bool contacts = false, reached = false, left = false;
+    expect_stream_equals_whole(test::body_centred_graph(), contacts, reached, left);
+    EXPECT_TRUE(contacts && reached && left);
 }
 
 // Forwards to a writer, and stops the run (as a kill would) at the block of frames starting at `stop`.

@@ -2,11 +2,11 @@
 // Pighin 2002; Gleicher et al.'s Snap-Together Motion). The crowd of the paper's section 5 plays its clips.
 #pragma once
 #include <iosfwd>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <nlohmann/json_fwd.hpp>
 
 #include "mobb/core/path.h"
@@ -40,9 +40,9 @@ struct GraphClip {
     /// (heading: see PoseTrack). Metres. Its disks are centred as the graph's `centre` says: on the root
     /// (the first sample then at the origin) or on the smallest disk holding the body.
     Path path;
-    /// How far the root goes from its start over the clip (metres), when the disks are not centred on it;
-    /// empty: the path's own reach (root_reach_of).
-    std::optional<double> root_reach;
+    /// The root on the ground at each sample, in the clip's frame (metres, the first at the origin), when the
+    /// disks are not centred on it; empty: the path's centres are the root (root_at).
+    std::vector<glm::dvec2> root;
     /// Root position and heading change (radians, counter-clockwise) of sample `exit` in that frame:
     /// where and how a successor starts.
     double exit_x = 0, exit_y = 0, exit_heading = 0;
@@ -66,8 +66,11 @@ inline constexpr double kInPlaceReach = 0.25, kInPlaceExit = 0.2;  // metres
 inline constexpr double kIdleReach = 0.15, kIdleExit = 0.05;       // metres (exit: before the snap)
 inline constexpr double kIdleTurn = 0.1;                           // radians (before the snap)
 ClipKind kind_of(const GraphClip& clip, int id);
-/// The largest ground distance of the clip's root from where it starts (metres): `root_reach`, else the
-/// path's samples' from the first.
+/// The clip's root on the ground at sample i, in its frame (metres): where the agent is, whatever its disk.
+inline glm::dvec2 root_at(const GraphClip& clip, std::size_t i) {
+    return clip.root.empty() ? glm::dvec2(clip.path.samples[i].x, clip.path.samples[i].y) : clip.root[i];
+}
+/// The largest ground distance of the clip's root from where it starts (metres).
 double root_reach_of(const GraphClip& clip);
 const char* to_string(ClipKind kind);
 
