@@ -313,7 +313,7 @@ bool CrowdPoser::free_pose(int agent, std::int64_t k, const std::vector<int>& jo
     return true;
 }
 
-double CrowdPoser::envelope(int agent, std::int64_t k) const {
+CrowdPoser::Envelope CrowdPoser::envelope(int agent, std::int64_t k) const {
     // The agent's disks: frames first .. last of the record's track, or of the window.
     const AgentTrack& track = record_.tracks[std::size_t(agent)];
     std::int64_t first = 0, last = std::int64_t(track.samples.size()) - 1;
@@ -328,26 +328,45 @@ double CrowdPoser::envelope(int agent, std::int64_t k) const {
                        : track.samples[std::size_t(m)][3];
     };
     k = std::min(k, last);
-    if (k < first) return std::numeric_limits<double>::infinity();
+    if (k < first) return {std::numeric_limits<double>::infinity(), glm::dvec2(0.0)};
     // The envelope e(k) = min over k' in [k, k + look-ahead] of r(k') + pull_speed (k' - k) dt is at most
     // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
     // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
-    // drawn in over the frames before rather than at once.
+    // drawn in over the frames before rather than at once. Disks centred on the body move about the root
+    // (by o(k)): a joint the root carries, inside e(k) of o(k), is inside r(k') - |o(k') - o(k)| of o(k').
+    const bool on_root = sources_->graph().centre == io::PathCentre::Root;
+    const glm::dvec2 o = on_root ? glm::dvec2(0.0) : centre_offset(agent, k);
     const std::int64_t ahead = std::int64_t(std::ceil(blend_.look_ahead / record_.dt));
     double e = radius(k);
-    for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m)
-        e = std::min(e, radius(m) + blend_.pull_speed * double(m - k) * record_.dt);
-    return e;
+    for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m) {
+        const double moved = on_root ? 0.0 : glm::length(centre_offset(agent, m) - o);
+        e = std::min(e, std::max(0.0, radius(m) - moved) + blend_.pull_speed * double(m - k) * record_.dt);
+    }
+    return {e, o};
 }
 
-void CrowdPoser::hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const {
+glm::dvec2 CrowdPoser::centre_offset(int agent, std::int64_t m) const {
+    const MotionGraph& g = sources_->graph();
+    AgentClipAt at;
+    if (!agent_clip_at(record_, g, agent, m, at)) return glm::dvec2(0.0);
+    const GraphClip& clip = g.clips[std::size_t(at.placed->clip)];
+    const auto i = std::size_t(m - at.placed->start);
+    const Rigid2 place = Rigid2::of(at.placed->place);
+    const Sample& s = clip.path.samples[i];
+    const glm::dvec2 root = root_at(clip, i);
+    return {place.apply_x(s.x, s.y) - place.apply_x(root.x, root.y),
+            place.apply_y(s.x, s.y) - place.apply_y(root.x, root.y)};
+}
+
+void CrowdPoser::hold_inside(const std::vector<int>& joints, const Envelope& e, std::vector<glm::dvec3>& out) const {
+    const double cx = out[0].x + e.offset.x, cy = out[0].y + e.offset.y;
     for (int j : joints) {
         if (j == 0) continue;
         glm::dvec3& q = out[std::size_t(j)];
-        const double dx = q.x - out[0].x, dy = q.y - out[0].y, d2 = dx * dx + dy * dy;
-        if (d2 <= e * e) continue;
-        const double f = e / std::sqrt(d2);
-        q = {out[0].x + dx * f, out[0].y + dy * f, q.z};
+        const double dx = q.x - cx, dy = q.y - cy, d2 = dx * dx + dy * dy;
+        if (d2 <= e.radius * e.radius) continue;
+        const double f = e.radius / std::sqrt(d2);
+        q = {cx + dx * f, cy + dy * f, q.z};
     }
 }
 

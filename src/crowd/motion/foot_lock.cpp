@@ -165,7 +165,7 @@ void CrowdPoser::hold_step(Hold& h, const FootFree& q, Plant plant, bool first, 
 glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q) const {
     // The leg stretched at most to lock_.reach of its length (or the free pose's own stretch): the target
     // raised to where the leg reaches it (FootLock::lift), else towards the hip; then on the ground inside
-    // the disk the collision answers used, towards the root.
+    // the disk the collision answers used, towards its centre.
     const double leg = glm::length(q.knee - q.hip) + glm::length(q.ankle - q.knee);
     const double limit = std::min(leg, std::max(glm::length(q.ankle - q.hip), lock_.reach * leg));
     glm::dvec3 out = target;
@@ -173,10 +173,11 @@ glm::dvec3 CrowdPoser::within_reach(const glm::dvec3& target, const FootFree& q)
     if (lock_.lift && ground < limit) out.z = std::max(out.z, q.hip.z - std::sqrt(limit * limit - ground * ground));
     const double d = glm::length(out - q.hip);
     if (d > limit) out = q.hip + (out - q.hip) * (limit / d);
-    const double dx = out.x - q.root.x, dy = out.y - q.root.y, from_root = std::sqrt(dx * dx + dy * dy);
-    if (from_root > q.disk) {
-        const double f = q.disk * (1 - 1e-12) / from_root;
-        out = {q.root.x + dx * f, q.root.y + dy * f, out.z};
+    const double cx = q.root.x + q.disk.offset.x, cy = q.root.y + q.disk.offset.y;
+    const double dx = out.x - cx, dy = out.y - cy, from_centre = std::sqrt(dx * dx + dy * dy);
+    if (from_centre > q.disk.radius) {
+        const double f = q.disk.radius * (1 - 1e-12) / from_centre;
+        out = {cx + dx * f, cy + dy * f, out.z};
     }
     return out;
 }
@@ -471,7 +472,7 @@ const CrowdPoser::Pin* CrowdPoser::pin_target(int agent, std::int64_t k, int foo
 void CrowdPoser::lock_feet(int agent, std::int64_t k, std::vector<glm::dvec3>& out, FeetAt* feet) {
     std::array<AnkleTarget, 2> targets{};
     std::array<bool, 2> held{}, bent{};
-    const double disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
+    const Envelope disk = blend_.window > 0 ? disk_ : envelope(agent, k);  // before foot_free moves disk_
     for (int f = 0; f < 2; ++f) {
         const RigLeg& leg = legs_[std::size_t(f)];
         if (!leg.complete()) continue;

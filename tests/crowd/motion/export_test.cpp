@@ -51,6 +51,17 @@ CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool l
     return CrowdPoser(record(), std::make_shared<PoseSources>(graph()), joints, blend, lock);
 }
 
+// Where the graph puts agent a's root at frame k of record r: its clip's root there, placed (for disks
+// centred on the body, off their centres).
+glm::dvec2 placed_root(const Record& r, const MotionGraph& g, int a, std::int64_t k) {
+    AgentClipAt at;
+    if (!agent_clip_at(r, g, a, k, at)) return glm::dvec2(std::nan(""));
+    const GraphClip& clip = g.clips[std::size_t(at.placed->clip)];
+    const glm::dvec2 p = root_at(clip, std::size_t(k - at.placed->start));
+    const Rigid2 m = Rigid2::of(at.placed->place);
+    return {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y)};
+}
+
 TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
     MOBB_REQUIRE_MOCAP();
     for (const double window : {0.0, 0.25}) {
@@ -64,7 +75,8 @@ TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
             for (std::int64_t k = 0; k < record().frames; ++k) {
                 ASSERT_TRUE(p.pose(a, k, pose)) << "agent " << a << " frame " << k;
                 const auto& s = record().tracks[std::size_t(a)].samples[std::size_t(k)];
-                root_error = std::max(root_error, std::hypot(pose[0].x - s[1], pose[0].y - s[2]));
+                const glm::dvec2 root = placed_root(record(), *graph(), a, k);
+                root_error = std::max(root_error, std::hypot(pose[0].x - root.x, pose[0].y - root.y));
                 EXPECT_EQ(pose[0].z, 0.0);
                 for (const glm::dvec3& q : pose)
                     outside = std::max(outside, std::hypot(q.x - pose[0].x, q.y - pose[0].y) - s[3]);
@@ -75,6 +87,41 @@ TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
         // ones are held inside it.
         EXPECT_LT(outside, window > 0 ? 1e-9 : 1e-5) << "blend " << window;
     }
+}
+
+// Disks centred on the body (assets/graphs/cmu_locomotion_enclosing.json): the root where the clip puts it,
+// off the disk's centre, and every joint of the blended, foot-locked pose inside the disk, as with the
+// root's disks; held about the root instead, some would not be.
+TEST(AgentPose, DisksCentredOnTheBodyHoldTheBlendedPose) {
+    MOBB_REQUIRE_MOCAP();
+    const auto body =
+        std::make_shared<MotionGraph>(load_graph(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json"));
+    CrowdOptions o;
+    o.agents = 12;
+    o.seconds = 10;
+    o.seed = 11;
+    o.world.x1 = 12;
+    o.world.y1 = 12;
+    const Record r = run_crowd(*body, NarrowPhase::sweep(*body), o).record;
+    CrowdPoser p(r, std::make_shared<PoseSources>(body), RigJoints::All, PoseBlend{}, FootLock{});
+    std::vector<glm::dvec3> pose;
+    double root_error = 0, outside = -1, off_centre = 0, outside_about_root = -1;
+    for (int a = 0; a < int(r.tracks.size()); ++a)
+        for (std::int64_t k = 0; k < r.frames; ++k) {
+            ASSERT_TRUE(p.pose(a, k, pose));
+            const auto& s = r.tracks[std::size_t(a)].samples[std::size_t(k)];
+            const glm::dvec2 root = placed_root(r, *body, a, k);
+            root_error = std::max(root_error, std::hypot(pose[0].x - root.x, pose[0].y - root.y));
+            off_centre = std::max(off_centre, std::hypot(root.x - s[1], root.y - s[2]));
+            for (const glm::dvec3& q : pose) {
+                outside = std::max(outside, std::hypot(q.x - s[1], q.y - s[2]) - s[3]);
+                outside_about_root = std::max(outside_about_root, std::hypot(q.x - root.x, q.y - root.y) - s[3]);
+            }
+        }
+    EXPECT_LT(root_error, 1e-4);
+    EXPECT_GT(off_centre, 0.1) << "metres: the disks are not about the root";
+    EXPECT_LT(outside, 1e-5) << "metres: inside, to the graph's rounding of the centre about the root";
+    EXPECT_GT(outside_about_root, 0.05) << "a disk this size about the root would not hold the body";
 }
 
 TEST(AgentPose, OutsideTheRecordThereIsNoPose) {
@@ -580,9 +627,9 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
         for (int f = 0; f < scene.frames; ++f) {
             const std::int64_t frame = 90 + f;  // 3 s at 30 fps
             const auto joints = gltf_joints(m, k, f);
-            const auto& s = record().tracks[std::size_t(agent)].samples[std::size_t(frame)];
+            const glm::dvec2 root = placed_root(record(), *graph(), agent, frame);
             // glTF is Y up: the ground point (x, y) is (x, -z).
-            root_error = std::max(root_error, std::hypot(joints[0].x - s[1], -joints[0].z - s[2]));
+            root_error = std::max(root_error, std::hypot(joints[0].x - root.x, -joints[0].z - root.y));
             ASSERT_TRUE(p.pose(agent, frame, pose, raw, unlocked, nullptr));
             for (std::size_t j = 0; j < pose.size(); ++j) {
                 joint_error =
@@ -612,8 +659,8 @@ TEST(ExportCrowd, BvhComesBackAsTheAgentsTrack) {
     EXPECT_NEAR(clip.animation.dt, record().dt, 1e-9);
     double error = 0;
     for (std::size_t k = 0; k < clip.path.size(); ++k) {
-        const auto& s = record().tracks[5].samples[k];
-        error = std::max(error, std::hypot(clip.path.samples[k].x - s[1], clip.path.samples[k].y - s[2]));
+        const glm::dvec2 root = placed_root(record(), *graph(), 5, std::int64_t(k));
+        error = std::max(error, std::hypot(clip.path.samples[k].x - root.x, clip.path.samples[k].y - root.y));
     }
     EXPECT_LT(error, 1e-3);
 }

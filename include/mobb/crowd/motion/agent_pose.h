@@ -98,8 +98,9 @@ Rig crowd_rig(PoseSources& sources, RigJoints joints);
 /// `window` seconds: offset(s) = d_j (1 - 3 s^2 + 2 s^3), s = time since the clip start / window (Bollo
 /// fits a quintic to the offset's velocity; this cubic starts at the offset and ends with zero slope).
 /// The root is never blended, so the ground path is exactly the clip's. Bound: a joint whose ground
-/// distance to the root exceeds e(k) = min over the next `look_ahead` seconds of r(k') + pull_speed (t_k' -
-/// t_k) (at most the record's r(t_k)) is pulled radially (height kept) onto that circle, so the disk r(t)
+/// distance to the disk's centre exceeds e(k) = min over the next `look_ahead` seconds of r(k') - |o(k') -
+/// o(k)| + pull_speed (t_k' - t_k) (at most the record's r(t_k); o the disk's centre less the root, zero
+/// for disks centred on the root) is pulled radially (height kept) onto that circle, so the disk r(t)
 /// the collision answers used still holds every joint of the blended pose, and where a clip starts from a
 /// smaller disk than the pose it eases out of, joints are drawn in over the frames before (at most
 /// pull_speed) rather than at once.
@@ -182,10 +183,16 @@ public:
     bool pose_at(int agent, double t, std::vector<glm::dvec3>& out);
 
 private:
+    /// Where frame k's joints are held (see PoseBlend): on the ground at most `radius` metres from the root
+    /// moved by `offset`, the disk's centre less the root (zero where the disks are centred on the root).
+    struct Envelope {
+        double radius = 0;
+        glm::dvec2 offset{0.0};
+    };
     struct FootFree {
         glm::dvec3 hip{0.0}, knee{0.0}, ankle{0.0}, toe{0.0};
         glm::dvec3 root{0.0};
-        double disk = 0;  ///< e(k): every joint's ground distance from the root at most this
+        Envelope disk;  ///< e(k): every joint held inside it
     };
     /// A hold followed frame by frame from its contact's start (contact_target): the planted point, the
     /// ankle's target and free position at `frame`. Kept per agent and foot, so consecutive frames (the
@@ -221,9 +228,11 @@ private:
     /// The pose before foot locking (blended, held inside the disk), for `joints` only.
     bool free_pose(int agent, std::int64_t k, const std::vector<int>& joints, std::vector<glm::dvec3>& out,
                    std::vector<glm::dvec3>& raw_out);
-    /// e(k) (see PoseBlend), or infinity where the agent has no disk at frame k.
-    double envelope(int agent, std::int64_t k) const;
-    void hold_inside(const std::vector<int>& joints, double e, std::vector<glm::dvec3>& out) const;
+    /// e(k) (see PoseBlend), its radius infinite where the agent has no disk at frame k.
+    Envelope envelope(int agent, std::int64_t k) const;
+    /// The disk's centre less the root at frame m (metres, ground), on frames the agent has a disk.
+    glm::dvec2 centre_offset(int agent, std::int64_t m) const;
+    void hold_inside(const std::vector<int>& joints, const Envelope& e, std::vector<glm::dvec3>& out) const;
     // Foot locking (foot_lock.cpp).
     /// The foot's contact at frame k: its clip's own, or with `carry` also one carried through a blend
     /// (carried_plant).
@@ -309,7 +318,7 @@ private:
     std::vector<ClipKind> kinds_;                 // per graph clip (FootLock::pin_shuffles)
     int release_frames_ = 0;                      // FootLock::release in frames
     std::int64_t blend_frames_ = 0;               // frames a clip start blends (in_blend): ceil(window / dt)
-    double disk_ = 0;                             // e(k) of the last free_pose (with blending)
+    Envelope disk_;                               // e(k) of the last free_pose (with blending)
     AgentClipAt posed_;                           // the clip of the frame pose() poses (agent -1: none)
     int posed_agent_ = -1;
     std::int64_t posed_frame_ = 0;
