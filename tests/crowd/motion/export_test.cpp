@@ -94,8 +94,8 @@ TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
 // root's disks; held about the root instead, some would not be.
 TEST(AgentPose, DisksCentredOnTheBodyHoldTheBlendedPose) {
     MOBB_REQUIRE_MOCAP();
-    const auto body =
-        std::make_shared<MotionGraph>(load_graph(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json"));
+    const auto body = std::make_shared<MotionGraph>(
+        load_graph(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json"));
     CrowdOptions o;
     o.agents = 12;
     o.seconds = 10;
