@@ -332,16 +332,16 @@ CrowdPoser::Envelope CrowdPoser::envelope(int agent, std::int64_t k) const {
     // The envelope e(k) = min over k' in [k, k + look-ahead] of r(k') + pull_speed (k' - k) dt is at most
     // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
     // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
-    // drawn in over the frames before rather than at once. Disks centred on the body move about the root
-    // (by o(k)): a joint the root carries, inside e(k) of o(k), is inside r(k') - |o(k') - o(k)| of o(k').
+    // drawn in over the frames before rather than at once. Disks centred on the body are off the root by
+    // o(k); the joints are held about the disk's centre. (Their sway, |o(k') - o(k)|, subtracted from r(k')
+    // as well drew the joints in further: at clip starts the p99 joint jump 2.3 times that within clips
+    // against 1.9, walking steps skating 10.3 % against 8.9 %; 100 wanderers, seeds 1-3.)
     const bool on_root = sources_->graph().centre == io::PathCentre::Root;
     const glm::dvec2 o = on_root ? glm::dvec2(0.0) : centre_offset(agent, k);
     const std::int64_t ahead = std::int64_t(std::ceil(blend_.look_ahead / record_.dt));
     double e = radius(k);
-    for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m) {
-        const double moved = on_root ? 0.0 : glm::length(centre_offset(agent, m) - o);
-        e = std::min(e, std::max(0.0, radius(m) - moved) + blend_.pull_speed * double(m - k) * record_.dt);
-    }
+    for (std::int64_t m = k + 1; m <= std::min(k + ahead, last); ++m)
+        e = std::min(e, radius(m) + blend_.pull_speed * double(m - k) * record_.dt);
     return {e, o};
 }
 

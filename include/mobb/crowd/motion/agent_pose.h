@@ -98,9 +98,9 @@ Rig crowd_rig(PoseSources& sources, RigJoints joints);
 /// `window` seconds: offset(s) = d_j (1 - 3 s^2 + 2 s^3), s = time since the clip start / window (Bollo
 /// fits a quintic to the offset's velocity; this cubic starts at the offset and ends with zero slope).
 /// The root is never blended, so the ground path is exactly the clip's. Bound: a joint whose ground
-/// distance to the disk's centre exceeds e(k) = min over the next `look_ahead` seconds of r(k') - |o(k') -
-/// o(k)| + pull_speed (t_k' - t_k) (at most the record's r(t_k); o the disk's centre less the root, zero
-/// for disks centred on the root) is pulled radially (height kept) onto that circle, so the disk r(t)
+/// distance to the disk's centre (the root, or off it for disks centred on the body) exceeds e(k) = min
+/// over the next `look_ahead` seconds of r(k') + pull_speed (t_k' - t_k) (at most the record's r(t_k)) is
+/// pulled radially (height kept) onto that circle, so the disk r(t)
 /// the collision answers used still holds every joint of the blended pose, and where a clip starts from a
 /// smaller disk than the pose it eases out of, joints are drawn in over the frames before (at most
 /// pull_speed) rather than at once.
