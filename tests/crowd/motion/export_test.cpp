@@ -29,17 +29,20 @@ std::shared_ptr<MotionGraph> graph() {
     return g;
 }
 
-// A wandering crowd: 12 agents for 30 s in a walled room (some 300 clip starts).
+// A wandering crowd of 12 agents in a walled 12 x 12 m room.
+CrowdOptions room_crowd(double seconds) {
+    CrowdOptions o;
+    o.agents = 12;
+    o.seconds = seconds;
+    o.seed = 11;
+    o.world.x1 = 12;
+    o.world.y1 = 12;
+    return o;
+}
+
+// The room's crowd for 30 s (some 300 clip starts).
 const Record& record() {
-    static const Record r = [] {
-        CrowdOptions o;
-        o.agents = 12;
-        o.seconds = 30;
-        o.seed = 11;
-        o.world.x1 = 12;
-        o.world.y1 = 12;
-        return run_crowd(*graph(), NarrowPhase::sweep(*graph()), o).record;
-    }();
+    static const Record r = run_crowd(*graph(), NarrowPhase::sweep(*graph()), room_crowd(30)).record;
     return r;
 }
 
@@ -96,13 +99,7 @@ TEST(AgentPose, DisksCentredOnTheBodyHoldTheBlendedPose) {
     MOBB_REQUIRE_MOCAP();
     const auto body = std::make_shared<MotionGraph>(
         load_graph(std::string(MOBB_SOURCE_DIR) + "/assets/graphs/cmu_locomotion_enclosing.json"));
-    CrowdOptions o;
-    o.agents = 12;
-    o.seconds = 10;
-    o.seed = 11;
-    o.world.x1 = 12;
-    o.world.y1 = 12;
-    const Record r = run_crowd(*body, NarrowPhase::sweep(*body), o).record;
+    const Record r = run_crowd(*body, NarrowPhase::sweep(*body), room_crowd(10)).record;
     CrowdPoser p(r, std::make_shared<PoseSources>(body), RigJoints::All, PoseBlend{}, FootLock{});
     std::vector<glm::dvec3> pose;
     double root_error = 0, outside = -1, off_centre = 0, outside_about_root = -1;
