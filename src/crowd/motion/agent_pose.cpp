@@ -333,9 +333,8 @@ CrowdPoser::Envelope CrowdPoser::envelope(int agent, std::int64_t k) const {
     // r(k), and a joint held inside it never needs to move inwards faster than pull_speed to stay inside
     // the frames after: where the next clip's disk is smaller than the pose it starts from, joints are
     // drawn in over the frames before rather than at once. Disks centred on the body are off the root by
-    // o(k); the joints are held about the disk's centre. (Their sway, |o(k') - o(k)|, subtracted from r(k')
-    // as well drew the joints in further: at clip starts the p99 joint jump 2.3 times that within clips
-    // against 1.9, walking steps skating 10.3 % against 8.9 %; 100 wanderers, seeds 1-3.)
+    // o(k); the joints are held about the disk's centre. (The centre's sway, |o(k') - o(k)|, subtracted from
+    // r(k') as well drew the joints in further: more pops and skating, bench/results/log.md, twelfth stop.)
     const bool on_root = sources_->graph().centre == io::PathCentre::Root;
     const glm::dvec2 o = on_root ? glm::dvec2(0.0) : centre_offset(agent, k);
     const std::int64_t ahead = std::int64_t(std::ceil(blend_.look_ahead / record_.dt));
