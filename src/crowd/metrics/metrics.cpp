@@ -35,8 +35,8 @@ Samples roots_of(const AgentTrack& t, const MotionGraph& g) {
         const GraphClip& clip = g.clips.at(std::size_t(c.clip));
         const auto i = std::size_t(std::int64_t(f) - c.start);
         MOBB_ASSERT(i < clip.path.size());
-        const glm::dvec2 p = root_at(clip, i);
-        out.push_back({t.samples[f][0], m.apply_x(p.x, p.y), m.apply_y(p.x, p.y), t.samples[f][3]});
+        const glm::dvec2 p = placed_root(clip, m, i);
+        out.push_back({t.samples[f][0], p.x, p.y, t.samples[f][3]});
     }
     return out;
 }

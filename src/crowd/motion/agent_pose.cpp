@@ -352,9 +352,8 @@ glm::dvec2 CrowdPoser::centre_offset(int agent, std::int64_t m) const {
     const auto i = std::size_t(m - at.placed->start);
     const Rigid2 place = Rigid2::of(at.placed->place);
     const Sample& s = clip.path.samples[i];
-    const glm::dvec2 root = root_at(clip, i);
-    return {place.apply_x(s.x, s.y) - place.apply_x(root.x, root.y),
-            place.apply_y(s.x, s.y) - place.apply_y(root.x, root.y)};
+    const glm::dvec2 root = placed_root(clip, place, i);
+    return {place.apply_x(s.x, s.y) - root.x, place.apply_y(s.x, s.y) - root.y};
 }
 
 void CrowdPoser::hold_inside(const std::vector<int>& joints, const Envelope& e, std::vector<glm::dvec3>& out) const {

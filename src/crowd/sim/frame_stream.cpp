@@ -108,8 +108,8 @@ void FrameStream::place(std::int64_t count, util::WorkerPool& pool) {
                 disks_[at] = {double(f) * g_.dt(), t.m.apply_x(s.x, s.y), t.m.apply_y(s.x, s.y), s.r};
                 fallback_[at] = c.fallback;
                 if (roots_.empty()) continue;
-                const glm::dvec2 root = root_at(clip, i);
-                roots_[at] = {t.m.apply_x(root.x, root.y), t.m.apply_y(root.x, root.y)};
+                const glm::dvec2 root = placed_root(clip, t.m, i);
+                roots_[at] = {root.x, root.y};
             }
             t.clips.erase(t.clips.begin(), t.clips.begin() + std::ptrdiff_t(t.k));
             t.k = 0;

@@ -56,13 +56,11 @@ CrowdPoser poser(PoseBlend blend = {}, RigJoints joints = RigJoints::All, bool l
 
 // Where the graph puts agent a's root at frame k of record r: its clip's root there, placed (for disks
 // centred on the body, off their centres).
-glm::dvec2 placed_root(const Record& r, const MotionGraph& g, int a, std::int64_t k) {
+glm::dvec2 root_of_agent(const Record& r, const MotionGraph& g, int a, std::int64_t k) {
     AgentClipAt at;
     if (!agent_clip_at(r, g, a, k, at)) return glm::dvec2(std::nan(""));
-    const GraphClip& clip = g.clips[std::size_t(at.placed->clip)];
-    const glm::dvec2 p = root_at(clip, std::size_t(k - at.placed->start));
-    const Rigid2 m = Rigid2::of(at.placed->place);
-    return {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y)};
+    return placed_root(g.clips[std::size_t(at.placed->clip)], Rigid2::of(at.placed->place),
+                       std::size_t(k - at.placed->start));
 }
 
 TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
@@ -78,7 +76,7 @@ TEST(AgentPose, RootsOnTheTrackAndJointsInsideTheDisk) {
             for (std::int64_t k = 0; k < record().frames; ++k) {
                 ASSERT_TRUE(p.pose(a, k, pose)) << "agent " << a << " frame " << k;
                 const auto& s = record().tracks[std::size_t(a)].samples[std::size_t(k)];
-                const glm::dvec2 root = placed_root(record(), *graph(), a, k);
+                const glm::dvec2 root = root_of_agent(record(), *graph(), a, k);
                 root_error = std::max(root_error, std::hypot(pose[0].x - root.x, pose[0].y - root.y));
                 EXPECT_EQ(pose[0].z, 0.0);
                 for (const glm::dvec3& q : pose)
@@ -107,7 +105,7 @@ TEST(AgentPose, DisksCentredOnTheBodyHoldTheBlendedPose) {
         for (std::int64_t k = 0; k < r.frames; ++k) {
             ASSERT_TRUE(p.pose(a, k, pose));
             const auto& s = r.tracks[std::size_t(a)].samples[std::size_t(k)];
-            const glm::dvec2 root = placed_root(r, *body, a, k);
+            const glm::dvec2 root = root_of_agent(r, *body, a, k);
             root_error = std::max(root_error, std::hypot(pose[0].x - root.x, pose[0].y - root.y));
             off_centre = std::max(off_centre, std::hypot(root.x - s[1], root.y - s[2]));
             for (const glm::dvec3& q : pose) {
@@ -624,7 +622,7 @@ TEST(ExportCrowd, GltfHoldsOneSkinPerAgentOnItsTrack) {
         for (int f = 0; f < scene.frames; ++f) {
             const std::int64_t frame = 90 + f;  // 3 s at 30 fps
             const auto joints = gltf_joints(m, k, f);
-            const glm::dvec2 root = placed_root(record(), *graph(), agent, frame);
+            const glm::dvec2 root = root_of_agent(record(), *graph(), agent, frame);
             // glTF is Y up: the ground point (x, y) is (x, -z).
             root_error = std::max(root_error, std::hypot(joints[0].x - root.x, -joints[0].z - root.y));
             ASSERT_TRUE(p.pose(agent, frame, pose, raw, unlocked, nullptr));
@@ -656,7 +654,7 @@ TEST(ExportCrowd, BvhComesBackAsTheAgentsTrack) {
     EXPECT_NEAR(clip.animation.dt, record().dt, 1e-9);
     double error = 0;
     for (std::size_t k = 0; k < clip.path.size(); ++k) {
-        const glm::dvec2 root = placed_root(record(), *graph(), 5, std::int64_t(k));
+        const glm::dvec2 root = root_of_agent(record(), *graph(), 5, std::int64_t(k));
         error = std::max(error, std::hypot(clip.path.samples[k].x - root.x, clip.path.samples[k].y - root.y));
     }
     EXPECT_LT(error, 1e-3);

@@ -70,6 +70,11 @@ ClipKind kind_of(const GraphClip& clip, int id);
 inline glm::dvec2 root_at(const GraphClip& clip, std::size_t i) {
     return clip.root.empty() ? glm::dvec2(clip.path.samples[i].x, clip.path.samples[i].y) : clip.root[i];
 }
+/// The same placed by `m` (a placement's rigid part, Rigid2::of): the root in the world (metres).
+inline glm::dvec2 placed_root(const GraphClip& clip, const Rigid2& m, std::size_t i) {
+    const glm::dvec2 p = root_at(clip, i);
+    return {m.apply_x(p.x, p.y), m.apply_y(p.x, p.y)};
+}
 /// The largest ground distance of the clip's root from where it starts (metres).
 double root_reach_of(const GraphClip& clip);
 const char* to_string(ClipKind kind);
