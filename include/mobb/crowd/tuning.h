@@ -3,7 +3,7 @@
 // and its numbers, read by that rule alone (src/crowd/rules/, a header each) - then the escape's bounds
 // and the policies' numbers. Each rule can be switched off on the command line - `mobb crowd
 // --no-right-of-way`, `--no-give-way`, `--no-standing-gap`, `--no-look-ahead`, `--no-follow`,
-// `--no-stand-near-walls`, `--no-leave-in-stride` - and any field is set by name with `mobb crowd --tune
+// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through` - and any field is set by name with `mobb crowd --tune
 // NAME=VALUE` (set_tuning(): `--tune give_way.reach=3`). What was measured to choose the values:
 // bench/results/log.md, "Tuning: what was measured". Metrics keep their own thresholds
 // (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
@@ -54,6 +54,23 @@ struct GiveWayTuning {
     bool on = true;
     double after = 2.0;  ///< seconds without a moving clip
     double reach = 2.5;  ///< metres from the walk's root to where the agent waits
+};
+
+/// Letting through (policy/passage.h; the goal policy): at a passage - free ground narrower than `narrow`
+/// metres between solids, a door or a gap - an agent keeps out of the way of one coming through it the
+/// other way that is nearer the passage than itself: within `reach` metres of a passage, an end of its
+/// clips that lies in the lane ahead of such an agent (`lane_length` metres along the way it faces,
+/// `lane_width` either side) costs up to `cost` seconds, the most on the lane's middle. Counter-flow at a
+/// door then takes turns - who is nearer goes first - instead of both streams filling its mouths
+/// (bench/results/log.md, "A door's counter-flow"). Reorders, never refuses.
+struct LetThroughTuning {
+    bool on = true;
+    double narrow = 3.0;       ///< metres: about two walking agents abreast with room between
+    double reach = 4.0;        ///< metres from a passage
+    double lane_length = 4.0;  ///< metres
+    double lane_width = 1.0;   ///< metres either side: a walking disk and half a disk
+    double cost = 3.0;         ///< seconds
+    double oncoming = 2.1;     ///< radians (120 degrees) or more between its facing and the agent's way
 };
 
 /// The standing gap (rules/standing_gap.h): a policy that keeps it (wandering, not goal agents, which
@@ -134,6 +151,7 @@ struct CrowdTuning {
     LeaveInStrideTuning leave_in_stride;
     RightOfWayTuning right_of_way;
     GiveWayTuning give_way;
+    LetThroughTuning let_through;
     StandingGapTuning standing_gap;
     LookAheadTuning look_ahead;
     FollowTuning follow;

@@ -1,13 +1,15 @@
 // Goal-directed agents: candidates ranked by an estimate of the time to the goal from where they end -
 // the clip's own duration, the path length to the goal around the obstacles (a navigation field per
 // goal) at walking speed, the turn still needed to face down that path - plus a cost for ending close to
-// where the neighbours will be. Clips that stand idle come last. An agent that could not move on for a
+// where the neighbours will be, and one for ending in the lane of a neighbour coming through a passage
+// the other way (letting through: LetThroughTuning, policy/passage.h). Clips that stand idle come last. An agent that could not move on for a
 // few choice points tries its candidates in random order instead, which breaks the deadlocks of agents
 // meeting head-on. Within the goal radius the agent stops: standing idle first.
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "mobb/core/angle.h"
@@ -15,6 +17,7 @@
 #include "policy/follow.h"
 #include "policy/nav_field.h"
 #include "policy/near_points.h"
+#include "policy/passage.h"
 
 namespace mobb::crowd {
 
@@ -49,6 +52,8 @@ public:
         // underflows (binary floating point, rounding to nearest): tested rather than assumed of the tuning.
         far_adds_zero_ = std::sqrt(k.personal * k.personal) == k.personal && std::isfinite(k.crowding);
         for (const auto& g : c.goals) fields_.try_emplace(g, grid_, g);  // one field per distinct goal, built once
+        const LetThroughTuning& lt = c.tuning.let_through;
+        if (lt.on && !c.world.obstacles.empty()) passages_.emplace(c.world, lt.narrow, lt.reach, grid_.cell);
     }
 
     Selection kind() const override { return Selection::Goal; }
@@ -101,15 +106,54 @@ public:
 private:
     // What seconds() reads of a site, worked out once for the many ends it scores: the goal's field, and
     // where the neighbours it keeps away from will be (not those it follows), in the site's order.
+    // The lane ahead of an agent the site lets through (LetThroughTuning): from `at` along (cos, sin).
+    struct Lane {
+        double x, y, cos, sin;
+    };
     struct Around {
         const NavField* field = nullptr;
         NearPoints kept_from;
+        std::vector<Lane> let_through;
     };
     Around around(const ChoiceSite& site) const {
         std::vector<std::array<double, 2>> kept_from;
         for (const Neighbour& n : site.neighbours)
             if (!goes_my_way(site, n)) kept_from.push_back(n.at);
-        return {&fields_.at(*site.goal), NearPoints(std::move(kept_from), tuning_.goal.personal)};
+        const NavField* field = &fields_.at(*site.goal);
+        return {field, NearPoints(std::move(kept_from), tuning_.goal.personal), lanes_let_through(site, *field)};
+    }
+
+    // Letting through: the lanes ahead of the neighbours coming the other way that are nearer a passage
+    // than the site, when the site is near one.
+    std::vector<Lane> lanes_let_through(const ChoiceSite& site, const NavField& field) const {
+        std::vector<Lane> lanes;
+        const LetThroughTuning& k = tuning_.let_through;
+        if (!passages_ || !passages_->any()) return lanes;
+        const double mine = passages_->distance(site.base.x, site.base.y);
+        if (mine >= k.reach) return lanes;
+        for (const Neighbour& n : site.neighbours) {
+            if (!n.goal || *n.goal == *site.goal || passages_->distance(n.at[0], n.at[1]) >= mine) continue;
+            // Both ways read where the other is: agents converging on a door from either side along its
+            // wall head for it in opposite directions, but go the same way through it.
+            const double its_way = fields_.at(*n.goal).downhill(n.at[0], n.at[1]);
+            if (std::abs(wrap_angle(its_way - field.downhill(n.at[0], n.at[1]))) >= k.oncoming)
+                lanes.push_back({n.at[0], n.at[1], std::cos(its_way), std::sin(its_way)});
+        }
+        return lanes;
+    }
+
+    // Seconds an end costs in the lanes of those it lets through: the most of any lane, `cost` on a lane's
+    // middle falling to 0 at its sides.
+    double in_lanes(const Around& a, const Placement& end) const {
+        const LetThroughTuning& k = tuning_.let_through;
+        double most = 0;
+        for (const Lane& l : a.let_through) {
+            const double dx = end.x - l.x, dy = end.y - l.y;
+            const double along = dx * l.cos + dy * l.sin, aside = std::abs(dy * l.cos - dx * l.sin);
+            if (along >= 0 && along <= k.lane_length && aside < k.lane_width)
+                most = std::max(most, k.cost * (1 - aside / k.lane_width));
+        }
+        return most;
     }
 
     // Time to the goal from the clip's end: the path at walking speed, the turn to face down it, plus a
@@ -122,7 +166,7 @@ private:
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
         const double turn = std::abs(wrap_angle(a.field->downhill(end.x, end.y) - end.theta));
-        return crowded(a, end, distance / k.walking + turn / k.turning);
+        return crowded(a, end, distance / k.walking + turn / k.turning) + in_lanes(a, end);
     }
 
     // seconds() less the turn: no more than it, each term added being no less than 0 (bounded_), and
@@ -131,7 +175,7 @@ private:
         const double distance = a.field->distance(end.x, end.y);
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
-        return crowded(a, end, distance / k.walking);
+        return crowded(a, end, distance / k.walking) + in_lanes(a, end);
     }
 
     // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
@@ -195,6 +239,7 @@ private:
     bool far_adds_zero_;  // crowding * (personal - sqrt(personal^2)) is +-0: crowded() sums without a branch
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
+    std::optional<PassageMap> passages_;  // with letting through on and obstacles in the world
 };
 
 }  // namespace

@@ -125,6 +125,29 @@ TEST(Policy, AvoidSlowsDownAsLittleAsItCanAndTurnsToTheOpen) {
     EXPECT_FALSE(turned_after);
 }
 
+// Letting through (LetThroughTuning): before a door, the agent ranks first a clip that ends farther out of
+// the lane of one coming through it the other way; one going its own way, or the rule off, leaves the
+// order as it was.
+TEST(Policy, GoalKeepsOutOfTheLaneOfOneComingThroughADoor) {
+    World w{0, 0, 20, 12, true, {Polygon::rectangle(10, 0, 10.5, 5), Polygon::rectangle(10, 7, 10.5, 12)}};
+    const Fixture& f = fixture();
+    const std::array<double, 2> east{18, 6}, west{2, 6}, beyond{19, 6};
+    CrowdTuning off;
+    off.let_through.on = false;
+    const auto on_p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {east, west, beyond}, 1.0, {}});
+    const auto off_p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {east, west, beyond}, 1.0, off});
+    ChoiceSite site{0, {8, 6, 0, 0}, east, true, 0, false, std::nullopt, {}};
+    site.neighbours.push_back({{11.5, 6}, kPi, west});  // at the door's far side, coming this way
+    const std::vector<int> on = ordered(*on_p, site), off_order = ordered(*off_p, site);
+    const auto aside = [&](int clip) { return std::abs(end_of(site, clip).y - 6); };
+    // The lane: 1 m either side of y = 6 from x = 11.5 4 m west; the first clip without the rule ends in it.
+    ASSERT_LT(aside(off_order.front()), 1.0);
+    EXPECT_GT(aside(on.front()), aside(off_order.front()));
+    // One going the same way through the door is no one to let through.
+    site.neighbours.back().goal = beyond;
+    EXPECT_EQ(ordered(*on_p, site), ordered(*off_p, site));
+}
+
 TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     World w;
     w.x1 = 20;
@@ -140,7 +163,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     EXPECT_EQ(f.kinds[std::size_t(c.back())], ClipKind::Idle) << "standing comes last";
     // A neighbour where that clip ends moves it down the order.
     ChoiceSite crowded = site;
-    crowded.neighbours.push_back({{e.x, e.y}, std::nullopt});
+    crowded.neighbours.push_back({{e.x, e.y}, std::nullopt, std::nullopt});
     const std::vector<int> d = ordered(*p, crowded);
     EXPECT_NE(d.front(), c.front());
     // Following (CrowdTuning::follow): the agent wants to go at its goal (down the navigation field, whose
@@ -151,7 +174,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     EXPECT_LT(std::abs(*way), kPi / 8 + 1e-9);
     ChoiceSite following = site;
     following.way = way;
-    following.neighbours.push_back({{e.x, e.y}, 0.1});
+    following.neighbours.push_back({{e.x, e.y}, 0.1, std::nullopt});
     EXPECT_EQ(ordered(*p, following), c);
     following.neighbours.back().facing = kPi;
     EXPECT_NE(ordered(*p, following).front(), c.front());

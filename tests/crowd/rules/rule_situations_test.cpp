@@ -10,7 +10,9 @@
 //   through, rather than walking round a queue that has no way round;
 // - stopping near walls: the same column holds ground inside the door's turning room, never its standing
 //   room;
-// - leaving in stride: two columns converging on one exit hold no stop beyond it, and are out sooner.
+// - leaving in stride: two columns converging on one exit hold no stop beyond it, and are out sooner;
+// - letting through: of two agents crossing a door from either side, the one farther from it keeps out of
+//   the way of the one nearer, which comes through first, and both are through sooner.
 // Each is the smallest situation found in which the rule must act - a few agents placed by hand, walls
 // where the rule needs the others kept out - and asserts what the rule is for; with the rule off, what it
 // prevents happens, and neither run has a contact. Wanderers' choices depend on the seed: several each.
@@ -385,6 +387,49 @@ TEST(RuleSituations, LeavingInStrideReservesNoStopBeyondTheExit) {
         }
         const CrowdMetrics m_on = crowd_metrics(on.record, graph()), m_off = crowd_metrics(off.record, graph());
         // Off, each waits at the exit for the stop the one before holds there until it has left.
+        EXPECT_LT(m_on.mean_time_to_goal, m_off.mean_time_to_goal) << "seed " << seed;
+    }
+}
+
+// ---- Letting through ----
+
+// A corridor cut by a wall with a 1.6 m door (SteerSuite's doorway-two-way, the east agent nearer the
+// door): two goal agents cross it from either side, each to the far end.
+CrowdOptions door_two_way(std::uint64_t seed, bool let_through) {
+    CrowdOptions o;
+    o.world = {-16, -1, 16, 3.1, true, {Polygon::rectangle(-0.2, -1, 0, -0.3), Polygon::rectangle(-0.2, 1.3, 0, 3.1)}};
+    o.seconds = 60;
+    o.seed = seed;
+    o.select = Selection::Goal;
+    o.tuning.let_through.on = let_through;
+    AgentSpec west = agent(-10, 1, 0), east = agent(7, 1, M_PI);
+    west.goals = {{14, 1}};
+    east.goals = {{-14, 1}};
+    o.placed = {west, east};
+    o.agents = 2;
+    return o;
+}
+
+// The frame agent `a` first crosses x = 0 (the door); the run's length if never.
+std::int64_t crosses_door(const Record& r, int a) {
+    const auto& samples = r.tracks[std::size_t(a)].samples;
+    for (std::size_t f = 1; f < samples.size(); ++f)
+        if ((samples[f - 1][1] < 0) != (samples[f][1] < 0)) return std::int64_t(f);
+    return r.frames;
+}
+
+TEST(RuleSituations, LettingThroughClearsADoorForTheOneNearerIt) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const CrowdRun on = run(door_two_way(seed, true));
+        const CrowdRun off = run(door_two_way(seed, false));
+        EXPECT_TRUE(frame_contacts(on.record).empty()) << "seed " << seed;
+        EXPECT_TRUE(frame_contacts(off.record).empty()) << "seed " << seed;
+        const CrowdMetrics m_on = crowd_metrics(on.record, graph()), m_off = crowd_metrics(off.record, graph());
+        ASSERT_EQ(m_on.reached, 2) << "seed " << seed;
+        ASSERT_EQ(m_off.reached, 2) << "seed " << seed;
+        // On, the west agent keeps out of the lane of the east one, which is nearer the door: it comes
+        // through first, and neither waits face to face with the other.
+        EXPECT_LT(crosses_door(on.record, 1), crosses_door(on.record, 0)) << "seed " << seed;
         EXPECT_LT(m_on.mean_time_to_goal, m_off.mean_time_to_goal) << "seed " << seed;
     }
 }

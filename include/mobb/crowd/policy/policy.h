@@ -33,7 +33,8 @@ Selection parse_selection(const std::string& name);
 /// stopped for good, is about to, or has not set off.
 struct Neighbour {
     std::array<double, 2> at;
-    std::optional<double> facing;
+    std::optional<double> facing;               ///< radians: where the clip it plays leaves it facing (rules/follow.h)
+    std::optional<std::array<double, 2>> goal;  ///< metres: the goal it heads for now (none: arrived, or no goals)
 };
 
 /// An agent at a choice point, as a policy sees it.

@@ -1,0 +1,111 @@
+#include "policy/passage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "policy/nav_field.h"
+
+namespace mobb::crowd {
+
+namespace {
+constexpr double kDiagonal = 1.4142135623730951;  // sqrt(2)
+constexpr int kAxes[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+}  // namespace
+
+PassageMap::PassageMap(const World& world, double narrow, double reach, double cell)
+    : x0_(world.x0), y0_(world.y0), cell_(cell), reach_(reach), walled_(world.walls) {
+    NavGrid solid(world, 0, cell);
+    nx_ = solid.nx, ny_ = solid.ny;
+    free_ = std::move(solid.free);
+    std::vector<std::size_t> passages;
+    for (int ix = 0; ix < nx_; ++ix)
+        for (int iy = 0; iy < ny_; ++iy) {
+            if (!free_at(ix, iy)) continue;
+            for (const auto& d : kAxes)
+                if (chord(ix, iy, d[0], d[1], narrow) < narrow && opens(ix, iy, d[0], d[1], narrow)) {
+                    passages.push_back(std::size_t(ix) * std::size_t(ny_) + std::size_t(iy));
+                    break;
+                }
+        }
+    any_ = !passages.empty();
+    spread(std::move(passages));
+}
+
+bool PassageMap::free_at(int ix, int iy) const {
+    return free_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)] != 0;
+}
+
+// The chord through cell (ix, iy) along (dx, dy): the free cells either way to the first solid, times the
+// step; `cap` as soon as it reaches that, and at an open edge of the world.
+double PassageMap::chord(int ix, int iy, int dx, int dy, double cap) const {
+    const double step = (dx && dy ? kDiagonal : 1.0) * cell_;
+    double length = step;
+    for (int sign : {1, -1})
+        for (int k = 1;; ++k) {
+            const int jx = ix + sign * k * dx, jy = iy + sign * k * dy;
+            if (jx < 0 || jy < 0 || jx >= nx_ || jy >= ny_) {
+                if (!walled_) return cap;
+                break;
+            }
+            if (!free_at(jx, jy)) break;
+            length += step;
+            if (length >= cap) return cap;
+        }
+    return length;
+}
+
+// Whether the ground either side of the narrow chord through (ix, iy) along (dx, dy) opens up: stepping
+// across it, both ways, a chord as wide as `narrow` comes before a solid, within `narrow` metres. A
+// door's or a gap's does; a room's corner, where the ground only narrows further, does not.
+bool PassageMap::opens(int ix, int iy, int dx, int dy, double narrow) const {
+    const int px = -dy, py = dx;
+    const double step = (px && py ? kDiagonal : 1.0) * cell_;
+    for (int sign : {1, -1}) {
+        bool opened = false;
+        for (int k = 1; !opened && k * step <= narrow; ++k) {
+            const int jx = ix + sign * k * px, jy = iy + sign * k * py;
+            if (jx < 0 || jy < 0 || jx >= nx_ || jy >= ny_) {
+                opened = !walled_;
+                break;
+            }
+            if (!free_at(jx, jy)) break;
+            opened = chord(jx, jy, dx, dy, narrow) >= narrow;
+        }
+        if (!opened) return false;
+    }
+    return true;
+}
+
+// Dijkstra over the free cells from every passage at once, 8-connected, no farther than reach_.
+void PassageMap::spread(std::vector<std::size_t> passages) {
+    distance_.assign(free_.size(), float(reach_));
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    for (std::size_t c : passages) distance_[c] = 0, open.emplace(0.0, c);
+    while (!open.empty()) {
+        const auto [d, c] = open.top();
+        open.pop();
+        if (d > double(distance_[c])) continue;
+        const int ix = int(c / std::size_t(ny_)), iy = int(c % std::size_t(ny_));
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int jx = ix + dx, jy = iy + dy;
+                if ((dx == 0 && dy == 0) || jx < 0 || jy < 0 || jx >= nx_ || jy >= ny_ || !free_at(jx, jy)) continue;
+                const double next = d + (dx && dy ? kDiagonal : 1.0) * cell_;
+                const std::size_t n = std::size_t(jx) * std::size_t(ny_) + std::size_t(jy);
+                if (next < double(distance_[n])) distance_[n] = float(next), open.emplace(next, n);
+            }
+    }
+}
+
+double PassageMap::distance(double x, double y) const {
+    const double fx = (x - x0_) / cell_, fy = (y - y0_) / cell_;
+    if (!(fx >= 0 && fy >= 0 && fx < nx_ && fy < ny_)) return reach_;
+    return double(distance_[std::size_t(int(fx)) * std::size_t(ny_) + std::size_t(int(fy))]);
+}
+
+}  // namespace mobb::crowd
