@@ -156,6 +156,8 @@ void add_rule_switches(CLI::App& cmd, crowd::CrowdTuning& off, std::vector<std::
     rule_off("--no-give-way", off.give_way.on, "Walkers do not keep clear of agents that wait");
     rule_off("--no-let-through", off.let_through.on,
              "Goal agents at a passage do not keep out of the way of those coming through it the other way");
+    rule_off("--no-keep-right", off.keep_right.on,
+             "Goal agents in corridors and doors do not keep right of those coming the other way");
     rule_off("--no-stand-near-walls", off.stand_near_walls.on,
              "Held ground keeps room to turn on the spot from walls and obstacles, not only room to stand");
     rule_off("--no-leave-in-stride", off.leave_in_stride.on,

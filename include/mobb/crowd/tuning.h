@@ -3,7 +3,7 @@
 // and its numbers, read by that rule alone (src/crowd/rules/, a header each) - then the escape's bounds
 // and the policies' numbers. Each rule can be switched off on the command line - `mobb crowd
 // --no-right-of-way`, `--no-give-way`, `--no-standing-gap`, `--no-look-ahead`, `--no-follow`,
-// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through` - and any field is set by name with `mobb crowd --tune
+// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through`, `--no-keep-right` - and any field is set by name with `mobb crowd --tune
 // NAME=VALUE` (set_tuning(): `--tune give_way.reach=3`). What was measured to choose the values:
 // bench/results/log.md, "Tuning: what was measured". Metrics keep their own thresholds
 // (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
@@ -71,6 +71,20 @@ struct LetThroughTuning {
     double lane_width = 1.0;   ///< metres either side: a walking disk and half a disk
     double cost = 3.0;         ///< seconds
     double oncoming = 2.1;     ///< radians (120 degrees) or more between its facing and the agent's way
+};
+
+/// Keeping right (the goal policy; Helbing and Molnar's bias to one side, 1995): where the free ground across
+/// its way is narrower than `corridor` metres (a corridor, a door; PassageMap::across), an agent meeting one
+/// coming the other way - ahead within `ahead` metres, within `offset` of its line - ranks its clips as if an
+/// end cost `cost` seconds per metre it lies left of the line `offset` metres right of the other. Both keep
+/// right, so the two streams pass in lanes instead of meeting across the whole width. Reorders, never refuses.
+struct KeepRightTuning {
+    bool on = true;
+    double corridor = 9.0;  ///< metres
+    double ahead = 6.0;     ///< metres
+    double offset = 1.2;    ///< metres: a walking disk's width and a little more
+    double cost = 6.0;      ///< seconds per metre
+    int stream = 2;         ///< oncoming agents ahead, at least: a stream, not one passer-by
 };
 
 /// The standing gap (rules/standing_gap.h): a policy that keeps it (wandering, not goal agents, which
@@ -152,6 +166,7 @@ struct CrowdTuning {
     RightOfWayTuning right_of_way;
     GiveWayTuning give_way;
     LetThroughTuning let_through;
+    KeepRightTuning keep_right;
     StandingGapTuning standing_gap;
     LookAheadTuning look_ahead;
     FollowTuning follow;

@@ -58,10 +58,13 @@ void Choice::order(const CrowdState& s) {
             const std::optional<double> facing = leader(s.options.tuning.follow, s, p.agent);
             const Agent& other = s.agents[std::size_t(p.agent)];
             const auto goal = other.arrived ? std::nullopt : other.goal();
-            if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing, goal});
+            if (p.kind == Piece::Held) site.neighbours.push_back({{p.hold.x, p.hold.y}, facing, goal, p.agent});
             if (p.kind == Piece::Clip)
                 site.neighbours.push_back(
-                    {{0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)}, facing, goal});
+                    {{0.5 * (p.clip.box.x0 + p.clip.box.x1), 0.5 * (p.clip.box.y0 + p.clip.box.y1)},
+                     facing,
+                     goal,
+                     p.agent});
         }
     }
     next_ = drawn_;

@@ -7,6 +7,7 @@
 #include <queue>
 #include <utility>
 
+#include "mobb/core/angle.h"
 #include "policy/nav_field.h"
 
 namespace mobb::crowd {
@@ -32,7 +33,7 @@ PassageMap::PassageMap(const World& world, double narrow, double reach, double c
                 }
         }
     any_ = !passages.empty();
-    spread(std::move(passages));
+    spread(passages);
 }
 
 bool PassageMap::free_at(int ix, int iy) const {
@@ -81,7 +82,7 @@ bool PassageMap::opens(int ix, int iy, int dx, int dy, double narrow) const {
 }
 
 // Dijkstra over the free cells from every passage at once, 8-connected, no farther than reach_.
-void PassageMap::spread(std::vector<std::size_t> passages) {
+void PassageMap::spread(const std::vector<std::size_t>& passages) {
     distance_.assign(free_.size(), float(reach_));
     using Entry = std::pair<double, std::size_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
@@ -106,6 +107,22 @@ double PassageMap::distance(double x, double y) const {
     const double fx = (x - x0_) / cell_, fy = (y - y0_) / cell_;
     if (!(fx >= 0 && fy >= 0 && fx < nx_ && fy < ny_)) return reach_;
     return double(distance_[std::size_t(int(fx)) * std::size_t(ny_) + std::size_t(int(fy))]);
+}
+
+double PassageMap::across(double x, double y, double way, double cap) const {
+    const double fx = (x - x0_) / cell_, fy = (y - y0_) / cell_;
+    if (!(fx >= 0 && fy >= 0 && fx < nx_ && fy < ny_)) return 0;
+    const int ix = int(fx), iy = int(fy);
+    if (!free_at(ix, iy)) return 0;
+    // The axes' angles (kAxes), compared with the square to the way modulo 180 degrees.
+    static constexpr double kAxisAngle[4] = {0, kPi / 2, kPi / 4, -kPi / 4};
+    int best = 0;
+    double nearest = 1e300;
+    for (int k = 0; k < 4; ++k) {
+        const double off = std::abs(std::remainder(way + kPi / 2 - kAxisAngle[k], kPi));
+        if (off < nearest) nearest = off, best = k;
+    }
+    return chord(ix, iy, kAxes[best][0], kAxes[best][1], cap);
 }
 
 }  // namespace mobb::crowd

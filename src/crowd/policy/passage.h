@@ -22,12 +22,16 @@ public:
     /// `reach` (or outside the world, or in a solid).
     double distance(double x, double y) const;
     bool any() const { return any_; }
+    /// Metres of free ground across the way `way` (radians) at (x, y): the chord through the cell holding
+    /// the point along whichever of x, y and the diagonals lies nearest square to the way, `cap` at most
+    /// (also at an open edge of the world); 0 outside the world or in a solid.
+    double across(double x, double y, double way, double cap) const;
 
 private:
     double chord(int ix, int iy, int dx, int dy, double cap) const;
     bool opens(int ix, int iy, int dx, int dy, double narrow) const;
     bool free_at(int ix, int iy) const;
-    void spread(std::vector<std::size_t> passages);
+    void spread(const std::vector<std::size_t>& passages);
 
     double x0_, y0_, cell_, reach_;
     int nx_, ny_;

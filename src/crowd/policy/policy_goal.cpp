@@ -53,7 +53,9 @@ public:
         far_adds_zero_ = std::sqrt(k.personal * k.personal) == k.personal && std::isfinite(k.crowding);
         for (const auto& g : c.goals) fields_.try_emplace(g, grid_, g);  // one field per distinct goal, built once
         const LetThroughTuning& lt = c.tuning.let_through;
-        if (lt.on && !c.world.obstacles.empty()) passages_.emplace(c.world, lt.narrow, lt.reach, grid_.cell);
+        lets_through_ = lt.on && !c.world.obstacles.empty();
+        keeps_right_ = c.tuning.keep_right.on && (c.world.walls || !c.world.obstacles.empty());
+        if (lets_through_ || keeps_right_) passages_.emplace(c.world, lt.narrow, lt.reach, grid_.cell);
     }
 
     Selection kind() const override { return Selection::Goal; }
@@ -110,17 +112,63 @@ private:
     struct Lane {
         double x, y, cos, sin;
     };
+    // Keeping right (KeepRightTuning): ends left of `line` metres along `left` from `from` cost.
+    struct KeepRight {
+        double from_x = 0, from_y = 0, left_x = 0, left_y = 0;
+        double line = 1e300;  // none: no one to keep right of
+    };
     struct Around {
         const NavField* field = nullptr;
         NearPoints kept_from;
         std::vector<Lane> let_through;
+        KeepRight keep_right;
     };
     Around around(const ChoiceSite& site) const {
         std::vector<std::array<double, 2>> kept_from;
         for (const Neighbour& n : site.neighbours)
             if (!goes_my_way(site, n)) kept_from.push_back(n.at);
         const NavField* field = &fields_.at(*site.goal);
-        return {field, NearPoints(std::move(kept_from), tuning_.goal.personal), lanes_let_through(site, *field)};
+        return {field, NearPoints(std::move(kept_from), tuning_.goal.personal), lanes_let_through(site, *field),
+                keep_right_of(site, *field)};
+    }
+
+    // Whether neighbour `n` goes the other way to the site's, its way and the site's both read where it is
+    // (agents converging on a door along its wall from either side head opposite ways, but go the same way
+    // through it); `its_way` gets its way.
+    bool oncoming(const ChoiceSite& site, const NavField& field, const Neighbour& n, double& its_way) const {
+        if (!n.goal || *n.goal == *site.goal) return false;
+        its_way = fields_.at(*n.goal).downhill(n.at[0], n.at[1]);
+        return std::abs(wrap_angle(its_way - field.downhill(n.at[0], n.at[1]))) >= tuning_.let_through.oncoming;
+    }
+
+    // Keeping right: in a corridor or a door, the line right of the oncoming neighbours ahead on the site's
+    // line (the rightmost of their lines).
+    KeepRight keep_right_of(const ChoiceSite& site, const NavField& field) const {
+        KeepRight k;
+        const KeepRightTuning& t = tuning_.keep_right;
+        if (!keeps_right_) return k;
+        const double way = field.downhill(site.base.x, site.base.y);
+        if (passages_->across(site.base.x, site.base.y, way, t.corridor) >= t.corridor) return k;
+        k.from_x = site.base.x, k.from_y = site.base.y, k.left_x = -std::sin(way), k.left_y = std::cos(way);
+        std::vector<int> streaming;  // the oncoming agents ahead, in the corridor's window
+        double line = k.line;
+        for (const Neighbour& n : site.neighbours) {
+            const double dx = n.at[0] - k.from_x, dy = n.at[1] - k.from_y;
+            const double along = dx * k.left_y - dy * k.left_x, aside = dx * k.left_x + dy * k.left_y;
+            double its_way = 0;
+            if (!(along > 0 && along <= t.ahead) || !oncoming(site, field, n, its_way)) continue;
+            if (std::find(streaming.begin(), streaming.end(), n.agent) == streaming.end()) streaming.push_back(n.agent);
+            if (std::abs(aside) < t.offset) line = std::min(line, aside - t.offset);
+        }
+        if (int(streaming.size()) >= t.stream) k.line = line;
+        return k;
+    }
+
+    // Seconds an end costs for lying left of the keep-right line.
+    double left_of_line(const Around& a, const Placement& end) const {
+        const KeepRight& k = a.keep_right;
+        const double aside = (end.x - k.from_x) * k.left_x + (end.y - k.from_y) * k.left_y;
+        return aside > k.line ? tuning_.keep_right.cost * (aside - k.line) : 0.0;
     }
 
     // Letting through: the lanes ahead of the neighbours coming the other way that are nearer a passage
@@ -128,15 +176,12 @@ private:
     std::vector<Lane> lanes_let_through(const ChoiceSite& site, const NavField& field) const {
         std::vector<Lane> lanes;
         const LetThroughTuning& k = tuning_.let_through;
-        if (!passages_ || !passages_->any()) return lanes;
+        if (!lets_through_ || !passages_->any()) return lanes;
         const double mine = passages_->distance(site.base.x, site.base.y);
         if (mine >= k.reach) return lanes;
         for (const Neighbour& n : site.neighbours) {
-            if (!n.goal || *n.goal == *site.goal || passages_->distance(n.at[0], n.at[1]) >= mine) continue;
-            // Both ways read where the other is: agents converging on a door from either side along its
-            // wall head for it in opposite directions, but go the same way through it.
-            const double its_way = fields_.at(*n.goal).downhill(n.at[0], n.at[1]);
-            if (std::abs(wrap_angle(its_way - field.downhill(n.at[0], n.at[1]))) >= k.oncoming)
+            double its_way = 0;
+            if (passages_->distance(n.at[0], n.at[1]) < mine && oncoming(site, field, n, its_way))
                 lanes.push_back({n.at[0], n.at[1], std::cos(its_way), std::sin(its_way)});
         }
         return lanes;
@@ -166,7 +211,7 @@ private:
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
         const double turn = std::abs(wrap_angle(a.field->downhill(end.x, end.y) - end.theta));
-        return crowded(a, end, distance / k.walking + turn / k.turning) + in_lanes(a, end);
+        return crowded(a, end, distance / k.walking + turn / k.turning) + in_lanes(a, end) + left_of_line(a, end);
     }
 
     // seconds() less the turn: no more than it, each term added being no less than 0 (bounded_), and
@@ -175,7 +220,7 @@ private:
         const double distance = a.field->distance(end.x, end.y);
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
-        return crowded(a, end, distance / k.walking) + in_lanes(a, end);
+        return crowded(a, end, distance / k.walking) + in_lanes(a, end) + left_of_line(a, end);
     }
 
     // `t` plus the cost of ending `end` close to where the neighbours will be, added in their order.
@@ -239,7 +284,9 @@ private:
     bool far_adds_zero_;  // crowding * (personal - sqrt(personal^2)) is +-0: crowded() sums without a branch
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
-    std::optional<PassageMap> passages_;  // with letting through on and obstacles in the world
+    bool lets_through_;                   // LetThroughTuning on, and obstacles in the world
+    bool keeps_right_;                    // KeepRightTuning on, and walls or obstacles
+    std::optional<PassageMap> passages_;  // when either
 };
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(Policy, GoalKeepsOutOfTheLaneOfOneComingThroughADoor) {
     const auto on_p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {east, west, beyond}, 1.0, {}});
     const auto off_p = make_policy(Selection::Goal, {f.graph, w, f.in_place, {east, west, beyond}, 1.0, off});
     ChoiceSite site{0, {8, 6, 0, 0}, east, true, 0, false, std::nullopt, {}};
-    site.neighbours.push_back({{11.5, 6}, kPi, west});  // at the door's far side, coming this way
+    site.neighbours.push_back({{11.5, 6}, kPi, west, 1});  // at the door's far side, coming this way
     const std::vector<int> on = ordered(*on_p, site), off_order = ordered(*off_p, site);
     const auto aside = [&](int clip) { return std::abs(end_of(site, clip).y - 6); };
     // The lane: 1 m either side of y = 6 from x = 11.5 4 m west; the first clip without the rule ends in it.
@@ -146,6 +146,29 @@ TEST(Policy, GoalKeepsOutOfTheLaneOfOneComingThroughADoor) {
     // One going the same way through the door is no one to let through.
     site.neighbours.back().goal = beyond;
     EXPECT_EQ(ordered(*on_p, site), ordered(*off_p, site));
+}
+
+// Keeping right (KeepRightTuning): in a corridor, the agent meeting a stream coming the other way on its
+// line ranks first a clip that ends farther right; one agent coming, or open ground, leaves the order as
+// it was.
+TEST(Policy, GoalKeepsRightOfAStreamComingDownACorridor) {
+    const Fixture& f = fixture();
+    const std::array<double, 2> east{28, 0}, west{2, 0};
+    CrowdTuning off;
+    off.keep_right.on = false;
+    const auto ordered_in = [&](const World& w, const ChoiceSite& site, const CrowdTuning& t) {
+        return ordered(*make_policy(Selection::Goal, {f.graph, w, f.in_place, {east, west}, 1.0, t}), site);
+    };
+    const World corridor{0, -2.5, 30, 2.5, true, {}};
+    ChoiceSite site{0, {10, 0, 0, 0}, east, true, 0, false, std::nullopt, {}};
+    site.neighbours.push_back({{13, 0.2}, kPi, west, 1});
+    const std::vector<int> one = ordered_in(corridor, site, {});
+    EXPECT_EQ(one, ordered_in(corridor, site, off)) << "one agent coming is no stream";
+    site.neighbours.push_back({{15, -0.3}, kPi, west, 2});
+    const std::vector<int> on = ordered_in(corridor, site, {}), off_order = ordered_in(corridor, site, off);
+    EXPECT_LT(end_of(site, on.front()).y, std::min(0.0, end_of(site, off_order.front()).y));
+    const World open{0, -20, 30, 20, false, {}};
+    EXPECT_EQ(ordered_in(open, site, {}), ordered_in(open, site, off)) << "open ground is no corridor";
 }
 
 TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
@@ -163,7 +186,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     EXPECT_EQ(f.kinds[std::size_t(c.back())], ClipKind::Idle) << "standing comes last";
     // A neighbour where that clip ends moves it down the order.
     ChoiceSite crowded = site;
-    crowded.neighbours.push_back({{e.x, e.y}, std::nullopt, std::nullopt});
+    crowded.neighbours.push_back({{e.x, e.y}, std::nullopt, std::nullopt, 1});
     const std::vector<int> d = ordered(*p, crowded);
     EXPECT_NE(d.front(), c.front());
     // Following (CrowdTuning::follow): the agent wants to go at its goal (down the navigation field, whose
@@ -174,7 +197,7 @@ TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {
     EXPECT_LT(std::abs(*way), kPi / 8 + 1e-9);
     ChoiceSite following = site;
     following.way = way;
-    following.neighbours.push_back({{e.x, e.y}, 0.1, std::nullopt});
+    following.neighbours.push_back({{e.x, e.y}, 0.1, std::nullopt, 1});
     EXPECT_EQ(ordered(*p, following), c);
     following.neighbours.back().facing = kPi;
     EXPECT_NE(ordered(*p, following).front(), c.front());

@@ -35,6 +35,7 @@ struct Neighbour {
     std::array<double, 2> at;
     std::optional<double> facing;               ///< radians: where the clip it plays leaves it facing (rules/follow.h)
     std::optional<std::array<double, 2>> goal;  ///< metres: the goal it heads for now (none: arrived, or no goals)
+    int agent = -1;                             ///< whose (an agent gives several: its clip, escape, held ground)
 };
 
 /// An agent at a choice point, as a policy sees it.
