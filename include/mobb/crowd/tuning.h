@@ -3,8 +3,8 @@
 // and its numbers, read by that rule alone (src/crowd/rules/, a header each) - then the escape's bounds
 // and the policies' numbers. Each rule can be switched off on the command line - `mobb crowd
 // --no-right-of-way`, `--no-give-way`, `--no-standing-gap`, `--no-look-ahead`, `--no-follow`,
-// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through`, `--no-keep-right` - and any field is set by name with `mobb crowd --tune
-// NAME=VALUE` (set_tuning(): `--tune give_way.reach=3`). What was measured to choose the values:
+// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through`, `--no-keep-right` - and any field
+// is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning(): `--tune give_way.reach=3`). What was measured to choose the values:
 // bench/results/log.md, "Tuning: what was measured". Metrics keep their own thresholds
 // (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
 #pragma once
@@ -59,10 +59,10 @@ struct GiveWayTuning {
 /// Letting through (policy/passage.h; the goal policy): at a passage - free ground narrower than `narrow`
 /// metres between solids, a door or a gap - an agent keeps out of the way of one coming through it the
 /// other way that is nearer the passage than itself: within `reach` metres of a passage, an end of its
-/// clips that lies in the lane ahead of such an agent (`lane_length` metres along the way it faces,
+/// clips that lies in the lane ahead of such an agent (`lane_length` metres along that agent's way,
 /// `lane_width` either side) costs up to `cost` seconds, the most on the lane's middle. Counter-flow at a
 /// door then takes turns - who is nearer goes first - instead of both streams filling its mouths
-/// (bench/results/log.md, "A door's counter-flow"). Reorders, never refuses.
+/// (bench/results/log.md, "Letting through at doors"). Reorders, never refuses.
 struct LetThroughTuning {
     bool on = true;
     double narrow = 3.0;       ///< metres: about two walking agents abreast with room between
@@ -70,14 +70,18 @@ struct LetThroughTuning {
     double lane_length = 4.0;  ///< metres
     double lane_width = 1.0;   ///< metres either side: a walking disk and half a disk
     double cost = 3.0;         ///< seconds
-    double oncoming = 2.1;     ///< radians (120 degrees) or more between its facing and the agent's way
+    /// Radians (120 degrees) or more between the other's way and the agent's, both read where the other is
+    /// (down each one's navigation field): coming the other way, for this rule and keeping right.
+    double oncoming = 2.1;
 };
 
-/// Keeping right (the goal policy; Helbing and Molnar's bias to one side, 1995): where the free ground across
-/// its way is narrower than `corridor` metres (a corridor, a door; PassageMap::across), an agent meeting one
-/// coming the other way - ahead within `ahead` metres, within `offset` of its line - ranks its clips as if an
-/// end cost `cost` seconds per metre it lies left of the line `offset` metres right of the other. Both keep
-/// right, so the two streams pass in lanes instead of meeting across the whole width. Reorders, never refuses.
+/// Keeping right (the goal policy; Helbing and Molnar's bias to one side, 1995): where the free ground
+/// across its way is narrower than `corridor` metres (a corridor, a door; PassageMap::across), an agent
+/// with `stream` or more agents coming the other way (LetThroughTuning::oncoming) within `ahead` metres
+/// ahead ranks its clips as if an end cost `cost` seconds per metre it lies left of the line `offset`
+/// metres right of those within `offset` of its line. Both streams keep right and pass in lanes instead of
+/// meeting across the whole width; one agent coming is left to the reservations (bench/results/log.md,
+/// "Keeping right in corridors"). Reorders, never refuses.
 struct KeepRightTuning {
     bool on = true;
     double corridor = 9.0;  ///< metres

@@ -1,10 +1,12 @@
 // Goal-directed agents: candidates ranked by an estimate of the time to the goal from where they end -
 // the clip's own duration, the path length to the goal around the obstacles (a navigation field per
 // goal) at walking speed, the turn still needed to face down that path - plus a cost for ending close to
-// where the neighbours will be, and one for ending in the lane of a neighbour coming through a passage
-// the other way (letting through: LetThroughTuning, policy/passage.h). Clips that stand idle come last. An agent that could not move on for a
-// few choice points tries its candidates in random order instead, which breaks the deadlocks of agents
-// meeting head-on. Within the goal radius the agent stops: standing idle first.
+// where the neighbours will be, and, where agents come the other way through a door or down a corridor,
+// one for ending in the lane of one nearer the door (letting through: LetThroughTuning) and one for
+// ending left of those coming (keeping right: KeepRightTuning; both read policy/passage.h). Clips that
+// stand idle come last. An agent that could not move on for a few choice points tries its candidates in
+// random order instead, which breaks the deadlocks of agents meeting head-on. Within the goal radius the
+// agent stops: standing idle first.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -106,8 +108,6 @@ public:
     }
 
 private:
-    // What seconds() reads of a site, worked out once for the many ends it scores: the goal's field, and
-    // where the neighbours it keeps away from will be (not those it follows), in the site's order.
     // The lane ahead of an agent the site lets through (LetThroughTuning): from `at` along (cos, sin).
     struct Lane {
         double x, y, cos, sin;
@@ -117,6 +117,9 @@ private:
         double from_x = 0, from_y = 0, left_x = 0, left_y = 0;
         double line = 1e300;  // none: no one to keep right of
     };
+    // What seconds() reads of a site, worked out once for the many ends it scores: the goal's field, where
+    // the neighbours it keeps away from will be (not those it follows), in the site's order, and the lanes
+    // and the line it keeps out of.
     struct Around {
         const NavField* field = nullptr;
         NearPoints kept_from;
