@@ -18,10 +18,14 @@ constexpr int kAxes[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
 }  // namespace
 
 PassageMap::PassageMap(const World& world, double narrow, double reach, double cell)
-    : x0_(world.x0), y0_(world.y0), cell_(cell), reach_(reach), walled_(world.walls) {
-    NavGrid solid(world, 0, cell);
-    nx_ = solid.nx, ny_ = solid.ny;
-    free_ = std::move(solid.free);
+    : grid_(world, 0, cell),
+      x0_(world.x0),
+      y0_(world.y0),
+      cell_(cell),
+      reach_(reach),
+      nx_(grid_.nx),
+      ny_(grid_.ny),
+      walled_(world.walls) {
     std::vector<std::size_t> passages;
     for (int ix = 0; ix < nx_; ++ix)
         for (int iy = 0; iy < ny_; ++iy) {
@@ -37,7 +41,7 @@ PassageMap::PassageMap(const World& world, double narrow, double reach, double c
 }
 
 bool PassageMap::free_at(int ix, int iy) const {
-    return free_[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)] != 0;
+    return grid_.free[std::size_t(ix) * std::size_t(ny_) + std::size_t(iy)] != 0;
 }
 
 // The chord through cell (ix, iy) along (dx, dy): the free cells either way to the first solid, times the
@@ -83,23 +87,19 @@ bool PassageMap::opens(int ix, int iy, int dx, int dy, double narrow) const {
 
 // Dijkstra over the free cells from every passage at once, 8-connected, no farther than reach_.
 void PassageMap::spread(const std::vector<std::size_t>& passages) {
-    distance_.assign(free_.size(), float(reach_));
+    distance_.assign(grid_.free.size(), float(reach_));
     using Entry = std::pair<double, std::size_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
     for (std::size_t c : passages) distance_[c] = 0, open.emplace(0.0, c);
     while (!open.empty()) {
-        const auto [d, c] = open.top();
+        const double d = open.top().first;  // not a structured binding: lambdas cannot capture one in C++17
+        const std::size_t c = open.top().second;
         open.pop();
         if (d > double(distance_[c])) continue;
-        const int ix = int(c / std::size_t(ny_)), iy = int(c % std::size_t(ny_));
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy) {
-                const int jx = ix + dx, jy = iy + dy;
-                if ((dx == 0 && dy == 0) || jx < 0 || jy < 0 || jx >= nx_ || jy >= ny_ || !free_at(jx, jy)) continue;
-                const double next = d + (dx && dy ? kDiagonal : 1.0) * cell_;
-                const std::size_t n = std::size_t(jx) * std::size_t(ny_) + std::size_t(jy);
-                if (next < double(distance_[n])) distance_[n] = float(next), open.emplace(next, n);
-            }
+        grid_.for_neighbours(c, [&](std::size_t n, double step) {
+            if (grid_.free[n] && d + step < double(distance_[n]))
+                distance_[n] = float(d + step), open.emplace(d + step, n);
+        });
     }
 }
 

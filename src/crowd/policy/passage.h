@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mobb/crowd/world/world.h"
+#include "policy/nav_field.h"
 
 namespace mobb::crowd {
 
@@ -33,11 +34,11 @@ private:
     bool free_at(int ix, int iy) const;
     void spread(const std::vector<std::size_t>& passages);
 
+    NavGrid grid_;  ///< free: the cell's centre lies in no solid (clearance 0)
     double x0_, y0_, cell_, reach_;
     int nx_, ny_;
     bool walled_;
     bool any_ = false;
-    std::vector<char> free_;       ///< [ix * ny + iy]: the cell's centre lies in no solid
     std::vector<float> distance_;  ///< [ix * ny + iy]: metres to the nearest passage, capped at reach_
 };
 
