@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+
+#include "mobb/util/median.h"
 
 namespace mobb::crowd {
 
@@ -27,26 +30,22 @@ FlowLine parse_flow_line(const std::string& text) {
 }
 
 FlowCounter::FlowCounter(FlowLine line, std::size_t agents)
-    : line_(line), last_(agents, std::numeric_limits<double>::quiet_NaN()), seen_(agents, -1), done_(agents, 0) {}
+    : line_(line), last_(agents, std::numeric_limits<double>::quiet_NaN()), seen_(agents, -1) {}
 
 void FlowCounter::add(const SampleWindow& w) {
     const std::size_t width = w.width();
     for (std::int64_t f = w.first; f < w.last; ++f) {
         for (std::size_t k = 0; k < width; ++k) {
             const std::size_t a = w.agent_first + k;
-            if (a >= last_.size() || done_[a] || f <= seen_[a]) continue;
+            if (a >= last_.size() || f <= seen_[a] || (seen_[a] >= 0 && std::isnan(last_[a]))) continue;  // done
             const double v = w.samples[std::size_t(f - w.first) * width + k][1 + std::size_t(line_.axis)];
             const double before = last_[a];
             const std::int64_t prev = seen_[a];
-            last_[a] = v, seen_[a] = f;
-            if (std::isnan(v)) {
-                done_[a] = 1;  // left the run
-                continue;
-            }
-            if (std::isnan(before) || (before < line_.at) == (v < line_.at)) continue;
+            last_[a] = v, seen_[a] = f;  // NaN: it left the run, and is done
+            if (std::isnan(v) || std::isnan(before) || (before < line_.at) == (v < line_.at)) continue;
             const double share = (line_.at - before) / (v - before);
             crossed_.push_back({a, (double(prev) + share * double(f - prev)) * w.dt, v > before ? 1 : -1});
-            done_[a] = 1;
+            last_[a] = std::numeric_limits<double>::quiet_NaN();  // crossed: done
         }
     }
 }
@@ -70,8 +69,7 @@ Flow flow_of(const std::vector<Crossing>& crossings) {
         std::vector<double> gaps;
         gaps.reserve(n - 1);
         for (std::size_t i = 1; i < n; ++i) gaps.push_back(crossings[i].time - crossings[i - 1].time);
-        std::sort(gaps.begin(), gaps.end());
-        f.median_headway = n % 2 == 0 ? gaps[(n - 2) / 2] : 0.5 * (gaps[(n - 3) / 2] + gaps[(n - 1) / 2]);
+        f.median_headway = util::median(std::move(gaps));
     }
     if (n < 3) return f;
     const auto at = [&](double q) { return std::size_t(std::lround(q * double(n - 1))); };

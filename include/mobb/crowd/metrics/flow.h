@@ -39,10 +39,10 @@ public:
 
 private:
     FlowLine line_;
-    std::vector<double> last_;        ///< per agent: its coordinate at the last frame seen (NaN: none)
-    std::vector<std::int64_t> seen_;  ///< per agent: the frame of last_ (-1: none)
+    /// Per agent: its coordinate at the frame seen_ (NaN once seen: done - it crossed or left the run).
+    std::vector<double> last_;
+    std::vector<std::int64_t> seen_;  ///< per agent: the frame of last_ (-1: none yet)
     std::vector<Crossing> crossed_;
-    std::vector<char> done_;
 };
 
 struct Flow {
