@@ -158,6 +158,8 @@ void add_rule_switches(CLI::App& cmd, crowd::CrowdTuning& off, std::vector<std::
              "Goal agents at a passage do not keep out of the way of those coming through it the other way");
     rule_off("--no-keep-right", off.keep_right.on,
              "Goal agents in corridors and doors do not keep right of those coming the other way");
+    rule_off("--no-face-along-walls", off.face_along_walls.on,
+             "Goal agents rank ends beside a wall facing into it as any other");
     rule_off("--no-stand-near-walls", off.stand_near_walls.on,
              "Held ground keeps room to turn on the spot from walls and obstacles, not only room to stand");
     rule_off("--no-leave-in-stride", off.leave_in_stride.on,

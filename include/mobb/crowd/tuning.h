@@ -3,10 +3,11 @@
 // and its numbers, read by that rule alone (src/crowd/rules/, a header each) - then the escape's bounds
 // and the policies' numbers. Each rule can be switched off on the command line - `mobb crowd
 // --no-right-of-way`, `--no-give-way`, `--no-standing-gap`, `--no-look-ahead`, `--no-follow`,
-// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through`, `--no-keep-right` - and any field
-// is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning(): `--tune give_way.reach=3`). What was measured to choose the values:
-// bench/results/log.md, "Tuning: what was measured". Metrics keep their own thresholds
-// (CrowdMetrics::kIdleSpeed): judging a run never changes how it runs.
+// `--no-stand-near-walls`, `--no-leave-in-stride`, `--no-let-through`, `--no-keep-right`,
+// `--no-face-along-walls` - and any field is set by name with `mobb crowd --tune NAME=VALUE` (set_tuning():
+// `--tune give_way.reach=3`). What was measured to choose the values: bench/results/log.md, "Tuning: what
+// was measured". Metrics keep their own thresholds (CrowdMetrics::kIdleSpeed): judging a run never changes
+// how it runs.
 #pragma once
 #include <string>
 
@@ -91,6 +92,18 @@ struct KeepRightTuning {
     int stream = 2;         ///< oncoming agents ahead, at least: a stream, not one passer-by
 };
 
+/// Facing along walls (the goal policy; policy/walls_ahead.h): an end nearer a wall or an obstacle than
+/// room to turn on the spot (EscapeTable::turn_clearance) that faces into it - the points half of `ahead`
+/// and `ahead` metres along its heading nearer it than room to stand (EscapeTable::stand_clearance) - costs
+/// `cost` seconds more. There an agent can neither walk on nor turn round: evacuation_exit's agents that
+/// stopped at a slant into the wall beside its door stood there for half a minute (bench/results/log.md,
+/// "Facing along walls"). Reorders, never refuses.
+struct FaceAlongWallsTuning {
+    bool on = true;
+    double ahead = 1.0;  ///< metres: about the first step of a walk
+    double cost = 2.0;   ///< seconds (>= 0)
+};
+
 /// The standing gap (rules/standing_gap.h): a policy that keeps it (wandering, not goal agents, which
 /// converge on purpose) takes no escape route whose held ground comes within `width` metres, beyond the
 /// disks, of another's. Trades where an agent may stop for room to pass between those who stopped, so
@@ -171,6 +184,7 @@ struct CrowdTuning {
     GiveWayTuning give_way;
     LetThroughTuning let_through;
     KeepRightTuning keep_right;
+    FaceAlongWallsTuning face_along_walls;
     StandingGapTuning standing_gap;
     LookAheadTuning look_ahead;
     FollowTuning follow;

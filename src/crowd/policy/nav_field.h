@@ -35,6 +35,13 @@ public:
     /// Blocks the cells whose centre lies within r + clearance of (x, y): an agent standing there for good.
     void block_disk(double x, double y, double r);
 
+    /// Whether the cell holding (x, y) is blocked (not free), or the point lies outside the grid.
+    bool blocked(double x, double y) const {
+        const double fx = (x - x0) / cell, fy = (y - y0) / cell;
+        if (!(fx >= 0 && fy >= 0 && fx < nx && fy < ny)) return true;
+        return !free[std::size_t(fx) * std::size_t(ny) + std::size_t(fy)];
+    }
+
     double x0 = 0, y0 = 0, cell = 0.25, clearance = 0;
     int nx = 1, ny = 1;
     std::vector<char> free;                 ///< [ix * ny + iy]

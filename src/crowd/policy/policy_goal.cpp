@@ -3,10 +3,11 @@
 // goal) at walking speed, the turn still needed to face down that path - plus a cost for ending close to
 // where the neighbours will be, and, where agents come the other way through a door or down a corridor,
 // one for ending in the lane of one nearer the door (letting through: LetThroughTuning) and one for
-// ending left of those coming (keeping right: KeepRightTuning; both read policy/passage.h). Clips that
-// stand idle come last. An agent that could not move on for a few choice points tries its candidates in
-// random order instead, which breaks the deadlocks of agents meeting head-on. Within the goal radius the
-// agent stops: standing idle first.
+// ending left of those coming (keeping right: KeepRightTuning; both read policy/passage.h), and one for
+// ending beside a wall facing into it (facing along walls: FaceAlongWallsTuning). Clips that stand idle
+// come last. An agent that could not move on for a few choice points tries its candidates in random order
+// instead, which breaks the deadlocks of agents meeting head-on. Within the goal radius the agent stops:
+// standing idle first.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -20,6 +21,7 @@
 #include "policy/nav_field.h"
 #include "policy/near_points.h"
 #include "policy/passage.h"
+#include "policy/walls_ahead.h"
 
 namespace mobb::crowd {
 
@@ -49,7 +51,9 @@ public:
         }
         stop_radius_ = radius_ - sway;
         const GoalTuning& k = c.tuning.goal;
-        bounded_ = k.turning > 0 && k.crowding >= 0 && k.personal >= 0;  // the turn and crowding add no less than 0
+        const FaceAlongWallsTuning& fa = c.tuning.face_along_walls;
+        // the turn, crowding and facing a wall add no less than 0
+        bounded_ = k.turning > 0 && k.crowding >= 0 && k.personal >= 0 && !(fa.on && fa.cost < 0);
         // sqrt of a rounded square is the number itself for a number >= 0 whose square neither overflows nor
         // underflows (binary floating point, rounding to nearest): tested rather than assumed of the tuning.
         far_adds_zero_ = std::sqrt(k.personal * k.personal) == k.personal && std::isfinite(k.crowding);
@@ -58,6 +62,8 @@ public:
         lets_through_ = lt.on && !c.world.obstacles.empty();
         keeps_right_ = c.tuning.keep_right.on && (c.world.walls || !c.world.obstacles.empty());
         if (lets_through_ || keeps_right_) passages_.emplace(c.world, lt.narrow, lt.reach, grid_.cell);
+        if (fa.on && (c.world.walls || !c.world.obstacles.empty()))
+            walls_ahead_.emplace(c.world, c.stand_clearance, c.turn_clearance, grid_.cell);
     }
 
     Selection kind() const override { return Selection::Goal; }
@@ -214,7 +220,14 @@ private:
         const GoalTuning& k = tuning_.goal;
         if (distance < stop_radius_) return distance / k.walking;
         const double turn = std::abs(wrap_angle(a.field->downhill(end.x, end.y) - end.theta));
-        return crowded(a, end, distance / k.walking + turn / k.turning) + in_lanes(a, end) + left_of_line(a, end);
+        return crowded(a, end, distance / k.walking + turn / k.turning) + in_lanes(a, end) + left_of_line(a, end) +
+               facing_wall(end);
+    }
+
+    // Seconds an end costs for facing into a wall it stands beside.
+    double facing_wall(const Placement& end) const {
+        const FaceAlongWallsTuning& k = tuning_.face_along_walls;
+        return walls_ahead_ && walls_ahead_->facing_wall(end, k.ahead) ? k.cost : 0.0;
     }
 
     // seconds() less the turn: no more than it, each term added being no less than 0 (bounded_), and
@@ -287,9 +300,10 @@ private:
     bool far_adds_zero_;  // crowding * (personal - sqrt(personal^2)) is +-0: crowded() sums without a branch
     NavGrid grid_;
     std::map<std::array<double, 2>, NavField> fields_;
-    bool lets_through_;                   // LetThroughTuning on, and obstacles in the world
-    bool keeps_right_;                    // KeepRightTuning on, and walls or obstacles
-    std::optional<PassageMap> passages_;  // when either
+    bool lets_through_;                      // LetThroughTuning on, and obstacles in the world
+    bool keeps_right_;                       // KeepRightTuning on, and walls or obstacles
+    std::optional<PassageMap> passages_;     // when either
+    std::optional<WallsAhead> walls_ahead_;  // FaceAlongWallsTuning on, and walls or obstacles
 };
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include "mobb/core/angle.h"
 #include "mobb/crowd/metrics/metrics.h"
 #include "mobb/crowd/policy/policy.h"
+#include "plan/escape.h"
+#include "policy/walls_ahead.h"
 
 namespace mobb::crowd {
 namespace {
@@ -169,6 +171,41 @@ TEST(Policy, GoalKeepsRightOfAStreamComingDownACorridor) {
     EXPECT_LT(end_of(site, on.front()).y, std::min(0.0, end_of(site, off_order.front()).y));
     const World open{0, -20, 30, 20, false, {}};
     EXPECT_EQ(ordered_in(open, site, {}), ordered_in(open, site, off)) << "open ground is no corridor";
+}
+
+// Facing along walls (FaceAlongWallsTuning): an end beside a wall - nearer than room to turn - faces into
+// it when the way ahead meets it; along it, away from it, or farther out, it does not.
+TEST(Policy, WallsAheadAreThoseAnEndBesideThemFaces) {
+    const EscapeTable e = EscapeTable::build(fixture().graph);
+    const World w{-10, -10, 10, 10, false, {Polygon::rectangle(-0.5, -5, 0.5, 5)}};
+    const WallsAhead walls(w, e.stand_clearance, e.turn_clearance, 0.25);
+    const double beside = 0.5 + 0.5 * (e.stand_clearance + e.turn_clearance);
+    EXPECT_TRUE(walls.facing_wall({beside, 0, kPi, 0}, 1.0)) << "into it";
+    EXPECT_TRUE(walls.facing_wall({beside, 0, 0.75 * kPi, 0}, 1.0)) << "into it at a slant";
+    EXPECT_FALSE(walls.facing_wall({beside, 0, kPi / 2, 0}, 1.0)) << "along it";
+    EXPECT_FALSE(walls.facing_wall({beside, 0, 0, 0}, 1.0)) << "away from it";
+    EXPECT_FALSE(walls.facing_wall({0.5 + e.turn_clearance + 0.3, 0, kPi, 0}, 1.0)) << "room to turn";
+}
+
+// At a wall beside a door, as evacuation_exit's agents reach it at a slant: with the rule, the first clip
+// ends facing along the wall or away; without it, into the wall.
+TEST(Policy, GoalFacesAlongAWallBesideADoor) {
+    const Fixture& f = fixture();
+    const EscapeTable e = EscapeTable::build(f.graph);
+    const std::vector<Polygon> posts{Polygon::rectangle(-0.5, -10, 0.5, -1.2), Polygon::rectangle(-0.5, 1.2, 0.5, 10)};
+    const World w{-16, -10, 20, 10, true, posts};
+    const std::array<double, 2> goal{-10, 0};
+    CrowdTuning off;
+    off.face_along_walls.on = false;
+    const auto make = [&](const CrowdTuning& t) {
+        return make_policy(Selection::Goal,
+                           {f.graph, w, f.in_place, {goal}, 1.0, t, e.stand_clearance, e.turn_clearance});
+    };
+    const WallsAhead walls(w, e.stand_clearance, e.turn_clearance, 0.25);
+    const ChoiceSite site{0, {1.85, 4.95, -121 * kPi / 180, 0}, goal, true, 0, false, std::nullopt, {}};
+    const std::vector<int> on = ordered(*make({}), site), off_order = ordered(*make(off), site);
+    ASSERT_TRUE(walls.facing_wall(end_of(site, off_order.front()), 1.0));
+    EXPECT_FALSE(walls.facing_wall(end_of(site, on.front()), 1.0));
 }
 
 TEST(Policy, GoalPrefersClipsTowardTheGoalAndStopsThere) {

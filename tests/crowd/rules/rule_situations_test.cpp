@@ -396,7 +396,8 @@ TEST(RuleSituations, LeavingInStrideReservesNoStopBeyondTheExit) {
 // ---- Letting through ----
 
 // A corridor cut by a wall with a 1.6 m door (SteerSuite's doorway-two-way, the east agent nearer the
-// door): two goal agents cross it from either side, each to the far end.
+// door): two goal agents cross it from either side, each to the far end. Facing along walls is off: on
+// its own it clears this door as fast as letting through on seeds 2 and 3, which would hide the rule.
 CrowdOptions door_two_way(std::uint64_t seed, bool let_through) {
     CrowdOptions o;
     o.world = {-16, -1, 16, 3.1, true, {Polygon::rectangle(-0.2, -1, 0, -0.3), Polygon::rectangle(-0.2, 1.3, 0, 3.1)}};
@@ -404,6 +405,7 @@ CrowdOptions door_two_way(std::uint64_t seed, bool let_through) {
     o.seed = seed;
     o.select = Selection::Goal;
     o.tuning.let_through.on = let_through;
+    o.tuning.face_along_walls.on = false;
     AgentSpec west = agent(-10, 1, 0), east = agent(7, 1, M_PI);
     west.goals = {{14, 1}};
     east.goals = {{-14, 1}};

@@ -111,6 +111,9 @@ struct PolicyContext {
     std::vector<std::array<double, 2>> goals;  ///< every goal of the run (Goal)
     double goal_radius = 1.0;                  ///< metres: arrived within this of the goal
     CrowdTuning tuning;
+    /// Metres from walls and obstacles an agent needs to stand, and to turn on the spot (the escape
+    /// table's stand_clearance and turn_clearance: facing along walls, FaceAlongWallsTuning).
+    double stand_clearance = 0, turn_clearance = 0;
 };
 
 std::unique_ptr<Policy> make_policy(Selection kind, const PolicyContext& context);
