@@ -47,7 +47,16 @@ public:
     /// Calls f(a, b) once for every unordered pair of agents whose disks overlap (|p_a - p_b| < r_a + r_b).
     template <class F>
     void overlaps(F&& f) const {
-        for (int ix = 0; ix < nx_; ++ix)
+        overlaps(0, nx_, f);
+    }
+
+    int columns() const { return nx_; }
+
+    /// overlaps() for the pairs whose first disk lies in columns [from, to): disjoint ranges of columns
+    /// share the pairs out without repeating one.
+    template <class F>
+    void overlaps(int from, int to, F&& f) const {
+        for (int ix = from; ix < to; ++ix)
             for (int iy = 0; iy < ny_; ++iy) {
                 const std::size_t c = cell(ix, iy);
                 for (std::size_t i = first_[c]; i < first_[c + 1]; ++i) {

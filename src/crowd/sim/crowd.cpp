@@ -168,14 +168,17 @@ void Simulation::recheck(std::size_t i, std::size_t known) {
 
 // The evaluation at position p is out of date: p is evaluated again against the state after the commits
 // before it, and with it, in parallel, the next kRound - 1 positions whose first evaluations only plans
-// committed already touched. Their new evaluations stay current unless a commit from p on touches them
-// too (then they are evaluated again in their turn). Rounds depend on the batch alone, not on the thread
-// count.
+// committed already touched, among the next kScan. Their new evaluations stay current unless a commit
+// from p on touches them too (then they are evaluated again in their turn). Rounds depend on the batch
+// alone, not on the thread count.
 void Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s) {
     constexpr std::size_t kRound = 32;  // enough to share among the threads, few enough to seldom go stale
+    // Where agents are numbered in space (a scenario's regions), most positions ahead wait on commits
+    // still to come: an unbounded search would read the rest of the batch for every stale position.
+    constexpr std::size_t kScan = 16 * kRound;
     flush();
     round_.assign(1, p);
-    for (std::size_t k = p + 1; k < n && round_.size() < kRound; ++k)
+    for (std::size_t k = p + 1; k < std::min(n, p + kScan) && round_.size() < kRound; ++k)
         if (seen_[k] == 0 && touched_[k] >= 0 && touched_[k] < int(p)) round_.push_back(k);
     pool_.for_each(round_.size(), [&](std::size_t r, int) {
         evaluate(round_[r], s);

@@ -58,13 +58,9 @@ private:
     };
     void emit(std::int64_t count);
     void place(std::int64_t count, util::WorkerPool& pool);
-    /// A worker's scratch for the contact check of one frame.
-    struct CheckScratch {
-        std::vector<FrameGrid::Disk> in_run;  // the frame's disks in the run
-        FrameGrid grid;
-    };
-    void find_contacts(std::int64_t frame, const std::array<double, 4>* disks, CheckScratch& scratch,
-                       std::vector<Contact>& out);
+    void find_contacts(std::int64_t count, util::WorkerPool& pool);
+    void sweep_window(std::int64_t first, std::int64_t frames, util::WorkerPool& pool);
+    void test_pair(int a, int b, std::int64_t first, std::int64_t frames, std::vector<Contact>& out) const;
     void count_contacts(std::int64_t frame, const std::array<double, 4>* disks, const char* fallback,
                         std::vector<Contact>& found);
 
@@ -80,8 +76,13 @@ private:
     std::vector<std::array<double, 4>> disks_;  // a group, frame-major
     std::vector<std::array<double, 2>> roots_;  // the same frames' roots, for disks centred on the body
     std::vector<char> fallback_;                // per disk: a fallback clip plays then
-    std::vector<CheckScratch> scratch_;         // per worker
-    std::vector<std::vector<Contact>> found_;   // per frame of the group: its contacts
+    // The contact check of a window of frames: per agent the disk about where its disks lie, whose overlaps
+    // are the pairs worth testing frame by frame.
+    std::vector<FrameGrid::Disk> swept_;   // per agent; r < 0 when it is in no frame of the window
+    std::vector<FrameGrid::Disk> in_run_;  // the swept disks of the agents in the run
+    FrameGrid grid_;
+    std::vector<std::vector<Contact>> pairs_;  // per worker: the contacts its pairs had
+    std::vector<std::vector<Contact>> found_;  // per frame of the group: its contacts
     std::uint64_t contacts_ = 0, excused_ = 0;
     double seconds_ = 0;
 };

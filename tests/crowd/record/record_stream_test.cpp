@@ -60,6 +60,27 @@ TEST(RecordStream, MetricsOnTheStreamFollowTheRootAsTheWholeRecords) {
     EXPECT_TRUE(contacts && reached && left);
 }
 
+// The stream checks a window of frames at a time, the pairs found by columns of a grid shared among the
+// workers: a crowd wide enough for several tasks, whose run does not end on a window's edge, on three
+// threads finds the contacts the whole record's frame-by-frame check finds.
+TEST(RecordStream, ContactsOnTheStreamOnThreadsEqualTheWholeRecords) {
+    CrowdOptions o = test::random_mode_crowd();
+    o.agents = 800;
+    o.world.x1 = o.world.y1 = 200;
+    o.seconds = 4.1;
+    o.threads = 3;
+    const MotionGraph& g = graph();
+    const CrowdRun whole = run_crowd(g, NarrowPhase::sweep(g), o);
+    const std::vector<Contact> expected = frame_contacts(whole.record);
+    RecordSink nowhere;
+    o.sink = &nowhere;
+    const CrowdRun run = run_crowd(g, NarrowPhase::sweep(g), o);
+    ASSERT_GT(expected.size(), 100u);
+    EXPECT_EQ(run.summary.contacts, expected.size());
+    EXPECT_EQ(metrics_json(*run.metrics), metrics_json(crowd_metrics(whole.record, g, o.goal_radius)));
+    EXPECT_EQ(run.metrics->max_penetration, crowd_metrics(whole.record, g, o.goal_radius).max_penetration);
+}
+
 // Forwards to a writer, and stops the run (as a kill would) at the block of frames starting at `stop`.
 class Stopping : public RecordSink {
 public:
