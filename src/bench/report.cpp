@@ -89,6 +89,8 @@ void thread_table(std::ostream& out, const ScaleTable& t) {
         thread_line(out, t, r, "frame step (CD) s", [](const ThreadRuns& c) { return fixed(c.cd_seconds, 3); });
         thread_line(out, t, r, "serial share of the frame step",
                     [](const ThreadRuns& c) { return share_cell(c.serial_share); });
+        thread_line(out, t, r, "parallel steps a frame",
+                    [](const ThreadRuns& c) { return fixed(c.parallel_steps_per_frame, 1); });
         thread_line(out, t, r, "peak MB", [](const ThreadRuns& c) { return megabytes(c.peak_bytes); });
     }
     out << "\n";
@@ -104,6 +106,7 @@ nlohmann::ordered_json thread_runs_json(const ScaleRow& r) {
                        {"peak_bytes", c.peak_bytes},
                        {"speedup", rounded(c.speedup, 3)},
                        {"serial_share", c.serial_share ? nlohmann::ordered_json(rounded(*c.serial_share, 4)) : nullptr},
+                       {"parallel_steps_per_frame", rounded(c.parallel_steps_per_frame, 2)},
                        {"digest", c.digest}});
     return out;
 }

@@ -92,10 +92,12 @@ CrowdOptions crowd_options(const ScaleOptions& o, int agents) {
 
 // The runs of one size, per thread count (slot): times, peak memory, digests and summaries.
 struct Runs {
-    explicit Runs(std::size_t counts) : sim(counts), cd(counts), wall(counts), peak(counts, -1), digests(counts) {}
+    explicit Runs(std::size_t counts)
+        : sim(counts), cd(counts), wall(counts), peak(counts, -1), digests(counts), steps_per_frame(counts) {}
     std::vector<std::vector<double>> sim, cd, wall;
     std::vector<std::int64_t> peak;
     std::vector<std::vector<std::string>> digests;
+    std::vector<double> steps_per_frame;  // of each count's last run
     std::vector<CrowdSummary> summaries;  // every run's, in order
 };
 
@@ -114,6 +116,7 @@ void timed_run(const MotionGraph& g, const NarrowPhase& narrow, const ScaleOptio
     runs.sim[slot].push_back(s.seconds);
     runs.cd[slot].push_back(s.cd_seconds);
     runs.digests[slot].push_back(digest.digest());
+    runs.steps_per_frame[slot] = double(s.parallel_steps) / std::max(1.0, std::round(o.seconds / g.dt()));
     runs.summaries.push_back(s);
 }
 
@@ -145,6 +148,7 @@ std::vector<ThreadRuns> thread_columns(const Runs& runs, const std::vector<int>&
         c.wall_seconds = util::median(runs.wall[k]);
         c.peak_bytes = runs.peak[k];
         c.digest = runs.digests[k].front();
+        c.parallel_steps_per_frame = runs.steps_per_frame[k];
         if (k == 0) {
             c.speedup = 1;
         } else if (!runs.sim[0].empty()) {  // the first count ran (not a parallel_only_from size)
@@ -390,6 +394,9 @@ ScaleTable run_scale(const ScaleOptions& o, const std::function<void(double)>& p
         "of the frame step (CD seconds), implied by its time at each thread count against " + first +
         " thread(s) by Amdahl's law (Karp-Flatt metric): serial code, the pool's hand-offs and waits, and other work "
         "on a shared machine all count";
+    t.notes["parallel steps"] =
+        "CrowdSummary::parallel_steps per frame: the frame step's loops handed to the worker pool, each a wake and a "
+        "wait on every thread (the same count for any number of threads from 2; none on one)";
     t.notes["identical"] =
         "record digests (every choice point's candidates, queries, answers, taken clip; every committed clip) and "
         "summary counters equal";

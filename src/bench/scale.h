@@ -47,6 +47,9 @@ struct ThreadRuns {
     /// serial fraction, serial_share() below); none for the first count or an equal one.
     std::optional<double> serial_share;
     std::string digest;  ///< of the first run (DigestSink)
+    /// Steps of the frame step handed to the workers, per frame (CrowdSummary::parallel_steps): what
+    /// each thread waits on; the same for any thread count from 2, none on one thread.
+    double parallel_steps_per_frame = 0;
 };
 
 /// The share s of a step that does not run in parallel, by Amdahl's law t(p) = t(1) (s + (1 - s) / p),

@@ -66,6 +66,7 @@ void WorkerPool::open(std::size_t n, const std::function<void(std::size_t, int)>
     job_.next = 0;
     job_.finished = 0;
     if (threads_.empty() || n <= job_.grain) return;
+    ++steps_;
     posted_ = ++generation_;
     if (sleepers_.load() > 0) {
         { std::lock_guard<std::mutex> lock(mutex_); }

@@ -32,6 +32,10 @@ public:
     /// made before the last returned (from f, or from another thread) throws std::logic_error.
     void for_each(std::size_t n, const std::function<void(std::size_t, int)>& f, std::size_t grain = 1);
 
+    /// Calls of for_each() handed to the workers so far (more than one chunk, on a pool of more than one
+    /// thread): each a wake and a wait on every thread. None on one thread.
+    std::uint64_t steps() const { return steps_; }
+
     /// std::thread::hardware_concurrency(), at least 1.
     static int hardware_threads();
 
@@ -64,6 +68,7 @@ private:
     std::atomic<int> sleepers_{0};                // workers waiting on start_
     std::atomic<bool> stop_{false};
     std::atomic<bool> busy_{false};  // a for_each is running
+    std::uint64_t steps_ = 0;
 };
 
 }  // namespace mobb::util

@@ -92,22 +92,6 @@ void BroadPhase::insert(int id, int owner, const SpaceTimeBox& box) {
     cells(box, [&](std::int64_t ix, std::int64_t iy) { put(cell(ix, iy), e); });
 }
 
-// Item `id` out of the table, if held: the cells it leaves (none when it was not held).
-BroadPhase::Placing BroadPhase::unplace(int id) {
-    if (!holds(id)) return {};
-    Item& item = items_[std::size_t(id)];
-    item.live = false;
-    return placing(entry(item.box, id, item.owner));
-}
-
-// An insertion into the table (whatever held its id out first: unplace()): the cells it enters (none
-// when it ended already).
-BroadPhase::Placing BroadPhase::place(const Insertion& in) {
-    if (in.box.f1 <= expired_) return {};
-    items_[std::size_t(in.id)] = {in.box, in.owner, true};
-    return placing(entry(in.box, in.id, in.owner));
-}
-
 void BroadPhase::update(const std::vector<int>& removed, const std::vector<Insertion>& inserted,
                         util::WorkerPool& pool) {
     if (removed.empty() && inserted.empty()) return;  // no need to wake the pool
@@ -116,50 +100,90 @@ void BroadPhase::update(const std::vector<int>& removed, const std::vector<Inser
         if (in.id < 0) throw std::invalid_argument("broad phase: negative id");
         top = std::max(top, std::size_t(in.id) + 1);
     }
+    // An id both removed and inserted is replaced: its insertion alone stages where it was.
+    MOBB_ASSERT(unplacing_.size == 0 && placing_.size == 0);  // nothing staged by the caller
+    if (marks_.size() < top) marks_.resize(top);
+    if (++mark_ == 0) {  // wrapped: no old mark may match
+        std::fill(marks_.begin(), marks_.end(), 0);
+        mark_ = 1;
+    }
+    for (const Insertion& in : inserted) marks_[std::size_t(in.id)] = mark_;
+    const auto reinserted = [&](int id) {
+        return id >= 0 && std::size_t(id) < top && marks_[std::size_t(id)] == mark_;
+    };
+    const std::size_t nr = removed.size();
+    stage(nr, inserted.size());
+    const auto stage_one = [&](std::size_t k, int) {
+        if (k >= nr) return stage_inserted(k - nr, inserted[k - nr]);
+        if (reinserted(removed[k])) return void(unplacing_[k] = {});
+        stage_removed(k, removed[k]);
+    };
+    // A few items are not worth waking the pool for.
+    if (nr + inserted.size() < kFewItems) {
+        for (std::size_t k = 0; k < nr + inserted.size(); ++k) stage_one(k, 0);
+    } else {
+        pool.for_each(nr + inserted.size(), stage_one, 64);
+    }
+    apply_staged(pool);
+}
+
+void BroadPhase::stage(std::size_t removed, std::size_t inserted) {
+    unplacing_.resize(removed);
+    replacing_.resize(inserted);
+    placing_.resize(inserted);
+}
+
+// Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item).
+// A cell's order does not matter (queries sort or order their answers). One more task beside them, first
+// so that it does not end the step alone, enters the items in the table, counts them and enters the
+// hashed cells, which no band touches; a few items do it all in turn.
+void BroadPhase::apply_staged(util::WorkerPool& pool) {
+    const bool few = unplacing_.size + placing_.size < kFewItems;
+    if (unplacing_.size + placing_.size == 0) return;
+    const std::int64_t bands = pool.size() > 1 && !few ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
+    if (few) {
+        enter_staged();
+        fill_band(0, 1);
+    } else {
+        pool.for_each(std::size_t(bands + 1), [&](std::size_t task, int) {
+            if (task == 0) return enter_staged();
+            fill_band(std::int64_t(task) - 1, bands);
+        });
+    }
+    stage(0, 0);
+}
+
+// The staged items in the table (the removed first: an inserted id still held leaves first too) and in
+// the counts, and their hashed cells: on one thread (hashing is not thread-safe).
+void BroadPhase::enter_staged() {
+    std::size_t top = 0;
+    for (const Placing& p : placing_) top = std::max(top, std::size_t(p.e.id) + 1);
     // Doubling: ids come a few more at a time, and resize() to each would take its slow path each time.
     if (top > items_.size()) items_.resize(std::max(top, 2 * items_.size()));
-    // The item table in parallel, items apart (ids are distinct within each list): the removed first, as an
-    // id may be removed and inserted again in one update; an inserted id still held leaves first too.
-    constexpr std::size_t kGrain = 64;
-    const std::size_t nr = removed.size();
-    // A few items are not worth waking the pool for: they go on the calling thread (fewer than one chunk
-    // of kGrain: the crowd's updates between two choice points it evaluates again are often more).
-    const bool few = nr + inserted.size() < kFewItems;
-    const auto each = [&](std::size_t n, auto&& f) {
-        if (!few) return pool.for_each(n, f, kGrain);
-        for (std::size_t k = 0; k < n; ++k) f(k, 0);
+    for (const Placing& p : unplacing_)
+        if (p.ix0 <= p.ix1) items_[std::size_t(p.e.id)].live = false;
+    for (const Placing& p : replacing_)
+        if (p.ix0 <= p.ix1) items_[std::size_t(p.e.id)].live = false;
+    for (const Placing& p : placing_)
+        if (p.ix0 <= p.ix1) items_[std::size_t(p.e.id)] = {p.e.box, p.e.owner, true};
+    count(unplacing_, -1);
+    count(replacing_, -1);
+    count(placing_, +1);
+    update_hashed();
+}
+
+// The flat cells of band `band` of `bands` (of columns): the staged items leave them, then enter them.
+void BroadPhase::fill_band(std::int64_t band, std::int64_t bands) {
+    const std::int64_t lo = nx_ * band / bands, hi = nx_ * (band + 1) / bands;
+    const auto each_cell = [&](const Placing& p, auto&& f) {
+        const std::int64_t ix0 = std::max(lo, p.ix0), ix1 = std::min(hi - 1, p.ix1);
+        const std::int64_t iy0 = std::max<std::int64_t>(0, p.iy0), iy1 = std::min(ny_ - 1, p.iy1);
+        for (std::int64_t ix = ix0; ix <= ix1; ++ix)
+            for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(flat_[std::size_t(ix * ny_ + iy)]);
     };
-    unplacing_.resize(nr + inserted.size());
-    placing_.resize(inserted.size());
-    each(nr, [&](std::size_t k, int) { unplacing_[k] = unplace(removed[k]); });
-    each(inserted.size(), [&](std::size_t k, int) {
-        unplacing_[nr + k] = unplace(inserted[k].id);
-        placing_[k] = place(inserted[k]);
-    });
-    // Bands of columns: a cell belongs to one band (one band for one thread: each band visits every item).
-    // A cell's order does not matter (queries sort or order their answers). One more task beside them,
-    // first so that it does not end the step alone, counts the items and enters the hashed cells, which no
-    // band touches; a few items do it all in turn.
-    const std::int64_t bands = pool.size() > 1 && !few ? std::min<std::int64_t>(nx_, 4 * std::int64_t(pool.size())) : 1;
-    const auto counts_and_hashed = [&] {
-        count(unplacing_, -1);
-        count(placing_, +1);
-        update_hashed();
-    };
-    if (few) counts_and_hashed();
-    pool.for_each(std::size_t(few ? bands : bands + 1), [&](std::size_t task, int) {
-        if (!few && task == 0) return counts_and_hashed();
-        const std::size_t band = few ? task : task - 1;
-        const std::int64_t lo = nx_ * std::int64_t(band) / bands, hi = nx_ * std::int64_t(band + 1) / bands;
-        const auto each_cell = [&](const Placing& p, auto&& f) {
-            const std::int64_t ix0 = std::max(lo, p.ix0), ix1 = std::min(hi - 1, p.ix1);
-            const std::int64_t iy0 = std::max<std::int64_t>(0, p.iy0), iy1 = std::min(ny_ - 1, p.iy1);
-            for (std::int64_t ix = ix0; ix <= ix1; ++ix)
-                for (std::int64_t iy = iy0; iy <= iy1; ++iy) f(flat_[std::size_t(ix * ny_ + iy)]);
-        };
-        for (const Placing& p : unplacing_) each_cell(p, [&](Cell& c) { erase(c, p.e.id); });
-        for (const Placing& p : placing_) each_cell(p, [&](Cell& c) { put(c, p.e); });
-    });
+    for (const Placing& p : unplacing_) each_cell(p, [&](Cell& c) { erase(c, p.e.id); });
+    for (const Placing& p : replacing_) each_cell(p, [&](Cell& c) { erase(c, p.e.id); });
+    for (const Placing& p : placing_) each_cell(p, [&](Cell& c) { put(c, p.e); });
 }
 
 // The held count and the counts by end frame, for items that left (-1) or entered (+1) the table.
@@ -180,6 +204,7 @@ void BroadPhase::update_hashed() {
                 if (!flat(ix, iy)) f(hashed_[key(ix, iy)]);
     };
     for (const Placing& p : unplacing_) beyond(p, [&](Cell& c) { erase(c, p.e.id); });
+    for (const Placing& p : replacing_) beyond(p, [&](Cell& c) { erase(c, p.e.id); });
     for (const Placing& p : placing_) beyond(p, [&](Cell& c) { put(c, p.e); });
 }
 

@@ -163,16 +163,20 @@ void Simulation::lay_out(std::size_t from, std::size_t to) {
     placed_ += std::int64_t(pieces);
     pending_.resize(pending);
     released_.resize(released);
+    broad_.stage(released, pending);
     released_held_ = held;
     if (!o_.sink) out_.record.choices.resize(std::size_t(choice));
 }
 
-// The run's j-th piece: under its id, and pending for the broad phase.
+// The run's j-th piece: under its id, and pending for the broad phase, staged there (entered at the next
+// flush).
 int Simulation::place_piece(Piece piece, std::size_t j) {
     const int id = run_ids_[j];
     piece.seq = run_seq_ + std::int64_t(j);
     pieces_[std::size_t(id)] = piece;
-    pending_[run_pending_ + j] = {id, piece.agent, box_of(piece)};
+    BroadPhase::Insertion& in = pending_[run_pending_ + j];
+    in = {id, piece.agent, box_of(piece)};
+    broad_.stage_inserted(run_pending_ + j, in);
     return id;
 }
 
@@ -181,7 +185,10 @@ void Simulation::reserve(int agent, int choice, const Plan& plan, Commit& at) {
     MOBB_ASSERT(agent >= 0 && std::size_t(agent) < agents_.size());
     MOBB_ASSERT(plan.escape.empty() || plan.hold);  // an escape ends on held ground
     Agent& a = agents_[std::size_t(agent)];
-    for (int id : a.reserved) released_[at.first_release++] = id;
+    for (int id : a.reserved) {
+        broad_.stage_removed(at.first_release, id);
+        released_[at.first_release++] = id;
+    }
     a.reserved.clear();
     plan_pieces(agent, choice, plan, [&](const Piece& p) { a.reserved.push_back(place_piece(p, at.first_piece++)); });
     a.plan = plan;

@@ -22,6 +22,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Positions whose current() is worked out ahead of the commits (foresee, and beside a round of evaluating
+// again): at most kAhead, kAheadGrain a task, in a step of the pool when at least kParallelAhead.
+constexpr std::size_t kAhead = 512, kParallelAhead = 64, kAheadGrain = 16;
+
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 void check(const CrowdOptions& o) {
@@ -76,23 +80,18 @@ void Simulation::evaluate(std::size_t i, const CrowdState& s) {
     record_plan(c, c.point());
 }
 
-// The boxes the frame's plans put in place and the ones they release, by position in the batch: found in
-// parallel (each worker appends to a list of its own), then entered in parallel (BatchGrid::fill).
+// The boxes the plan at position i puts in place and the ones it releases, appended to the worker's own
+// list: positions in parallel, as they are evaluated.
+void Simulation::find_boxes(std::size_t i, int worker) {
+    std::vector<SpaceTimeBox>& boxes = found_[std::size_t(worker)];
+    const std::size_t begin = boxes.size();
+    slots_[i].boxes(boxes);
+    for (int id : agents_[std::size_t(slots_[i].agent())].reserved) boxes.push_back(box_of(pieces_[std::size_t(id)]));
+    spans_[i] = {worker, begin, boxes.size()};
+}
+
+// The boxes of the frame's plans (find_boxes), by position in the batch, entered in parallel (BatchGrid::fill).
 void Simulation::gather(std::size_t n) {
-    found_.resize(std::size_t(pool_.size()));
-    for (std::vector<SpaceTimeBox>& f : found_) f.clear();
-    spans_.resize(n);
-    pool_.for_each(
-        n,
-        [&](std::size_t i, int worker) {
-            std::vector<SpaceTimeBox>& boxes = found_[std::size_t(worker)];
-            const std::size_t begin = boxes.size();
-            slots_[i].boxes(boxes);
-            for (int id : agents_[std::size_t(slots_[i].agent())].reserved)
-                boxes.push_back(box_of(pieces_[std::size_t(id)]));
-            spans_[i] = {worker, begin, boxes.size()};
-        },
-        8);
     chosen_.clear();
     chosen_.fill(
         n,
@@ -133,7 +132,6 @@ bool Simulation::current(std::size_t i) const {
 // re-evaluation will drop the rest; in parallel when that is far enough to be worth a round of the pool.
 // With no box moved yet current() reads the lists alone, cheaper than a round.
 std::size_t Simulation::foresee(std::size_t i, std::size_t n) {
-    constexpr std::size_t kAhead = 512, kParallel = 64, kGrain = 16;
     if (moved_.last_index() < 0) {
         current_[i] = current(i);
         return i + 1;
@@ -144,12 +142,12 @@ std::size_t Simulation::foresee(std::size_t i, std::size_t n) {
         current_[i] = 0;
         return i + 1;
     }
-    if (end - i < kParallel) {
+    if (end - i < kParallelAhead) {
         for (std::size_t k = i; k < end; ++k) current_[k] = current(k);
         return end;
     }
     pool_.for_each(
-        end - i, [&](std::size_t k, int) { current_[i + k] = current(i + k); }, kGrain);
+        end - i, [&](std::size_t k, int) { current_[i + k] = current(i + k); }, kAheadGrain);
     return end;
 }
 
@@ -170,8 +168,10 @@ void Simulation::recheck(std::size_t i, std::size_t known) {
 // before it, and with it, in parallel, the next kRound - 1 positions whose first evaluations only plans
 // committed already touched, among the next kScan. Their new evaluations stay current unless a commit
 // from p on touches them too (then they are evaluated again in their turn). Rounds depend on the batch
-// alone, not on the thread count.
-void Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s) {
+// alone, not on the thread count. In the same step, what foresee() would do next: current() of the
+// positions after p up to the next one known to be stale, against moved_ as it is - recheck() brings them
+// up to date as the boxes of p and of the round join it. Returns the position current_ is known up to.
+std::size_t Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s) {
     constexpr std::size_t kRound = 32;  // enough to share among the threads, few enough to seldom go stale
     // Where agents are numbered in space (a scenario's regions), most positions ahead wait on commits
     // still to come: an unbounded search would read the rest of the batch for every stale position.
@@ -180,11 +180,41 @@ void Simulation::reevaluate_from(std::size_t p, std::size_t n, const CrowdState&
     round_.assign(1, p);
     for (std::size_t k = p + 1; k < std::min(n, p + kScan) && round_.size() < kRound; ++k)
         if (seen_[k] == 0 && touched_[k] >= 0 && touched_[k] < int(p)) round_.push_back(k);
-    pool_.for_each(round_.size(), [&](std::size_t r, int) {
-        evaluate(round_[r], s);
-        outline(round_[r]);
-    });
-    for (std::size_t k : round_) seen_[k] = int(p);
+    const std::size_t end = known_after_round(p, n);
+    const std::size_t rounds = round_.size(), chunks = (end - (p + 1) + kAheadGrain - 1) / kAheadGrain;
+    const auto task = [&](std::size_t t, int) {
+        if (t < rounds) {
+            const std::size_t k = round_[t];
+            evaluate(k, s);
+            outline(k);
+            seen_[k] = int(p);
+            if (k > p) current_[k] = current(k);
+            return;
+        }
+        const std::size_t first = p + 1 + (t - rounds) * kAheadGrain;
+        for (std::size_t k = first; k < std::min(end, first + kAheadGrain); ++k)  // the round's own are its tasks'
+            if (!std::binary_search(round_.begin(), round_.end(), k)) current_[k] = current(k);
+    };
+    if (rounds > 1 || end - (p + 1) >= kParallelAhead) {
+        pool_.for_each(rounds + chunks, task);
+    } else {  // p alone and a few positions ahead: not worth a step of the pool
+        for (std::size_t t = 0; t < rounds + chunks; ++t) task(t, 0);
+    }
+    return end;
+}
+
+// Where foresee() would stop after the round at p: the next position first evaluated and touched that
+// the round leaves out (it will be stale), within kAhead.
+std::size_t Simulation::known_after_round(std::size_t p, std::size_t n) const {
+    std::size_t end = p + 1, r = 1;
+    for (; end < std::min(n, p + 1 + kAhead); ++end) {
+        if (r < round_.size() && round_[r] == end) {
+            ++r;
+            continue;
+        }
+        if (seen_[end] == 0 && touched_[end] >= 0) break;
+    }
+    return end;
 }
 
 // Four steps, the same for any number of threads: (1) every choice point of the frame is evaluated
@@ -198,9 +228,13 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     const std::size_t n = batch.size();
     if (slots_.size() < n) slots_.resize(n);
     const CrowdState s = state();
-    pool_.for_each(n, [&](std::size_t i, int) {
+    found_.resize(std::size_t(pool_.size()));
+    for (std::vector<SpaceTimeBox>& f : found_) f.clear();
+    spans_.resize(n);
+    pool_.for_each(n, [&](std::size_t i, int worker) {
         slots_[i].prepare(s, batch[i], frame);
         evaluate(i, s);
+        find_boxes(i, worker);
     });
     gather(n);
     touched_.resize(n);
@@ -225,8 +259,7 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
         if (!current_[i]) {
             commit_run(from, i);
             from = i;
-            reevaluate_from(i, n, s);
-            known = i + 1;  // seen_ changed for positions after it
+            known = reevaluate_from(i, n, s);  // seen_ changed for positions after it
         }
         if (seen_[i] > 0) {  // evaluated again
             ++out_.summary.reevaluated;
@@ -272,13 +305,16 @@ void Simulation::release_batch() {
 
 void Simulation::release(int id) {
     released_.push_back(id);
+    broad_.stage(released_.size(), pending_.size());
+    broad_.stage_removed(released_.size() - 1, id);
     if (broad_.holds(id)) ++released_held_;
 }
 
-// Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them.
+// Commits reach the broad phase in one parallel step per frame, or before a re-evaluation needs them:
+// staged as they were committed (commit.cpp), entered at once.
 void Simulation::flush() {
     released_held_ = flushed_held_ = 0;
-    broad_.update(released_, pending_, pool_);
+    broad_.apply_staged(pool_);
     left_.insert(left_.end(), released_.begin(), released_.end());
     released_.clear();
     pending_.clear();
@@ -388,6 +424,7 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
         std::vector<int> batch = std::move(due_[std::size_t(f)]);
         if (batch.empty()) continue;
         std::sort(batch.begin(), batch.end());  // commit order: agent ids within a frame
+        const std::uint64_t steps = pool_.steps();
         reach_goals(f, batch);
         const auto start = Clock::now();
         broad_.expire(f);  // clips ending by now cannot overlap a candidate starting now
@@ -399,6 +436,7 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
         expired_until_ = f + 1;
         run_batch(f, batch);
         out_.summary.cd_seconds += since(start);
+        out_.summary.parallel_steps += pool_.steps() - steps;
         if (progress && f / 30 != reported) {
             reported = f / 30;
             progress(double(f) / double(frames));

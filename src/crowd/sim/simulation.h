@@ -43,12 +43,14 @@ private:
     [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void apply_waiting();
     void evaluate(std::size_t i, const CrowdState& s);
+    void find_boxes(std::size_t i, int worker);
     void gather(std::size_t n);
     void outline(std::size_t i);
     bool current(std::size_t i) const;
     std::size_t foresee(std::size_t i, std::size_t n);
     void recheck(std::size_t i, std::size_t known);
-    void reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s);
+    std::size_t reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s);
+    std::size_t known_after_round(std::size_t p, std::size_t n) const;
     void release_batch();
     int add_piece(const Piece& piece);
     // A commit's share of a run (commit.cpp): its counts, then its places in the run's shared lists.

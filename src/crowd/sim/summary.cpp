@@ -59,7 +59,9 @@ std::string summary_text(const CrowdSummary& s) {
         << "re-evaluated choices     " << s.reevaluated << " (a commit earlier in the frame was near)\n"
         << "simulation time          " << s.seconds << " s (" << s.threads << " threads)\n"
         << "collision detection      " << s.cd_seconds << " s, " << s.cd_us_per_agent_second()
-        << " us per agent per simulated s\n";
+        << " us per agent per simulated s\n"
+        << "parallel steps           " << s.parallel_steps
+        << " (the frames' steps handed to the worker threads; none on one thread)\n";
     return out.str();
 }
 

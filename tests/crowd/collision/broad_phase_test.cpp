@@ -126,20 +126,40 @@ TEST(BroadPhase, InsertAllMatchesInsertingOneByOne) {
 // Inserts and removals (one by one and by batches), and expiry in random order, frame after frame, the
 // boxes spanning several cells, some beyond the flat cells: every query answers as a scan of the items
 // held (cells compacted lazily must never lose or revive an item).
-TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> pos(-6, 30), size(0, 7);
-    BroadPhase bp(2.0, 24, 24);
-    util::WorkerPool pool(3);
+// A random history's items: the broad phase, and what it should hold, for a scan to check it against.
+class BroadPhaseHistory : public ::testing::Test {
+protected:
+    std::mt19937_64 rng;
+    BroadPhase bp{2.0, 24, 24};
+    util::WorkerPool pool{3};
     std::vector<SpaceTimeBox> boxes;
     std::vector<int> owners;
     std::vector<char> held;
-    const auto random_box = [&](std::int64_t frame) {
+
+    // A box from `frame` on, over a few cells, some beyond the flat ones.
+    SpaceTimeBox random_box_from(std::int64_t frame) {
+        std::uniform_real_distribution<double> pos(-6, 30), size(0, 7);
         const double x = pos(rng), y = pos(rng);
-        const std::int64_t f0 = frame + std::int64_t(rng() % 5), f1 = f0 + 1 + std::int64_t(rng() % 20);
+        const std::int64_t f0 = frame + std::int64_t(rng() % 5);
+        return {x, y, x + size(rng), y + size(rng), f0, f0 + 1 + std::int64_t(rng() % 20)};
+    }
+    // What a query should answer: the held items of other owners overlapping `box`, ascending.
+    std::vector<int> scan(const SpaceTimeBox& box, int owner) const {
+        std::vector<int> out;
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (held[i] && owners[i] != owner && boxes[i].overlaps(box)) out.push_back(int(i));
+        return out;
+    }
+};
+
+TEST_F(BroadPhaseHistory, RandomHistoryMatchesBruteForce) {
+    rng.seed(3);
+    const auto random_box = [&](std::int64_t frame) {
+        SpaceTimeBox box = random_box_from(frame);
         // Some end far on: the end counts keep frames up to 2^20 in an array, the others apart.
         const std::int64_t far = rng() % 2 ? 1000000 : 5000000;
-        return SpaceTimeBox{x, y, x + size(rng), y + size(rng), f0, rng() % 10 ? f1 : f1 + far};
+        if (rng() % 10 == 0) box.f1 += far;
+        return box;
     };
     int wrong = 0;
     for (std::int64_t frame = 0; frame < 120; ++frame) {
@@ -199,11 +219,9 @@ TEST(BroadPhase, RandomHistoryMatchesBruteForce) {
         for (int q = 0; q < 20; ++q) {
             const SpaceTimeBox box = random_box(frame);
             const int owner = int(rng() % 7);
-            std::vector<int> got, want;
+            std::vector<int> got;
             bp.query(box, owner, got);
-            for (std::size_t i = 0; i < boxes.size(); ++i)
-                if (held[i] && owners[i] != owner && boxes[i].overlaps(box)) want.push_back(int(i));
-            wrong += got != want;
+            wrong += got != scan(box, owner);
         }
     }
     for (const std::int64_t frame : {1000200, 5000200}) {  // past the far ends: counted apart, then in the array
@@ -244,6 +262,80 @@ TEST(BroadPhase, ForeverItemsAndFarCells) {
     EXPECT_TRUE(out.empty());
     bp.insert(3, 0, {1, 1, 2, 2, 0, kNever});  // ends by the expiry frame: dropped
     EXPECT_EQ(bp.size(), 0u);
+}
+
+// The crowd's way (commit.cpp): removals and insertions staged by the pool's workers as their lists grow,
+// in two parts a frame, then entered at once. Nothing is entered before apply_staged(): holds(), size()
+// and queries answer as before; after it every query answers as a scan of the items held - expired ids used
+// again among them, some still in their cells.
+TEST_F(BroadPhaseHistory, StagedItemsEnterOnlyWhenApplied) {
+    rng.seed(11);
+    const auto answers = [&](std::uint64_t seed) {  // a fixed set of queries' answers
+        std::mt19937_64 q{seed};
+        std::vector<std::vector<int>> out(20);
+        for (std::vector<int>& o : out) {
+            const double x = double(q() % 30) - 3, y = double(q() % 30) - 3;
+            const auto f0 = std::int64_t(q() % 130);
+            bp.query({x, y, x + 5, y + 5, f0, f0 + 10}, int(q() % 7), o);
+        }
+        return out;
+    };
+    int wrong = 0, staged_items = 0;
+    for (std::int64_t frame = 0; frame < 120; ++frame) {
+        bp.expire(frame);
+        for (std::size_t i = 0; i < held.size(); ++i) held[i] = held[i] && boxes[i].f1 > frame;
+        std::vector<int> removed;
+        std::vector<BroadPhase::Insertion> inserted;
+        for (std::size_t id = 0; id < boxes.size(); ++id) {  // removed, replaced, or (not held) used again
+            const std::uint64_t r = rng() % 16;
+            if (held[id] && r < 2) removed.push_back(int(id));
+            if ((held[id] && r == 2) || (!held[id] && r < 2))
+                inserted.push_back({int(id), owners[id], random_box_from(frame)});
+        }
+        for (int k = int(rng() % 90); k > 0; --k) {
+            inserted.push_back({int(boxes.size()), int(rng() % 6), random_box_from(frame)});
+            boxes.push_back({});
+            owners.push_back(inserted.back().owner);
+            held.push_back(0);
+        }
+        const std::vector<std::vector<int>> before = answers(std::uint64_t(frame));
+        const std::size_t live = bp.size();
+        const std::size_t nr = removed.size() / 2, ni = inserted.size() / 2;  // two parts, as two runs
+        bp.stage(nr, ni);
+        pool.for_each(nr + ni, [&](std::size_t k, int) {
+            if (k < nr) return bp.stage_removed(k, removed[k]);
+            bp.stage_inserted(k - nr, inserted[k - nr]);
+        });
+        bp.stage(removed.size(), inserted.size());
+        pool.for_each(removed.size() - nr + inserted.size() - ni, [&](std::size_t k, int) {
+            if (k < removed.size() - nr) return bp.stage_removed(nr + k, removed[nr + k]);
+            bp.stage_inserted(ni + k - (removed.size() - nr), inserted[ni + k - (removed.size() - nr)]);
+        });
+        wrong += answers(std::uint64_t(frame)) != before || bp.size() != live;
+        for (int id : removed) wrong += !bp.holds(id);
+        bp.apply_staged(pool);
+        staged_items += int(removed.size() + inserted.size());
+        for (int id : removed) held[std::size_t(id)] = 0;
+        for (const BroadPhase::Insertion& in : inserted) {
+            boxes[std::size_t(in.id)] = in.box;
+            held[std::size_t(in.id)] = in.box.f1 > frame;
+        }
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < held.size(); ++i) {
+            count += std::size_t(held[i]);
+            wrong += bp.holds(int(i)) != bool(held[i]);
+        }
+        wrong += bp.size() != count;
+        std::mt19937_64 q{std::uint64_t(frame)};
+        for (const std::vector<int>& got : answers(std::uint64_t(frame))) {
+            const double x = double(q() % 30) - 3, y = double(q() % 30) - 3;
+            const auto f0 = std::int64_t(q() % 130);
+            const SpaceTimeBox box{x, y, x + 5, y + 5, f0, f0 + 10};
+            wrong += got != scan(box, int(q() % 7));
+        }
+    }
+    EXPECT_GT(staged_items, 5000);
+    EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace

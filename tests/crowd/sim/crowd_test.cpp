@@ -397,12 +397,18 @@ TEST(Crowd, RunsCommittedInParallelKeepTheRecord) {
     const std::string text = record_to_text(ref.record, summary_json(ref.summary));
     EXPECT_GT(ref.summary.reevaluated, 100u);
     EXPECT_GT(ref.summary.right_of_way, 0u);
+    // Steps handed to the workers: none on one thread, as many on any count from 2.
+    EXPECT_EQ(ref.summary.parallel_steps, 0u);
+    std::uint64_t steps = 0;
     for (int threads : {2, 3}) {
         o.threads = threads;
         const CrowdRun r = run(o);
         EXPECT_TRUE(record_to_text(r.record, summary_json(r.summary)) == text) << threads << " threads";
         EXPECT_EQ(counters(r.summary), counters(ref.summary)) << threads << " threads";
+        if (threads == 2) steps = r.summary.parallel_steps;
+        EXPECT_EQ(r.summary.parallel_steps, steps);
     }
+    EXPECT_GT(steps, 0u);
 }
 
 // Obstacles hold as the walls do: no sample disk of any agent overlaps one, checked here against the

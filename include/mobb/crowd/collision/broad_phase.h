@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "mobb/core/assert.h"
+
 namespace mobb::util {
 class WorkerPool;
 }
@@ -70,9 +72,23 @@ public:
     /// once). Throws std::invalid_argument for a negative id.
     void insert_all(const std::vector<Insertion>& items, util::WorkerPool& pool) { update({}, items, pool); }
     /// The same as remove() of each of `removed`, then insert() of each of `inserted` (an id held is
-    /// replaced), for ids distinct within each list: the item table by items, and the flat cells by bands
-    /// of columns, in parallel (the crowd's released pieces and its commits).
+    /// replaced), for ids distinct within each list, in two parallel steps: the items staged (below), then
+    /// the flat cells filled by bands of columns. Not between stage() and apply_staged().
     void update(const std::vector<int>& removed, const std::vector<Insertion>& inserted, util::WorkerPool& pool);
+    /// update() in steps, for a caller that writes its lists in parallel (the crowd's commits): stage()
+    /// grows the staged lists to `removed` and `inserted` items (what is staged stays); stage_removed()
+    /// and stage_inserted() stage the k-th item of each - from any thread, each index once, with no id in
+    /// both lists - and read the table only; apply_staged() then enters them all as update() would, in one
+    /// parallel step rather than three, and empties the lists. Nothing changes before apply_staged():
+    /// holds() and queries answer as before the items were staged.
+    void stage(std::size_t removed, std::size_t inserted);
+    void stage_removed(std::size_t k, int id) { unplacing_[k] = held_placing(id); }
+    void stage_inserted(std::size_t k, const Insertion& in) {
+        MOBB_ASSERT(in.id >= 0);
+        replacing_[k] = held_placing(in.id);
+        placing_[k] = in.box.f1 <= expired_ ? Placing{} : placing(entry(in.box, in.id, in.owner));
+    }
+    void apply_staged(util::WorkerPool& pool);
     /// Removes item `id`; unknown or removed ids are ignored.
     void remove(int id);
     /// Drops every item whose box ends at or before `frame` (f1 <= frame): they are no longer reported
@@ -139,8 +155,14 @@ private:
     Cell& cell(std::int64_t ix, std::int64_t iy);
     bool flat(std::int64_t ix, std::int64_t iy) const { return 0 <= ix && ix < nx_ && 0 <= iy && iy < ny_; }
     bool enroll(int id, int owner, const SpaceTimeBox& box);
-    Placing unplace(int id);
-    Placing place(const Insertion& in);
+    // Item `id`'s entry and cells while it is held; none (ix0 > ix1) when it is not.
+    Placing held_placing(int id) const {
+        if (!holds(id)) return {};
+        const Item& item = items_[std::size_t(id)];
+        return placing(entry(item.box, id, item.owner));
+    }
+    void enter_staged();
+    void fill_band(std::int64_t band, std::int64_t bands);
     void count(const Placings& items, int delta);
     void update_hashed();
     Placing placing(const Entry& e) const {
@@ -161,8 +183,11 @@ private:
     std::vector<Cell> flat_;
     std::unordered_map<std::uint64_t, Cell> hashed_;
     std::vector<Item> items_;
-    Placings placing_;    // scratch of update(): the items inserted
-    Placings unplacing_;  // scratch of update(): the items removed
+    Placings unplacing_;                // staged: the items removed, where they were
+    Placings replacing_;                // staged: where the items inserted were, when still held
+    Placings placing_;                  // staged: the items inserted
+    std::vector<std::uint32_t> marks_;  // update()'s: mark_ at the ids it inserts
+    std::uint32_t mark_ = 0;
     std::size_t live_ = 0;
     std::int64_t expired_ = std::numeric_limits<std::int64_t>::min();  // items ending by then are gone
     // Items held, by the frame they end at: counted in an array for frames [0, kFlatEnds) (a clip's end;

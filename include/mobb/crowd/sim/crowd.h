@@ -40,6 +40,10 @@ struct CrowdSummary {
     /// Wall time of collision detection in it: the frames' choice points (candidate placement, broad
     /// phase, narrow-phase queries, re-evaluations) and their commits to the broad phase.
     double cd_seconds = 0;
+    /// Steps of the frames' choice points handed to the worker threads (WorkerPool::steps): each a wake
+    /// and a wait on every thread, a cost that grows with their number. The same for any thread count from
+    /// 2 (loops split by the thread count split in more than one task from there); none on one thread.
+    std::uint64_t parallel_steps = 0;
 
     /// Collision detection per agent per simulated second, microseconds (0 for an empty run).
     double cd_us_per_agent_second() const;
