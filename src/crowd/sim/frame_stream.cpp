@@ -138,7 +138,8 @@ void FrameStream::find_contacts(std::int64_t count, util::WorkerPool& pool) {
     // About half a second: an agent's disks of a window lie within about a metre of one another, so a
     // swept disk meets those of its few neighbours only.
     constexpr std::int64_t kWindow = 16;
-    found_.assign(std::size_t(count), {});
+    found_.resize(std::size_t(count));
+    for (std::vector<Contact>& f : found_) f.clear();  // kept: their memory serves the next group
     pairs_.resize(std::size_t(pool.size()));
     for (std::int64_t first = 0; first < count; first += kWindow) {
         sweep_window(first, std::min(kWindow, count - first), pool);
