@@ -129,6 +129,11 @@ void add_run_options(CLI::App& cmd, CrowdArgs& a) {
                    "Worker threads for the choice points (the record is the same for any count)")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
+    cmd.add_option("--max-batch", o.max_batch,
+                   "Choice points evaluated at once, at most: a frame with more runs them in batches (the record's "
+                   "agents do the same for any size; only the work, time and memory differ)")
+        ->check(CLI::Range(1, 1 << 30))
+        ->capture_default_str();
     cmd.add_option("--record", a.record, "Write the record to this file: JSON, or HDF5 for .h5 (docs/formats.md)");
     cmd.add_flag("--record-candidates,!--no-record-candidates", a.candidates,
                  "Keep each choice point's candidates and their queries in the record (default: in a JSON record, "
@@ -194,7 +199,8 @@ bool check_usage(CrowdArgs& a) {
     return true;
 }
 
-// The run's options: the command line's, or a scenario's with the command line's seed, threads and cell.
+// The run's options: the command line's, or a scenario's with the command line's seed, threads, batch and
+// cell.
 crowd::CrowdOptions run_options(const CrowdArgs& a, const crowd::Scenario& s) {
     crowd::CrowdOptions opt = a.options;
     parse_world(a.world, opt.world.x1, opt.world.y1);
@@ -203,6 +209,7 @@ crowd::CrowdOptions run_options(const CrowdArgs& a, const crowd::Scenario& s) {
         opt = crowd::scenario_options(s);
         opt.seed = a.options.seed;
         opt.threads = a.options.threads;
+        opt.max_batch = a.options.max_batch;
         opt.cell = a.options.cell;
     }
     opt.tuning = a.tuning;

@@ -186,6 +186,31 @@ TEST(CrowdCli, ScenarioRecordDoesNotDependOnThreads) {
     EXPECT_EQ(first.find("\"reevaluated\": 0,"), std::string::npos) << "no choice point was evaluated again";
 }
 
+// --max-batch: a scenario's frames in batches of one choice point give the record of one batch a frame -
+// every clip, plan and candidate - and only the work differs: nothing evaluated twice, each choice point's
+// `pruned` counted against the broad phase of its own time. 0 is a usage error.
+TEST(CrowdCli, MaxBatchChangesOnlyTheWork) {
+    const std::string args = "crowd --quiet --no-motion --graph " + kGraph + " --scenario " +
+                             std::string(MOBB_SOURCE_DIR) + "/assets/scenarios/bottleneck.json --seed 2 --record ";
+    nlohmann::json records[2];
+    for (int k : {0, 1}) {
+        const std::string rec = temp_file("batch" + std::to_string(k) + ".json");
+        const Result r = run(args + rec + (k == 1 ? " --max-batch 1" : ""));
+        ASSERT_EQ(r.code, 0) << r.err;
+        std::ifstream f(rec);
+        records[k] = nlohmann::json::parse(f);
+        std::remove(rec.c_str());
+    }
+    EXPECT_GT(records[0]["summary"]["reevaluated"].get<int>(), 0);
+    EXPECT_EQ(records[1]["summary"]["reevaluated"].get<int>(), 0);
+    for (nlohmann::json& j : records) {
+        j.erase("summary");
+        for (nlohmann::json& c : j["choices"]) c["pruned"] = 0;
+    }
+    EXPECT_TRUE(records[0] == records[1]);
+    EXPECT_NE(run(args + temp_file("batch_none.json") + " --max-batch 0").code, 0);
+}
+
 // mobb record flow: evacuation_exit's 30 agents all leave the room through its door (x = 0) toward -x, each
 // counted once, from its JSON record and its HDF5 record alike; a bad line is one error line, exit 1.
 TEST(CrowdCli, RecordFlowThroughADoor) {

@@ -42,6 +42,11 @@ struct CrowdOptions {
     /// Worker threads for the choice points (>= 1; the calling thread is one of them). The record, the
     /// logged queries and every counter are the same for any count; only the times differ.
     int threads = 1;
+    /// Choice points evaluated at once, at most (>= 1). A frame with more - the first, where every agent
+    /// chooses - runs them as consecutive batches of this many: the outcome is the same (each choice
+    /// point's plan is that of evaluating it after the commits before it, in agent order), the slots and
+    /// lists a batch grows stay this size. Only time and memory depend on it.
+    int max_batch = 4096;
     std::vector<AgentSpec> placed;  ///< the agents of a scenario (then `agents` is ignored)
     /// Metres: a goal agent this close to its goal has reached it - it heads for the next, leaves (once
     /// it has played a clip), or stops there.

@@ -129,14 +129,6 @@ int BatchGrid::last_between(const SpaceTimeBox& box, int from, int below) const 
     return last;
 }
 
-void BatchGrid::release() {
-    for (std::size_t c : used_) std::vector<int>().swap(cells_[c]), occupied_[c >> 6] = 0;
-    used_ = {};
-    groups_ = {};
-    boxes_ = {};
-    band_used_ = {};
-}
-
 void BatchGrid::clear() {
     for (std::size_t c : used_) cells_[c].clear(), occupied_[c >> 6] = 0;
     used_.clear();

@@ -41,8 +41,6 @@ public:
     int last_index() const { return groups_.empty() ? -1 : groups_.back().index; }
     /// Empties the grid (only the cells used are visited).
     void clear();
-    /// Empties the grid and gives back the memory its cells and lists grew to.
-    void release();
 
 private:
     struct Group {

@@ -134,7 +134,7 @@ void Simulation::count_commit(std::size_t i, Commit& out) const {
 // The run's shared lists grown to their size, each position's place in them, and the ids its pieces take:
 // the ones that left the broad phase before this frame (last first), then new ones.
 void Simulation::lay_out(std::size_t from, std::size_t to) {
-    std::size_t pieces = 0, released = released_.size(), pending = pending_.size(), held = released_held_;
+    std::size_t pieces = 0, released = released_.size(), pending = pending_, held = released_held_;
     std::uint64_t choice = out_.summary.choice_points;
     MOBB_ASSERT(o_.sink || out_.record.choices.size() == choice);  // the record holds every commit so far
     for (std::size_t i = from; i < to; ++i) {
@@ -158,25 +158,22 @@ void Simulation::lay_out(std::size_t from, std::size_t to) {
         commits_[i].clip_id = run_ids_[commits_[i].first_piece];
     unused_.resize(unused_.size() - reused);
     pieces_.resize(pieces_.size() + (pieces - reused));
-    run_pending_ = pending_.size();
+    run_pending_ = pending_;
     run_seq_ = placed_;
     placed_ += std::int64_t(pieces);
-    pending_.resize(pending);
+    pending_ = pending;
     released_.resize(released);
     broad_.stage(released, pending);
     released_held_ = held;
     if (!o_.sink) out_.record.choices.resize(std::size_t(choice));
 }
 
-// The run's j-th piece: under its id, and pending for the broad phase, staged there (entered at the next
-// flush).
+// The run's j-th piece: under its id, and staged in the broad phase (entered at the next flush).
 int Simulation::place_piece(Piece piece, std::size_t j) {
     const int id = run_ids_[j];
     piece.seq = run_seq_ + std::int64_t(j);
     pieces_[std::size_t(id)] = piece;
-    BroadPhase::Insertion& in = pending_[run_pending_ + j];
-    in = {id, piece.agent, box_of(piece)};
-    broad_.stage_inserted(run_pending_ + j, in);
+    broad_.stage_inserted(run_pending_ + j, {id, piece.agent, box_of(piece)});
     return id;
 }
 

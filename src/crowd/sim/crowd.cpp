@@ -33,6 +33,7 @@ void check(const CrowdOptions& o) {
     if (!agents || !(o.seconds > 0) || !(o.world.width() > 0) || !(o.world.height() > 0))
         throw std::invalid_argument("crowd: agents, seconds and the world must be positive");
     if (o.threads < 1) throw std::invalid_argument("crowd: threads must be at least 1");
+    if (o.max_batch < 1) throw std::invalid_argument("crowd: max_batch must be at least 1");
 }
 
 // The solids by index in a grid of their own: they never change, and a scenario may have many.
@@ -276,36 +277,32 @@ void Simulation::run_batch(std::int64_t frame, const std::vector<int>& batch) {
     }
     commit_run(from, n);
     flush();
+}
+
+// A frame's choice points in batches of at most CrowdOptions::max_batch, in agent order: each batch's
+// commits are in the broad phase before the next is evaluated, so the outcome is that of one batch. The
+// first frame, where every agent chooses, no longer grows slots and lists for all of them. What changes
+// only between frames (who waits, the broad-phase ids free again) changes after the last batch.
+void Simulation::run_frame(std::int64_t frame, const std::vector<int>& batch) {
+    const auto most = std::size_t(o_.max_batch);
+    if (batch.size() <= most) {
+        run_batch(frame, batch);
+    } else {
+        std::vector<int> part;
+        for (std::size_t first = 0; first < batch.size(); first += most) {
+            part.assign(batch.begin() + std::ptrdiff_t(first),
+                        batch.begin() + std::ptrdiff_t(std::min(batch.size(), first + most)));
+            run_batch(frame, part);
+        }
+    }
     apply_waiting();
     unused_.insert(unused_.end(), left_.begin(), left_.end());
     left_.clear();
-    if (frame == 0) release_batch();
-}
-
-// The first frame holds every agent's first choice point; a later one holds the agents whose clips end
-// there, a few percent of them. What the first grew (the slots and their lists, the batch's boxes) is
-// given back after it rather than held for the whole run: at a million agents, gigabytes. The slots' lists
-// are freed by every thread.
-void Simulation::release_batch() {
-    pool_.for_each(
-        slots_.size(), [&](std::size_t i, int) { slots_[i] = Choice(); }, 256);
-    slots_ = {};
-    found_ = {};
-    spans_ = {};
-    touched_ = {};
-    reroutes_ = {};
-    current_ = {};
-    bounds_ = {};
-    seen_ = {};
-    chosen_.release();
-    moved_.release();
-    commits_ = {};
-    run_ids_ = {};
 }
 
 void Simulation::release(int id) {
     released_.push_back(id);
-    broad_.stage(released_.size(), pending_.size());
+    broad_.stage(released_.size(), pending_);
     broad_.stage_removed(released_.size() - 1, id);
     if (broad_.holds(id)) ++released_held_;
 }
@@ -317,7 +314,7 @@ void Simulation::flush() {
     broad_.apply_staged(pool_);
     left_.insert(left_.end(), released_.begin(), released_.end());
     released_.clear();
-    pending_.clear();
+    pending_ = 0;
 }
 
 void Simulation::record_plan(const Choice& c, ChoicePoint& cp) const {
@@ -434,7 +431,7 @@ void Simulation::run_frames(const std::function<void(double)>& progress) {
             std::vector<int>().swap(ids);
         }
         expired_until_ = f + 1;
-        run_batch(f, batch);
+        run_frame(f, batch);
         out_.summary.cd_seconds += since(start);
         out_.summary.parallel_steps += pool_.steps() - steps;
         if (progress && f / 30 != reported) {

@@ -39,6 +39,7 @@ private:
     void reach_goals(std::int64_t frame, std::vector<int>& batch);
     void leave(int agent, std::int64_t frame);
     void run_frames(const std::function<void(double)>& progress);
+    void run_frame(std::int64_t frame, const std::vector<int>& batch);
     // Not inlined: a profile of the collision detection collects this (callgrind --toggle-collect).
     [[gnu::noinline]] void run_batch(std::int64_t frame, const std::vector<int>& batch);
     void apply_waiting();
@@ -51,7 +52,6 @@ private:
     void recheck(std::size_t i, std::size_t known);
     std::size_t reevaluate_from(std::size_t p, std::size_t n, const CrowdState& s);
     std::size_t known_after_round(std::size_t p, std::size_t n) const;
-    void release_batch();
     int add_piece(const Piece& piece);
     // A commit's share of a run (commit.cpp): its counts, then its places in the run's shared lists.
     struct Commit {
@@ -99,12 +99,13 @@ private:
     const std::vector<Polygon> solids_;  // none when the policy does not avoid
     const BroadPhase solid_grid_;
     util::WorkerPool pool_;
-    BroadPhase broad_;                            // pieces live now
-    std::vector<BroadPhase::Insertion> pending_;  // committed in this frame, not yet in broad_
-    std::vector<int> released_;                   // released in this frame, still in broad_
-    std::size_t released_held_ = 0;               // how many of released_ broad_ holds
-    std::size_t flushed_held_ = 0;                // how many of those the live count (commit) leaves out
-    struct BoxSpan {  // the boxes a position's first plan takes and releases: found_[worker][begin, end)
+    BroadPhase broad_;               // pieces live now
+    std::size_t pending_ = 0;        // pieces staged in broad_ since the last flush
+    std::vector<int> released_;      // released in this frame, still in broad_
+    std::size_t released_held_ = 0;  // how many of released_ broad_ holds
+    std::size_t flushed_held_ = 0;   // how many of those the live count (commit) leaves out
+    // The boxes a position's first plan takes and releases: found_[worker][begin, end).
+    struct BoxSpan {
         int worker;
         std::size_t begin, end;
     };
@@ -121,7 +122,7 @@ private:
     std::vector<SpaceTimeBox> boxes_;    // scratch: one choice point's boxes
     std::vector<Commit> commits_;        // by batch position: what each commit adds and where it goes
     std::vector<int> run_ids_;           // the ids its pieces take, in commit order
-    std::size_t run_pending_ = 0;        // where its pieces start in pending_
+    std::size_t run_pending_ = 0;        // where its pieces start among the staged ones
     std::int64_t run_seq_ = 0;           // the Piece::seq of its first piece
     std::vector<CrowdSummary> tallies_;  // per worker: the counts of the commits it applied
     std::vector<Agent> agents_;

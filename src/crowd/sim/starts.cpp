@@ -2,7 +2,9 @@
 // where a scenario places them, and the ground each holds there before its first choice point.
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "mobb/core/angle.h"
@@ -11,6 +13,30 @@
 #include "sim/simulation.h"
 
 namespace mobb::crowd {
+
+namespace {
+
+// Random placement (each agent at a random point, tried again while it is too near one placed before) fills
+// at most some 54.7 % of the ground with the agents' disks, however long it tries: the jamming limit of
+// random sequential adsorption (Feder 1980; Hinrichsen, Feder and Jossang 1986). Asked for more it tried
+// for minutes before failing; now it is refused at once, with about how many would fit. From a thousand
+// agents on, 5 % past the limit (the attempts reach less: in 33.5 x 40 m, where it puts 948, 900 agents were
+// placed and 940 were not); fewer agents are left to the attempts.
+void check_room(const World& w, int agents, double gap, double margin) {
+    constexpr double kJamming = 0.547;  // share of the ground under disks
+    constexpr double kSpread = 1.05;
+    constexpr int kFewest = 1000;
+    const double ground = (w.width() - 2 * margin + gap) * (w.height() - 2 * margin + gap);
+    const double fit = kJamming * ground / (kPi * gap * gap / 4);
+    if (agents < kFewest || double(agents) <= kSpread * fit) return;
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(2) << "crowd: no room for " << agents << " agents " << gap
+        << " m apart in a " << w.width() << " x " << w.height() << " m world: placed at random, about "
+        << std::int64_t(fit) << " fit";
+    throw std::invalid_argument(out.str());
+}
+
+}  // namespace
 
 double Simulation::max_radius() const {
     double rmax = 0;
@@ -26,6 +52,7 @@ void Simulation::place_at_random(double gap, double margin) {
     const World& w = o_.world;
     if (w.width() <= 2 * margin || w.height() <= 2 * margin)
         throw std::invalid_argument("crowd: world smaller than an agent");
+    check_room(w, o_.agents, gap, margin);
     const double cell = std::max(gap, std::sqrt(w.width() * w.height() / double(o_.agents)));
     const int nx = int(w.width() / cell) + 1, ny = int(w.height() / cell) + 1;
     std::vector<std::vector<int>> grid(std::size_t(nx) * std::size_t(ny));

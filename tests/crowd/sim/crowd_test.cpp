@@ -14,6 +14,7 @@
 #include "files.h"
 #include "mobb/core/brute.h"
 #include "mobb/crowd/metrics/metrics.h"
+#include "mobb/crowd/scenario/scenario.h"
 #include "mobb/crowd/sim/crowd.h"
 
 namespace mobb::crowd {
@@ -409,6 +410,60 @@ TEST(Crowd, RunsCommittedInParallelKeepTheRecord) {
         EXPECT_EQ(r.summary.parallel_steps, steps);
     }
     EXPECT_GT(steps, 0u);
+}
+
+// The record's text without what depends on when a choice point was evaluated: its `pruned`, the pieces
+// live in the broad phase then that it skipped - a measure of the work, as the summary's counters are.
+std::string behaviour_text(Record r, const std::string& summary) {
+    for (ChoicePoint& c : r.choices) c.pruned = 0;
+    return record_to_text(r, summary);
+}
+
+// A frame's choice points run as consecutive batches of at most max_batch (the first frame: every
+// agent's), each committed before the next is evaluated: the agents do as in one batch, down to one
+// choice point at a time - the order of evaluation the parallel frame stands for. Only the work differs:
+// fewer re-evaluations, the smaller the batches.
+TEST(Crowd, BatchSizeDoesNotChangeTheRun) {
+    CrowdOptions crowded = wander(300, 4, 6);
+    crowded.world.x1 *= 0.6, crowded.world.y1 *= 0.6;
+    CrowdOptions goals =
+        scenario_options(load_scenario(std::string(MOBB_SOURCE_DIR) + "/assets/scenarios/evacuation_exit.json"));
+    goals.seconds = 8;
+    for (CrowdOptions o : {crowded, goals}) {
+        o.threads = 2;
+        const CrowdRun ref = run(o);
+        const std::string summary = summary_json(ref.summary);
+        const std::string text = behaviour_text(ref.record, summary);
+        EXPECT_GT(ref.summary.reevaluated, 5u) << to_string(o.select);
+        for (int most : {1, 7}) {
+            o.max_batch = most;
+            const CrowdRun r = run(o);
+            EXPECT_TRUE(behaviour_text(r.record, summary) == text) << to_string(o.select) << ", batches of " << most;
+            EXPECT_EQ(r.summary.choice_points, ref.summary.choice_points);
+            EXPECT_LT(r.summary.reevaluated, ref.summary.reevaluated) << to_string(o.select) << ", batches of " << most;
+            if (most == 1) {
+                EXPECT_EQ(r.summary.reevaluated, 0u);
+            }
+        }
+    }
+    CrowdOptions none = crowded;
+    none.max_batch = 0;
+    EXPECT_THROW(run(none), std::invalid_argument);
+}
+
+// More agents than random placement can fit (past its jamming limit) are refused before any is placed,
+// saying about how many fit; as many as fit are placed.
+TEST(Crowd, RandomStartsPastTheJammingLimitAreRefused) {
+    CrowdOptions o = wander(2000, 1, 3);
+    o.world.x1 = 40, o.world.y1 = 50;  // 1 m^2 an agent: disks on 73 % of the ground
+    try {
+        run(o);
+        FAIL() << "2,000 agents placed on 2,000 m^2";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("placed at random, about 1"), std::string::npos) << e.what();
+    }
+    o.world.x1 = 60, o.world.y1 = 75;  // 2.25 m^2 an agent: 33 %
+    EXPECT_EQ(run(o).record.tracks.size(), 2000u);
 }
 
 // Obstacles hold as the walls do: no sample disk of any agent overlaps one, checked here against the
