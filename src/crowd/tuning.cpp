@@ -51,6 +51,7 @@ std::vector<Field> fields_of(CrowdTuning& t) {
         {"keep_right.offset", nullptr, &t.keep_right.offset},
         {"keep_right.cost", nullptr, &t.keep_right.cost},
         {"keep_right.stream", nullptr, &t.keep_right.stream},
+        {"keep_right.open_cost", nullptr, &t.keep_right.open_cost},
         {"face_along_walls.on", nullptr, &t.face_along_walls.on},
         {"face_along_walls.ahead", nullptr, &t.face_along_walls.ahead},
         {"face_along_walls.cost", nullptr, &t.face_along_walls.cost},

@@ -82,7 +82,7 @@ struct LetThroughTuning {
 /// ahead ranks its clips as if an end cost `cost` seconds per metre it lies left of the line `offset`
 /// metres right of those within `offset` of its line. Both streams keep right and pass in lanes instead of
 /// meeting across the whole width; one agent coming is left to the reservations (bench/results/log.md,
-/// "Keeping right in corridors"). Reorders, never refuses.
+/// "Keeping right in corridors"). Elsewhere the same at `open_cost`. Reorders, never refuses.
 struct KeepRightTuning {
     bool on = true;
     double corridor = 9.0;  ///< metres
@@ -90,6 +90,11 @@ struct KeepRightTuning {
     double offset = 1.2;    ///< metres: a walking disk's width and a little more
     double cost = 6.0;      ///< seconds per metre
     int stream = 2;         ///< oncoming agents ahead, at least: a stream, not one passer-by
+    /// Seconds per metre the same where the ground across is `corridor` metres or wider (open ground in walls
+    /// or among obstacles; 0: only in corridors and doors). Lower than in a corridor, where 3 lost what 6 won:
+    /// circle_20 then runs as people's roundabout, under 1.5x the straight line on every seed, and SteerSuite's
+    /// wide counter-flow hallways move (bench/results/log.md, "Keeping right in the open").
+    double open_cost = 3.0;
 };
 
 /// Facing along walls (the goal policy; policy/walls_ahead.h): an end nearer a wall or an obstacle than

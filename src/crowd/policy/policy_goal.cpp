@@ -122,6 +122,7 @@ private:
     struct KeepRight {
         double from_x = 0, from_y = 0, left_x = 0, left_y = 0;
         double line = 1e300;  // none: no one to keep right of
+        double cost = 0;      // seconds per metre left of the line: KeepRightTuning::cost, or open_cost
     };
     // What seconds() reads of a site, worked out once for the many ends it scores: the goal's field, where
     // the neighbours it keeps away from will be (not those it follows), in the site's order, and the lanes
@@ -150,14 +151,15 @@ private:
         return std::abs(wrap_angle(its_way - field.downhill(n.at[0], n.at[1]))) >= tuning_.let_through.oncoming;
     }
 
-    // Keeping right: in a corridor or a door, the line right of the oncoming neighbours ahead on the site's
-    // line (the rightmost of their lines).
+    // Keeping right: the line right of the oncoming neighbours ahead on the site's line (the rightmost of
+    // their lines), at its cost in a corridor or a door, at the open cost elsewhere.
     KeepRight keep_right_of(const ChoiceSite& site, const NavField& field) const {
         KeepRight k;
         const KeepRightTuning& t = tuning_.keep_right;
         if (!keeps_right_) return k;
         const double way = field.downhill(site.base.x, site.base.y);
-        if (passages_->across(site.base.x, site.base.y, way, t.corridor) >= t.corridor) return k;
+        k.cost = passages_->across(site.base.x, site.base.y, way, t.corridor) < t.corridor ? t.cost : t.open_cost;
+        if (k.cost <= 0) return k;
         k.from_x = site.base.x, k.from_y = site.base.y, k.left_x = -std::sin(way), k.left_y = std::cos(way);
         std::vector<int> streaming;  // the oncoming agents ahead, in the corridor's window
         double line = k.line;
@@ -177,7 +179,7 @@ private:
     double left_of_line(const Around& a, const Placement& end) const {
         const KeepRight& k = a.keep_right;
         const double aside = (end.x - k.from_x) * k.left_x + (end.y - k.from_y) * k.left_y;
-        return aside > k.line ? tuning_.keep_right.cost * (aside - k.line) : 0.0;
+        return aside > k.line ? k.cost * (aside - k.line) : 0.0;
     }
 
     // Letting through: the lanes ahead of the neighbours coming the other way that are nearer a passage

@@ -152,7 +152,7 @@ TEST(Policy, GoalKeepsOutOfTheLaneOfOneComingThroughADoor) {
 
 // Keeping right (KeepRightTuning): in a corridor, the agent meeting a stream coming the other way on its
 // line ranks first a clip that ends farther right; one agent coming, or open ground, leaves the order as
-// it was.
+// it was - but open ground in walls at an open cost.
 TEST(Policy, GoalKeepsRightOfAStreamComingDownACorridor) {
     const Fixture& f = fixture();
     const std::array<double, 2> east{28, 0}, west{2, 0};
@@ -171,6 +171,14 @@ TEST(Policy, GoalKeepsRightOfAStreamComingDownACorridor) {
     EXPECT_LT(end_of(site, on.front()).y, std::min(0.0, end_of(site, off_order.front()).y));
     const World open{0, -20, 30, 20, false, {}};
     EXPECT_EQ(ordered_in(open, site, {}), ordered_in(open, site, off)) << "open ground is no corridor";
+    // Open ground in walls: kept right of at keep_right.open_cost, none with it 0.
+    const World room{0, -20, 30, 20, true, {}};
+    CrowdTuning in_the_open, not_in_the_open;
+    not_in_the_open.keep_right.open_cost = 0;
+    const std::vector<int> room_off = ordered_in(room, site, off);
+    EXPECT_EQ(ordered_in(room, site, not_in_the_open), room_off);
+    EXPECT_LT(end_of(site, ordered_in(room, site, in_the_open).front()).y,
+              std::min(0.0, end_of(site, room_off.front()).y));
 }
 
 // Facing along walls (FaceAlongWallsTuning): an end beside a wall - nearer than room to turn - faces into

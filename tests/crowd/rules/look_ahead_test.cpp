@@ -203,7 +203,8 @@ TEST(LearnedCost, KeepsEveryCellThroughGrowth) {
 }
 
 // A whole crowd: the twenty agents of a circle cross its centre. With the look-ahead they reach their
-// goals sooner than choosing one clip at a time (bench/results/crowd.md has every scenario).
+// goals sooner than choosing one clip at a time, on the mean and the last of them (bench/results/crowd.md
+// has every scenario). (Not with less idle: keeping right in the open, they stand less without it.)
 TEST(LookAhead, ACircleOfAgentsReachesItsGoalsSoonerWithIt) {
     const Scenario s = load_scenario(default_scenario_folder() + "/circle_20.json");
     CrowdOptions with = scenario_options(s), without = with;
@@ -213,7 +214,7 @@ TEST(LookAhead, ACircleOfAgentsReachesItsGoalsSoonerWithIt) {
     const CrowdMetrics b = crowd_metrics(run_crowd(graph(), narrow, without).record, graph());
     EXPECT_EQ(a.reached, a.goal_agents);
     EXPECT_LT(a.mean_time_to_goal, b.mean_time_to_goal);
-    EXPECT_LT(a.idle_share, b.idle_share);
+    EXPECT_LT(a.max_time_to_goal, b.max_time_to_goal);
 }
 
 // The plan a goal agent keeps (ChoicePoint::intended): the clips after the one taken, each a successor of
