@@ -161,7 +161,7 @@ private:
         k.cost = passages_->across(site.base.x, site.base.y, way, t.corridor) < t.corridor ? t.cost : t.open_cost;
         if (k.cost <= 0) return k;
         k.from_x = site.base.x, k.from_y = site.base.y, k.left_x = -std::sin(way), k.left_y = std::cos(way);
-        std::vector<int> streaming;  // the oncoming agents ahead, in the corridor's window
+        std::vector<int> streaming;  // the oncoming agents in the window ahead
         double line = k.line;
         for (const Neighbour& n : site.neighbours) {
             const double dx = n.at[0] - k.from_x, dy = n.at[1] - k.from_y;
